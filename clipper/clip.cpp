@@ -1,0 +1,415 @@
+#include "clipper/clip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "clipper/detail/boundary_graph.h"
+#include "clipper/detail/point_location.h"
+#include "clipper/normalize.h"
+#include "clipper/predicates.h"
+
+namespace shadowgen::clipper {
+namespace {
+
+using detail::DirectedEdge;
+using detail::Location;
+
+// One operand as the clipper sees it: every loop (outer and hole alike) oriented so the
+// region lies on its left.
+using Boundary = std::vector<Loop2>;
+
+Boundary boundary_of(const PolygonSet2& polygons) {
+  Boundary loops;
+  for (const PolygonWithHoles2& p : polygons) {
+    loops.push_back(p.outer);
+    for (const Loop2& h : p.holes) loops.push_back(h);
+  }
+  return loops;
+}
+
+struct Box {
+  double xmin, xmax, ymin, ymax;
+};
+
+Box bounds(const Boundary& loops) {
+  Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (const Loop2& l : loops) {
+    for (const Point2& p : l) {
+      b.xmin = std::min(b.xmin, p.x);
+      b.xmax = std::max(b.xmax, p.x);
+      b.ymin = std::min(b.ymin, p.y);
+      b.ymax = std::max(b.ymax, p.y);
+    }
+  }
+  return b;
+}
+
+bool overlap(const Box& a, const Box& b) {
+  return a.xmin <= b.xmax && b.xmin <= a.xmax && a.ymin <= b.ymax && b.ymin <= a.ymax;
+}
+
+// An edge of one operand, addressed by loop and start vertex.
+struct EdgeRef {
+  int side;  // 0 subject, 1 clip
+  int loop;
+  int index;
+};
+
+// A point to be inserted into an edge of one operand.
+struct Insertion {
+  int loop;
+  int index;
+  Point2 point;
+};
+
+// The crossing of the proper intersection of segments a and b. The parameter along the
+// shorter segment is |o0| / (|o0| + |o1|), from two exact orientation determinants of
+// opposite sign rounded once each, so it is accurate to a few ulps whatever the angle
+// (clip.h states the resulting bound). The result is kept inside both segments' boxes.
+Point2 crossing_point(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
+  auto length2 = [](const Point2& p, const Point2& q) {
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    return dx * dx + dy * dy;
+  };
+  const bool along_a = length2(a0, a1) <= length2(b0, b1);
+  const Point2& p0 = along_a ? a0 : b0;
+  const Point2& p1 = along_a ? a1 : b1;
+  const Point2& q0 = along_a ? b0 : a0;
+  const Point2& q1 = along_a ? b1 : a1;
+  const double o0 = std::fabs(orient2d_value(q0, q1, p0));
+  const double o1 = std::fabs(orient2d_value(q0, q1, p1));
+  const double t = o0 / (o0 + o1);
+  Point2 p{p0.x + t * (p1.x - p0.x), p0.y + t * (p1.y - p0.y)};
+  const double xlo = std::max(std::min(a0.x, a1.x), std::min(b0.x, b1.x));
+  const double xhi = std::min(std::max(a0.x, a1.x), std::max(b0.x, b1.x));
+  const double ylo = std::max(std::min(a0.y, a1.y), std::min(b0.y, b1.y));
+  const double yhi = std::min(std::max(a0.y, a1.y), std::max(b0.y, b1.y));
+  p.x = std::clamp(p.x, xlo, xhi);
+  p.y = std::clamp(p.y, ylo, yhi);
+  return p;
+}
+
+// Finds every point where the two boundaries meet and records it for insertion into
+// both. Candidate pairs come from a sweep over x; the rest are rejected by y-interval.
+class IntersectionFinder {
+ public:
+  IntersectionFinder(const Boundary& subject, const Boundary& clip_region)
+      : sides_{&subject, &clip_region} {}
+
+  void run() {
+    struct Item {
+      Box box;
+      EdgeRef edge;
+    };
+    std::vector<Item> items;
+    for (int s = 0; s < 2; ++s) {
+      const Boundary& loops = *sides_[s];
+      for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
+        const Loop2& loop = loops[l];
+        const int n = static_cast<int>(loop.size());
+        for (int i = 0; i < n; ++i) {
+          const Point2& p = loop[i];
+          const Point2& q = loop[i + 1 == n ? 0 : i + 1];
+          items.push_back({{std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y),
+                            std::max(p.y, q.y)},
+                           {s, l, i}});
+        }
+      }
+    }
+    std::sort(items.begin(), items.end(),
+              [](const Item& a, const Item& b) { return a.box.xmin < b.box.xmin; });
+    std::vector<const Item*> active[2];
+    for (const Item& item : items) {
+      const int other = 1 - item.edge.side;
+      std::vector<const Item*>& candidates = active[other];
+      std::size_t kept = 0;
+      for (const Item* c : candidates) {
+        if (c->box.xmax < item.box.xmin) continue;  // left behind by the sweep
+        candidates[kept++] = c;
+        if (c->box.ymin <= item.box.ymax && item.box.ymin <= c->box.ymax) {
+          if (item.edge.side == 0) {
+            intersect(item.edge, c->edge);
+          } else {
+            intersect(c->edge, item.edge);
+          }
+        }
+      }
+      candidates.resize(kept);
+      active[item.edge.side].push_back(&item);
+    }
+  }
+
+  std::vector<Insertion> insertions[2];
+  std::unordered_set<Point2, Point2Hash> nodes;
+
+ private:
+  const Point2& start(const EdgeRef& e) const {
+    return (*sides_[e.side])[e.loop][e.index];
+  }
+  const Point2& end(const EdgeRef& e) const {
+    const Loop2& loop = (*sides_[e.side])[e.loop];
+    return loop[e.index + 1 == static_cast<int>(loop.size()) ? 0 : e.index + 1];
+  }
+
+  void insert(const EdgeRef& e, const Point2& p) {
+    insertions[e.side].push_back({e.loop, e.index, p});
+  }
+
+  // An endpoint of one edge lying on the other: a touching point, already a vertex of
+  // its own boundary, inserted into the other unless it is an endpoint there too.
+  void touch(const Point2& p, const EdgeRef& host, const Point2& h0, const Point2& h1) {
+    nodes.insert(p);
+    if (p != h0 && p != h1) insert(host, p);
+  }
+
+  void intersect(const EdgeRef& a, const EdgeRef& b) {
+    const Point2 &a0 = start(a), &a1 = end(a), &b0 = start(b), &b1 = end(b);
+    const Orientation oa0 = orient2d(b0, b1, a0);
+    const Orientation oa1 = orient2d(b0, b1, a1);
+    if (oa0 == oa1 && oa0 != Orientation::kCollinear) return;
+    const Orientation ob0 = orient2d(a0, a1, b0);
+    const Orientation ob1 = orient2d(a0, a1, b1);
+    if (ob0 == ob1 && ob0 != Orientation::kCollinear) return;
+    if (oa0 != Orientation::kCollinear && oa1 != Orientation::kCollinear &&
+        ob0 != Orientation::kCollinear && ob1 != Orientation::kCollinear) {
+      const Point2 p = crossing_point(a0, a1, b0, b1);
+      nodes.insert(p);
+      insert(a, p);
+      insert(b, p);
+      return;
+    }
+    // Touching or collinear overlap: every endpoint lying on the other segment.
+    if (oa0 == Orientation::kCollinear && on_segment(b0, b1, a0)) touch(a0, b, b0, b1);
+    if (oa1 == Orientation::kCollinear && on_segment(b0, b1, a1)) touch(a1, b, b0, b1);
+    if (ob0 == Orientation::kCollinear && on_segment(a0, a1, b0)) touch(b0, a, a0, a1);
+    if (ob1 == Orientation::kCollinear && on_segment(a0, a1, b1)) touch(b1, a, a0, a1);
+  }
+
+  const Boundary* sides_[2];
+};
+
+// The loops of one operand with the intersection points inserted in order along each
+// edge (a point exactly on a segment is ordered exactly by the coordinate that varies
+// most along it).
+Boundary with_insertions(const Boundary& loops, std::vector<Insertion>& insertions) {
+  std::sort(insertions.begin(), insertions.end(), [](const Insertion& a, const Insertion& b) {
+    return a.loop != b.loop ? a.loop < b.loop : a.index < b.index;
+  });
+  Boundary out(loops.size());
+  std::size_t k = 0;
+  for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
+    const Loop2& loop = loops[l];
+    Loop2& result = out[l];
+    result.reserve(loop.size());
+    const int n = static_cast<int>(loop.size());
+    auto push = [&result](const Point2& p) {
+      if (result.empty() || result.back() != p) result.push_back(p);
+    };
+    for (int i = 0; i < n; ++i) {
+      const Point2& p = loop[i];
+      const Point2& q = loop[i + 1 == n ? 0 : i + 1];
+      push(p);
+      const std::size_t first = k;
+      while (k < insertions.size() && insertions[k].loop == l && insertions[k].index == i) ++k;
+      if (k == first) continue;
+      const bool by_x = std::fabs(q.x - p.x) >= std::fabs(q.y - p.y);
+      const bool ascending = by_x ? q.x > p.x : q.y > p.y;
+      std::sort(insertions.begin() + static_cast<std::ptrdiff_t>(first),
+                insertions.begin() + static_cast<std::ptrdiff_t>(k),
+                [&](const Insertion& a, const Insertion& b) {
+                  const double u = by_x ? a.point.x : a.point.y;
+                  const double v = by_x ? b.point.x : b.point.y;
+                  return ascending ? u < v : u > v;
+                });
+      for (std::size_t j = first; j < k; ++j) {
+        if (insertions[j].point != q) push(insertions[j].point);
+      }
+    }
+    while (result.size() > 1 && result.back() == result.front()) result.pop_back();
+  }
+  return out;
+}
+
+// Where a boundary passes through a point: the vertices before and after it.
+struct Pass {
+  Point2 prev;
+  Point2 next;
+};
+using PassMap = std::unordered_map<Point2, std::vector<Pass>, Point2Hash>;
+
+PassMap passes_through(const Boundary& loops,
+                       const std::unordered_set<Point2, Point2Hash>& nodes) {
+  PassMap passes;
+  for (const Loop2& loop : loops) {
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!nodes.count(loop[i])) continue;
+      passes[loop[i]].push_back({loop[(i + n - 1) % n], loop[(i + 1) % n]});
+    }
+  }
+  return passes;
+}
+
+enum class Side { kInside, kOutside, kSharedSame, kSharedOpposite };
+
+bool same_ray(const Point2& v, const Point2& a, const Point2& b) {
+  if (orient2d(v, a, b) != Orientation::kCollinear) return false;
+  return (a.x - v.x) * (b.x - v.x) + (a.y - v.y) * (b.y - v.y) > 0.0;
+}
+
+// Which side of the other operand the edge v -> w lies on, from the other boundary's
+// passes through v: w inside the angle swept counter-clockwise from `next` to `prev` of
+// some pass is inside (the other region lies left of prev -> v -> next). This is the
+// exact local form of the entry/exit test.
+Side side_of_edge(const Point2& v, const Point2& w, const std::vector<Pass>& passes) {
+  for (const Pass& pass : passes) {
+    if (w == pass.next || same_ray(v, pass.next, w)) return Side::kSharedSame;
+    if (w == pass.prev || same_ray(v, pass.prev, w)) return Side::kSharedOpposite;
+  }
+  for (const Pass& pass : passes) {
+    const Orientation corner = orient2d(pass.prev, v, pass.next);
+    const bool left_of_next = orient2d(v, pass.next, w) == Orientation::kCounterClockwise;
+    const bool right_of_prev = orient2d(v, pass.prev, w) == Orientation::kClockwise;
+    const bool inside = corner == Orientation::kCounterClockwise ? left_of_next && right_of_prev
+                                                                 : left_of_next || right_of_prev;
+    if (inside) return Side::kInside;
+  }
+  return Side::kOutside;
+}
+
+// The edges of one operand's boundary split by side of the other operand.
+struct ClassifiedEdges {
+  std::vector<DirectedEdge> inside, outside, shared_same, shared_opposite;
+};
+
+ClassifiedEdges classify(const Boundary& loops, const Boundary& other_loops,
+                         const PassMap& other_passes,
+                         const std::unordered_set<Point2, Point2Hash>& nodes) {
+  ClassifiedEdges out;
+  auto bucket = [&out](Side s) -> std::vector<DirectedEdge>& {
+    switch (s) {
+      case Side::kInside:
+        return out.inside;
+      case Side::kOutside:
+        return out.outside;
+      case Side::kSharedSame:
+        return out.shared_same;
+      case Side::kSharedOpposite:
+        break;
+    }
+    return out.shared_opposite;
+  };
+  for (const Loop2& loop : loops) {
+    const std::size_t n = loop.size();
+    std::size_t first_node = n;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (nodes.count(loop[i])) {
+        first_node = i;
+        break;
+      }
+    }
+    if (first_node == n) {
+      // Untouched by the other boundary: the whole loop lies on one side.
+      const bool inside = detail::locate(loop[0], other_loops) == Location::kInside;
+      auto& dst = inside ? out.inside : out.outside;
+      for (std::size_t i = 0; i < n; ++i) dst.push_back({loop[i], loop[(i + 1) % n]});
+      continue;
+    }
+    // Each stretch from a node to the next lies on one side: decide it at its start.
+    std::vector<DirectedEdge>* dst = nullptr;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = (first_node + k) % n;
+      const Point2& v = loop[i];
+      const Point2& w = loop[(i + 1) % n];
+      if (nodes.count(v)) {
+        const auto it = other_passes.find(v);
+        if (it != other_passes.end()) {
+          dst = &bucket(side_of_edge(v, w, it->second));
+        } else {
+          const Point2 mid{0.5 * (v.x + w.x), 0.5 * (v.y + w.y)};
+          dst = detail::locate(mid, other_loops) == Location::kInside ? &out.inside
+                                                                        : &out.outside;
+        }
+      }
+      dst->push_back({v, w});
+    }
+  }
+  return out;
+}
+
+void append(std::vector<DirectedEdge>& dst, const std::vector<DirectedEdge>& src) {
+  dst.insert(dst.end(), src.begin(), src.end());
+}
+
+void append_reversed(std::vector<DirectedEdge>& dst, const std::vector<DirectedEdge>& src) {
+  for (const DirectedEdge& e : src) dst.push_back({e.to, e.from});
+}
+
+}  // namespace
+
+ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
+  ClipResult result;
+  PolygonSet2 a = normalized(subject);
+  const PolygonSet2 b = normalized(clip_region);
+  if (a.empty()) return result;
+  const Boundary a_loops = boundary_of(a);
+  const Boundary b_loops = boundary_of(b);
+  if (b.empty() || !overlap(bounds(a_loops), bounds(b_loops))) {
+    result.outside = std::move(a);
+    return result;
+  }
+
+  IntersectionFinder finder(a_loops, b_loops);
+  finder.run();
+  const Boundary a_split = with_insertions(a_loops, finder.insertions[0]);
+  const Boundary b_split = with_insertions(b_loops, finder.insertions[1]);
+  const PassMap a_passes = passes_through(a_split, finder.nodes);
+  const PassMap b_passes = passes_through(b_split, finder.nodes);
+  const ClassifiedEdges a_edges = classify(a_split, b_split, b_passes, finder.nodes);
+  const ClassifiedEdges b_edges = classify(b_split, a_split, a_passes, finder.nodes);
+
+  // subject ∩ clip: the subject inside the clip, the clip inside the subject, and the
+  // shared stretches where both regions lie on the same side (taken once).
+  std::vector<DirectedEdge> inside_edges = a_edges.inside;
+  append(inside_edges, b_edges.inside);
+  append(inside_edges, a_edges.shared_same);
+  // subject − clip: the subject outside the clip, the clip inside the subject reversed,
+  // and the shared stretches where the clip lies on the far side.
+  std::vector<DirectedEdge> outside_edges = a_edges.outside;
+  append_reversed(outside_edges, b_edges.inside);
+  append(outside_edges, a_edges.shared_opposite);
+
+  result.inside = detail::assemble_polygons(inside_edges);
+  result.outside = detail::assemble_polygons(outside_edges);
+  return result;
+}
+
+ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_region) {
+  return clip(PolygonSet2{subject}, PolygonSet2{clip_region});
+}
+
+ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips) {
+  // The outside pieces left by one clip are the subject of the next, so the inside
+  // pieces of different clips never overlap even where the clips do.
+  ClipResult result;
+  result.outside = normalized(PolygonSet2{subject});
+  for (const PolygonWithHoles2& c : clips) {
+    if (result.outside.empty()) break;
+    ClipResult step = clip(result.outside, PolygonSet2{c});
+    for (PolygonWithHoles2& p : step.inside) result.inside.push_back(std::move(p));
+    result.outside = std::move(step.outside);
+  }
+  return result;
+}
+
+PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b) {
+  return clip(a, b).inside;
+}
+
+PolygonSet2 difference(const PolygonSet2& a, const PolygonSet2& b) {
+  return clip(a, b).outside;
+}
+
+}  // namespace shadowgen::clipper

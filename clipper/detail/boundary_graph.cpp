@@ -1,0 +1,193 @@
+#include "clipper/detail/boundary_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "clipper/detail/point_location.h"
+#include "clipper/normalize.h"
+#include "clipper/predicates.h"
+
+namespace shadowgen::clipper::detail {
+namespace {
+
+// Clockwise order of directions around v, starting just clockwise of the ray v -> back:
+// rank 0 strictly right of the ray, 1 straight ahead (opposite the ray), 2 strictly
+// left, 3 along the ray itself (turning straight back: the last resort).
+int clockwise_rank(const Point2& v, const Point2& back, const Point2& w) {
+  switch (orient2d(v, back, w)) {
+    case Orientation::kClockwise:
+      return 0;
+    case Orientation::kCounterClockwise:
+      return 2;
+    case Orientation::kCollinear:
+      break;
+  }
+  const double dot = (back.x - v.x) * (w.x - v.x) + (back.y - v.y) * (w.y - v.y);
+  return dot < 0.0 ? 1 : 3;
+}
+
+// True when w1 comes strictly before w2 clockwise from the ray v -> back.
+bool clockwise_before(const Point2& v, const Point2& back, const Point2& w1, const Point2& w2) {
+  const int r1 = clockwise_rank(v, back, w1);
+  const int r2 = clockwise_rank(v, back, w2);
+  if (r1 != r2) return r1 < r2;
+  if (r1 == 1 || r1 == 3) return false;
+  return orient2d(v, w1, w2) == Orientation::kClockwise;
+}
+
+class Tracer {
+ public:
+  explicit Tracer(const std::vector<DirectedEdge>& edges) : edges_(edges) {
+    ids_.reserve(edges.size() * 2);
+    from_.resize(edges.size());
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      from_[e] = id_of(edges[e].from);
+      id_of(edges[e].to);
+    }
+    out_.assign(points_.size(), {});
+    for (std::size_t e = 0; e < edges.size(); ++e) out_[from_[e]].push_back(e);
+    used_.assign(edges.size(), false);
+  }
+
+  std::vector<Loop2> trace() {
+    std::vector<Loop2> loops;
+    for (std::size_t start = 0; start < edges_.size(); ++start) {
+      if (used_[start]) continue;
+      Loop2 walk;
+      std::size_t e = start;
+      used_[e] = true;
+      const std::size_t origin = from_[start];
+      while (true) {
+        walk.push_back(edges_[e].from);
+        const Point2& back = edges_[e].from;
+        const Point2& v = edges_[e].to;
+        const std::size_t vid = ids_.at(v);
+        // Candidates: unused edges leaving v, and the first edge when v closes the walk.
+        std::size_t best = kNone;
+        for (std::size_t c : out_[vid]) {
+          if (used_[c] && !(c == start && vid == origin)) continue;
+          if (best == kNone || clockwise_before(v, back, edges_[c].to, edges_[best].to)) {
+            best = c;
+          }
+        }
+        if (best == kNone || best == start) break;
+        used_[best] = true;
+        e = best;
+      }
+      loops.push_back(std::move(walk));
+    }
+    return loops;
+  }
+
+ private:
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+  std::size_t id_of(const Point2& p) {
+    const auto [it, inserted] = ids_.try_emplace(p, points_.size());
+    if (inserted) points_.push_back(p);
+    return it->second;
+  }
+
+  const std::vector<DirectedEdge>& edges_;
+  std::unordered_map<Point2, std::size_t, Point2Hash> ids_;
+  std::vector<Point2> points_;
+  std::vector<std::size_t> from_;
+  std::vector<std::vector<std::size_t>> out_;
+  std::vector<bool> used_;
+};
+
+// Splits a closed walk at every repeated vertex into closed walks without repeats.
+void split_at_repeats(const Loop2& walk, std::vector<Loop2>& out) {
+  std::unordered_map<Point2, std::size_t, Point2Hash> position;
+  Loop2 stack;
+  for (const Point2& p : walk) {
+    const auto it = position.find(p);
+    if (it == position.end()) {
+      position.emplace(p, stack.size());
+      stack.push_back(p);
+      continue;
+    }
+    // p closes the stretch stack[it->second .. end]: emit it as its own loop.
+    const std::size_t from = it->second;
+    Loop2 piece(stack.begin() + static_cast<std::ptrdiff_t>(from), stack.end());
+    for (std::size_t i = from + 1; i < stack.size(); ++i) position.erase(stack[i]);
+    stack.resize(from + 1);
+    out.push_back(std::move(piece));
+  }
+  out.push_back(std::move(stack));
+}
+
+struct Bounds {
+  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+  explicit Bounds(const Loop2& loop) {
+    for (const Point2& p : loop) {
+      xmin = std::min(xmin, p.x);
+      xmax = std::max(xmax, p.x);
+      ymin = std::min(ymin, p.y);
+      ymax = std::max(ymax, p.y);
+    }
+  }
+  bool contains(const Bounds& o) const {
+    return xmin <= o.xmin && o.xmax <= xmax && ymin <= o.ymin && o.ymax <= ymax;
+  }
+};
+
+// Whether hole lies inside outer: decided at a vertex of the hole off outer's boundary
+// (a hole may touch its outer loop at points, never along an edge).
+bool encloses(const Loop2& outer, const Loop2& hole) {
+  for (const Point2& p : hole) {
+    const Location where = locate(p, outer);
+    if (where != Location::kBoundary) return where == Location::kInside;
+  }
+  for (std::size_t i = 0; i < hole.size(); ++i) {
+    const Point2& a = hole[i];
+    const Point2& b = hole[(i + 1) % hole.size()];
+    const Location where = locate({0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}, outer);
+    if (where != Location::kBoundary) return where == Location::kInside;
+  }
+  return false;
+}
+
+}  // namespace
+
+PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
+  std::vector<Loop2> loops;
+  for (const Loop2& walk : Tracer(edges).trace()) split_at_repeats(walk, loops);
+
+  PolygonSet2 polygons;
+  std::vector<Loop2> holes;
+  for (Loop2& loop : loops) {
+    if (!clean_loop(loop)) continue;
+    if (is_counter_clockwise(loop)) {
+      polygons.push_back({std::move(loop), {}});
+    } else {
+      holes.push_back(std::move(loop));
+    }
+  }
+  if (holes.empty()) return polygons;
+
+  std::vector<Bounds> outer_bounds;
+  std::vector<double> outer_areas;
+  for (const PolygonWithHoles2& p : polygons) {
+    outer_bounds.emplace_back(p.outer);
+    outer_areas.push_back(signed_area(p.outer));
+  }
+  for (Loop2& hole : holes) {
+    const Bounds hb(hole);
+    std::size_t parent = polygons.size();
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      if (!outer_bounds[i].contains(hb)) continue;
+      if (parent < polygons.size() && outer_areas[i] >= outer_areas[parent]) continue;
+      if (encloses(polygons[i].outer, hole)) parent = i;
+    }
+    if (parent == polygons.size()) {
+      throw std::logic_error("clipper: a traced hole has no enclosing outer loop");
+    }
+    polygons[parent].holes.push_back(std::move(hole));
+  }
+  return polygons;
+}
+
+}  // namespace shadowgen::clipper::detail

@@ -1,0 +1,25 @@
+#pragma once
+
+// Turning a set of directed boundary edges (region on the left) into polygons with
+// holes: the traversal half of the clipper, shared by the inside and outside pieces.
+
+#include <vector>
+
+#include "clipper/polygon.h"
+
+namespace shadowgen::clipper::detail {
+
+struct DirectedEdge {
+  Point2 from;
+  Point2 to;
+};
+
+// Traces closed loops through the edges. Where several edges leave one point, the walk
+// takes the first one clockwise from the way it came in (the tightest turn around the
+// region on its left), so regions that only touch at a point become separate loops;
+// loops are then split at repeated vertices, cleaned (normalize.h's clean_loop), and
+// sorted into counter-clockwise outer loops and clockwise holes, each hole attached to
+// the smallest outer loop containing it.
+PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges);
+
+}  // namespace shadowgen::clipper::detail

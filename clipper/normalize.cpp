@@ -1,0 +1,81 @@
+#include "clipper/normalize.h"
+
+#include <algorithm>
+
+#include "clipper/predicates.h"
+
+namespace shadowgen::clipper {
+
+bool clean_loop(Loop2& loop) {
+  // One pass with a stack: a vertex is dropped when it repeats its predecessor, or when
+  // it is collinear with its neighbours (a straight-through vertex or a spike). Dropping
+  // one can make its predecessor removable, hence the stack and the final wrap-around.
+  auto redundant = [](const Point2& prev, const Point2& v, const Point2& next) {
+    return prev == v || v == next || orient2d(prev, v, next) == Orientation::kCollinear;
+  };
+  bool changed = true;
+  while (changed && loop.size() >= 3) {
+    changed = false;
+    Loop2 kept;
+    kept.reserve(loop.size());
+    for (const Point2& p : loop) {
+      if (!kept.empty() && kept.back() == p) {
+        changed = true;
+        continue;
+      }
+      while (kept.size() >= 2 && redundant(kept[kept.size() - 2], kept.back(), p)) {
+        kept.pop_back();
+        changed = true;
+      }
+      kept.push_back(p);
+    }
+    // Close the ring: the seam vertices get the same test.
+    while (kept.size() >= 3) {
+      const std::size_t n = kept.size();
+      if (redundant(kept[n - 2], kept[n - 1], kept[0])) {
+        kept.pop_back();
+        changed = true;
+      } else if (redundant(kept[n - 1], kept[0], kept[1])) {
+        kept.erase(kept.begin());
+        changed = true;
+      } else {
+        break;
+      }
+    }
+    loop.swap(kept);
+  }
+  if (loop.size() < 3) {
+    loop.clear();
+    return false;
+  }
+  return true;
+}
+
+bool is_counter_clockwise(const Loop2& loop) {
+  const auto lowest = std::min_element(loop.begin(), loop.end());
+  const std::size_t i = static_cast<std::size_t>(lowest - loop.begin());
+  const std::size_t n = loop.size();
+  return orient2d(loop[(i + n - 1) % n], loop[i], loop[(i + 1) % n]) ==
+         Orientation::kCounterClockwise;
+}
+
+PolygonSet2 normalized(const PolygonSet2& polygons) {
+  PolygonSet2 out;
+  out.reserve(polygons.size());
+  for (const PolygonWithHoles2& p : polygons) {
+    PolygonWithHoles2 q;
+    q.outer = p.outer;
+    if (!clean_loop(q.outer)) continue;
+    if (!is_counter_clockwise(q.outer)) std::reverse(q.outer.begin(), q.outer.end());
+    for (const Loop2& h : p.holes) {
+      Loop2 hole = h;
+      if (!clean_loop(hole)) continue;
+      if (is_counter_clockwise(hole)) std::reverse(hole.begin(), hole.end());
+      q.holes.push_back(std::move(hole));
+    }
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+}  // namespace shadowgen::clipper

@@ -1,0 +1,38 @@
+#pragma once
+
+// Loops, polygons with holes and sets of them: the clipper's vocabulary.
+//
+// Conventions (what every function of clipper/ returns, and what `normalized` makes
+// of any valid input):
+//   - a Loop is a closed ring of vertices, the closing edge implied (last -> first);
+//   - the outer loop of a PolygonWithHoles2 runs counter-clockwise, its holes clockwise,
+//     so the polygon's region always lies to the left of every directed edge;
+//   - holes lie inside their outer loop; loops of one polygon, and polygons of one set,
+//     meet at most at isolated points (never along an edge, never crossing).
+
+#include <vector>
+
+#include "clipper/point.h"
+
+namespace shadowgen::clipper {
+
+using Loop2 = std::vector<Point2>;
+
+struct PolygonWithHoles2 {
+  Loop2 outer;
+  std::vector<Loop2> holes;
+};
+
+// A region made of disjoint polygons with holes (a "multipolygon").
+using PolygonSet2 = std::vector<PolygonWithHoles2>;
+
+// Signed area by the shoelace formula: positive for counter-clockwise loops.
+double signed_area(const Loop2& loop);
+// Region area: |outer| minus the holes.
+double area(const PolygonWithHoles2& polygon);
+double area(const PolygonSet2& polygons);
+
+std::size_t vertex_count(const PolygonWithHoles2& polygon);
+std::size_t vertex_count(const PolygonSet2& polygons);
+
+}  // namespace shadowgen::clipper
