@@ -112,9 +112,9 @@ class IntersectionFinder {
         for (int i = 0; i < n; ++i) {
           const Point2& p = loop[i];
           const Point2& q = loop[i + 1 == n ? 0 : i + 1];
-          items.push_back({{std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y),
-                            std::max(p.y, q.y)},
-                           {s, l, i}});
+          items.push_back(
+              {{std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y)},
+               {s, l, i}});
         }
       }
     }
@@ -145,9 +145,7 @@ class IntersectionFinder {
   std::unordered_set<Point2, Point2Hash> nodes;
 
  private:
-  const Point2& start(const EdgeRef& e) const {
-    return (*sides_[e.side])[e.loop][e.index];
-  }
+  const Point2& start(const EdgeRef& e) const { return (*sides_[e.side])[e.loop][e.index]; }
   const Point2& end(const EdgeRef& e) const {
     const Loop2& loop = (*sides_[e.side])[e.loop];
     return loop[e.index + 1 == static_cast<int>(loop.size()) ? 0 : e.index + 1];
@@ -239,8 +237,7 @@ struct Pass {
 };
 using PassMap = std::unordered_map<Point2, std::vector<Pass>, Point2Hash>;
 
-PassMap passes_through(const Boundary& loops,
-                       const std::unordered_set<Point2, Point2Hash>& nodes) {
+PassMap passes_through(const Boundary& loops, const std::unordered_set<Point2, Point2Hash>& nodes) {
   PassMap passes;
   for (const Loop2& loop : loops) {
     const std::size_t n = loop.size();
@@ -329,8 +326,7 @@ ClassifiedEdges classify(const Boundary& loops, const Boundary& other_loops,
           dst = &bucket(side_of_edge(v, w, it->second));
         } else {
           const Point2 mid{0.5 * (v.x + w.x), 0.5 * (v.y + w.y)};
-          dst = detail::locate(mid, other_loops) == Location::kInside ? &out.inside
-                                                                        : &out.outside;
+          dst = detail::locate(mid, other_loops) == Location::kInside ? &out.inside : &out.outside;
         }
       }
       dst->push_back({v, w});
@@ -404,12 +400,8 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   return result;
 }
 
-PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b) {
-  return clip(a, b).inside;
-}
+PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b) { return clip(a, b).inside; }
 
-PolygonSet2 difference(const PolygonSet2& a, const PolygonSet2& b) {
-  return clip(a, b).outside;
-}
+PolygonSet2 difference(const PolygonSet2& a, const PolygonSet2& b) { return clip(a, b).outside; }
 
 }  // namespace shadowgen::clipper

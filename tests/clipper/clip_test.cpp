@@ -1,0 +1,243 @@
+#include "clipper/clip.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "clipper/normalize.h"
+#include "clipper/predicates.h"
+
+namespace shadowgen::clipper {
+namespace {
+
+PolygonWithHoles2 rect(double x0, double y0, double x1, double y1) {
+  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
+
+// Structural facts every output must have (clip.h's output contract), checked without
+// an oracle: rings of >= 3 distinct vertices, no spikes or collinear vertices, outer
+// loops counter-clockwise, holes clockwise.
+void ExpectWellFormed(const PolygonSet2& set) {
+  auto check_loop = [](const Loop2& loop) {
+    ASSERT_GE(loop.size(), 3u);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Point2& a = loop[i];
+      const Point2& b = loop[(i + 1) % loop.size()];
+      const Point2& c = loop[(i + 2) % loop.size()];
+      EXPECT_NE(a, b);
+      EXPECT_NE(orient2d(a, b, c), Orientation::kCollinear);
+    }
+  };
+  for (const PolygonWithHoles2& p : set) {
+    check_loop(p.outer);
+    EXPECT_TRUE(is_counter_clockwise(p.outer));
+    for (const Loop2& h : p.holes) {
+      check_loop(h);
+      EXPECT_FALSE(is_counter_clockwise(h));
+    }
+  }
+}
+
+// Runs the clip in both argument orders and checks area conservation exactly: on these
+// dyadic inputs every constructed point and area is exact.
+ClipResult ClipChecked(const PolygonWithHoles2& a, const PolygonWithHoles2& b) {
+  const ClipResult ab = clip(a, b);
+  const ClipResult ba = clip(b, a);
+  ExpectWellFormed(ab.inside);
+  ExpectWellFormed(ab.outside);
+  ExpectWellFormed(ba.inside);
+  ExpectWellFormed(ba.outside);
+  EXPECT_EQ(area(ab.inside) + area(ab.outside), area(PolygonSet2{a}));
+  EXPECT_EQ(area(ba.inside) + area(ba.outside), area(PolygonSet2{b}));
+  EXPECT_EQ(area(ab.inside), area(ba.inside));
+  return ab;
+}
+
+TEST(Clip, OverlappingSquares) {
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), rect(2, 2, 6, 6));
+  EXPECT_EQ(area(r.inside), 4.0);
+  EXPECT_EQ(area(r.outside), 12.0);
+  ASSERT_EQ(r.inside.size(), 1u);
+  EXPECT_EQ(r.inside[0].outer.size(), 4u);
+  ASSERT_EQ(r.outside.size(), 1u);
+  EXPECT_EQ(r.outside[0].outer.size(), 6u);
+}
+
+TEST(Clip, ClipInsideSubjectLeavesAHole) {
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), rect(1, 1, 2, 2));
+  EXPECT_EQ(area(r.inside), 1.0);
+  ASSERT_EQ(r.outside.size(), 1u);
+  ASSERT_EQ(r.outside[0].holes.size(), 1u);
+  EXPECT_EQ(area(r.outside), 15.0);
+}
+
+TEST(Clip, IdenticalPolygons) {
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), rect(0, 0, 4, 4));
+  EXPECT_EQ(area(r.inside), 16.0);
+  EXPECT_TRUE(r.outside.empty());
+}
+
+TEST(Clip, IdenticalButOppositeOrientationAndRotatedStart) {
+  PolygonWithHoles2 b = rect(0, 0, 4, 4);
+  std::reverse(b.outer.begin(), b.outer.end());
+  std::rotate(b.outer.begin(), b.outer.begin() + 2, b.outer.end());
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), b);
+  EXPECT_EQ(area(r.inside), 16.0);
+  EXPECT_TRUE(r.outside.empty());
+}
+
+TEST(Clip, SharedEdgeOnlyTouches) {
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), rect(4, 0, 8, 4));
+  EXPECT_TRUE(r.inside.empty());
+  EXPECT_EQ(area(r.outside), 16.0);
+}
+
+TEST(Clip, PartlySharedCollinearEdges) {
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), rect(1, 2, 3, 6));
+  EXPECT_EQ(area(r.inside), 4.0);
+  EXPECT_EQ(area(r.outside), 12.0);
+}
+
+TEST(Clip, SharedCornerOnly) {
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), rect(4, 4, 8, 8));
+  EXPECT_TRUE(r.inside.empty());
+  EXPECT_EQ(area(r.outside), 16.0);
+}
+
+TEST(Clip, VertexOnEdge) {
+  // A triangle whose apex lies on the square's top edge, from inside.
+  const PolygonWithHoles2 tri{{{1, 1}, {3, 1}, {2, 4}}, {}};
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), tri);
+  EXPECT_EQ(area(r.inside), 3.0);
+  ASSERT_EQ(r.outside.size(), 1u);
+  // The hole touches the outer loop at (2, 4).
+  EXPECT_EQ(r.outside[0].holes.size(), 1u);
+  EXPECT_EQ(area(r.outside), 13.0);
+}
+
+TEST(Clip, ClipCoveringSubjectCorner) {
+  // The clip's corner sits exactly on the subject's corner, edges collinear.
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), rect(0, 0, 2, 2));
+  EXPECT_EQ(area(r.inside), 4.0);
+  ASSERT_EQ(r.outside.size(), 1u);
+  EXPECT_TRUE(r.outside[0].holes.empty());
+}
+
+TEST(Clip, DifferenceSplitsIntoPiecesTouchingAtAPoint) {
+  // Two triangles cut from a square, meeting at its centre: the outside is two pieces
+  // that touch at (2, 2) only, and must come out as two simple polygons.
+  const PolygonWithHoles2 bowtie_a{{{0, 0}, {4, 0}, {2, 2}}, {}};
+  const ClipResult r = ClipChecked(rect(0, 0, 4, 4), bowtie_a);
+  EXPECT_EQ(area(r.inside), 4.0);
+  EXPECT_EQ(area(r.outside), 12.0);
+  const PolygonWithHoles2 bowtie_b{{{0, 4}, {2, 2}, {4, 4}}, {}};
+  const ClipResult two = clip(r.outside, PolygonSet2{bowtie_b});
+  EXPECT_EQ(area(two.inside), 4.0);
+  ASSERT_EQ(two.outside.size(), 2u);
+  EXPECT_EQ(area(two.outside[0]), 4.0);
+  EXPECT_EQ(area(two.outside[1]), 4.0);
+  ExpectWellFormed(two.outside);
+}
+
+TEST(Clip, SubjectWithHoleAgainstOverlappingSquare) {
+  PolygonWithHoles2 frame = rect(0, 0, 4, 4);
+  frame.holes.push_back(rect(1, 1, 3, 3).outer);
+  const ClipResult r = ClipChecked(frame, rect(2, 2, 6, 6));
+  EXPECT_EQ(area(r.inside), 3.0);
+  EXPECT_EQ(area(r.outside), 9.0);
+}
+
+TEST(Clip, ClipWithHoleAroundSubject) {
+  // The subject sits exactly in the clip's hole: nothing inside, edges all shared.
+  PolygonWithHoles2 frame = rect(0, 0, 4, 4);
+  frame.holes.push_back(rect(1, 1, 3, 3).outer);
+  const ClipResult r = ClipChecked(rect(1, 1, 3, 3), frame);
+  EXPECT_TRUE(r.inside.empty());
+  EXPECT_EQ(area(r.outside), 4.0);
+}
+
+TEST(Clip, HoleTouchingOuterAtAPoint) {
+  PolygonWithHoles2 a = rect(0, 0, 4, 4);
+  a.holes.push_back({{0, 2}, {2, 1}, {2, 3}});  // touches the left edge at (0, 2)
+  const ClipResult r = ClipChecked(a, rect(-1, 1, 1, 3));
+  EXPECT_EQ(area(r.inside), 2.0 - 0.5);
+  EXPECT_EQ(area(r.inside) + area(r.outside), 16.0 - 2.0);
+}
+
+TEST(Clip, RepeatedVerticesAndSpikesAreCleaned) {
+  const PolygonWithHoles2 messy{
+      {{0, 0}, {0, 0}, {4, 0}, {6, 0}, {4, 0}, {4, 4}, {2, 4}, {0, 4}, {0, 4}}, {}};
+  const ClipResult r = ClipChecked(messy, rect(2, 2, 6, 6));
+  EXPECT_EQ(area(r.inside), 4.0);
+  ASSERT_EQ(r.outside.size(), 1u);
+  EXPECT_EQ(r.outside[0].outer.size(), 6u);
+}
+
+TEST(Clip, DegenerateInputsGiveEmptyResults) {
+  const PolygonWithHoles2 line{{{0, 0}, {1, 1}, {2, 2}}, {}};
+  const ClipResult r = clip(line, rect(0, 0, 4, 4));
+  EXPECT_TRUE(r.inside.empty());
+  EXPECT_TRUE(r.outside.empty());
+  const ClipResult s = clip(rect(0, 0, 4, 4), line);
+  EXPECT_TRUE(s.inside.empty());
+  EXPECT_EQ(area(s.outside), 16.0);
+}
+
+TEST(Clip, DisjointBoxes) {
+  const ClipResult r = ClipChecked(rect(0, 0, 1, 1), rect(5, 5, 6, 6));
+  EXPECT_TRUE(r.inside.empty());
+  EXPECT_EQ(area(r.outside), 1.0);
+}
+
+TEST(Clip, ProperCrossingsOfConcavePolygons) {
+  // A comb against a bar: four teeth crossed, exact dyadic crossings.
+  const PolygonWithHoles2 comb{{{0, 0},
+                                {8, 0},
+                                {8, 4},
+                                {7, 4},
+                                {7, 1},
+                                {5, 1},
+                                {5, 4},
+                                {3, 4},
+                                {3, 1},
+                                {1, 1},
+                                {1, 4},
+                                {0, 4}},
+                               {}};
+  const ClipResult r = ClipChecked(comb, rect(-1, 2, 9, 3));
+  EXPECT_EQ(r.inside.size(), 3u);
+  EXPECT_EQ(area(r.inside), 1.0 + 2.0 + 1.0);
+  EXPECT_EQ(area(r.outside), area(comb) - 4.0);
+}
+
+TEST(ClipAgainstSet, OverlappingClipsCountOnce) {
+  const std::vector<PolygonWithHoles2> clips{rect(0, 0, 2, 4), rect(1, 0, 3, 4)};
+  const ClipResult r = clip(rect(0, 0, 4, 4), clips);
+  EXPECT_EQ(area(r.inside), 12.0);
+  EXPECT_EQ(area(r.outside), 4.0);
+  ExpectWellFormed(r.inside);
+  ExpectWellFormed(r.outside);
+}
+
+TEST(ClipAgainstSet, EmptySetLeavesSubjectOutside) {
+  const ClipResult r = clip(rect(0, 0, 4, 4), std::span<const PolygonWithHoles2>{});
+  EXPECT_TRUE(r.inside.empty());
+  EXPECT_EQ(area(r.outside), 16.0);
+}
+
+TEST(Normalize, OrientsOuterCounterClockwiseAndHolesClockwise) {
+  PolygonWithHoles2 p = rect(0, 0, 4, 4);
+  std::reverse(p.outer.begin(), p.outer.end());
+  PolygonWithHoles2 hole_ccw = rect(1, 1, 2, 2);
+  p.holes.push_back(hole_ccw.outer);
+  const PolygonSet2 n = normalized(PolygonSet2{p});
+  ASSERT_EQ(n.size(), 1u);
+  EXPECT_TRUE(is_counter_clockwise(n[0].outer));
+  ASSERT_EQ(n[0].holes.size(), 1u);
+  EXPECT_FALSE(is_counter_clockwise(n[0].holes[0]));
+  EXPECT_EQ(area(n), 15.0);
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper

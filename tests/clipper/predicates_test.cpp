@@ -1,0 +1,62 @@
+#include "clipper/predicates.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace shadowgen::clipper {
+namespace {
+
+// Exact reference for points on the grid 2^-53 * integer: scaled to integers the
+// determinant fits in 128 bits.
+int exact_sign_on_grid(const Point2& a, const Point2& b, const Point2& c) {
+  auto scaled = [](double v) { return static_cast<__int128>(std::ldexp(v, 53)); };
+  const __int128 bax = scaled(b.x) - scaled(a.x), bay = scaled(b.y) - scaled(a.y);
+  const __int128 cax = scaled(c.x) - scaled(a.x), cay = scaled(c.y) - scaled(a.y);
+  const __int128 det = bax * cay - bay * cax;
+  return det > 0 ? 1 : (det < 0 ? -1 : 0);
+}
+
+// The classic failure of naive orientation (Kettner et al., "Classroom examples of
+// robustness problems"): a 256x256 grid of points a few ulps around (0.5, 0.5) against
+// the line through (12, 12) and (24, 24).
+TEST(Orient2d, MatchesExactSignNearADegenerateLine) {
+  const Point2 q{12.0, 12.0}, r{24.0, 24.0};
+  int mismatches = 0, collinear = 0;
+  for (int i = 0; i < 256; ++i) {
+    for (int j = 0; j < 256; ++j) {
+      const Point2 p{0.5 + std::ldexp(i, -53), 0.5 + std::ldexp(j, -53)};
+      const int expected = exact_sign_on_grid(p, q, r);
+      const int got = static_cast<int>(orient2d(p, q, r));
+      if (expected != got) ++mismatches;
+      if (expected == 0) ++collinear;
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(collinear, 256);  // exactly the diagonal i == j lies on the line
+}
+
+TEST(Orient2d, ValueHasTheExactSignAndIsAccurate) {
+  const Point2 a{1e8 + 0.25, 1e8}, b{1e8 + 1.25, 1e8 + 1.0};
+  const Point2 on{1e8 + 2.25, 1e8 + 2.0};
+  EXPECT_EQ(orient2d(a, b, on), Orientation::kCollinear);
+  EXPECT_EQ(orient2d_value(a, b, on), 0.0);
+  const Point2 left{1e8 + 2.25, 1e8 + 2.0 + std::ldexp(1.0, -26)};
+  EXPECT_EQ(orient2d(a, b, left), Orientation::kCounterClockwise);
+  EXPECT_DOUBLE_EQ(orient2d_value(a, b, left), std::ldexp(1.0, -26));
+  EXPECT_EQ(orient2d(b, a, left), Orientation::kClockwise);
+}
+
+TEST(OnSegment, ClosedSegmentExactly) {
+  const Point2 a{0.1, 0.1}, b{0.3, 0.3};
+  EXPECT_TRUE(on_segment(a, b, a));
+  EXPECT_TRUE(on_segment(a, b, b));
+  EXPECT_FALSE(on_segment(a, b, {0.4, 0.4}));
+  EXPECT_FALSE(on_segment(a, b, {0.2, 0.2000000001}));
+  const Point2 c{0.0, 0.0}, d{4.0, 2.0};
+  EXPECT_TRUE(on_segment(c, d, {2.0, 1.0}));
+  EXPECT_FALSE(on_segment(c, d, {2.0, std::nextafter(1.0, 2.0)}));
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper
