@@ -1,0 +1,39 @@
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "clipper/polygon.h"
+
+namespace shadowgen::hsr::detail {
+
+// An axis-aligned image-space bounding box.
+struct Box2 {
+  double xmin = INFINITY, ymin = INFINITY, xmax = -INFINITY, ymax = -INFINITY;
+
+  void add(const clipper::Point2& p) {
+    xmin = std::min(xmin, p.x);
+    ymin = std::min(ymin, p.y);
+    xmax = std::max(xmax, p.x);
+    ymax = std::max(ymax, p.y);
+  }
+  void add(const Box2& b) {
+    xmin = std::min(xmin, b.xmin);
+    ymin = std::min(ymin, b.ymin);
+    xmax = std::max(xmax, b.xmax);
+    ymax = std::max(ymax, b.ymax);
+  }
+  bool empty() const { return !(xmin <= xmax && ymin <= ymax); }
+  // Open overlap: boxes that only touch cannot hold overlapping polygons.
+  bool overlaps(const Box2& b) const {
+    return xmin < b.xmax && b.xmin < xmax && ymin < b.ymax && b.ymin < ymax;
+  }
+};
+
+inline Box2 box_of(const clipper::PolygonWithHoles2& p) {
+  Box2 b;
+  for (const clipper::Point2& q : p.outer) b.add(q);
+  return b;
+}
+
+}  // namespace shadowgen::hsr::detail

@@ -1,0 +1,80 @@
+#include "hsr/detail/spatial_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowgen::hsr::detail {
+
+SpatialGrid::SpatialGrid(const Box2& extent, std::size_t expected_items) : extent_(extent) {
+  const double w = extent.xmax - extent.xmin, h = extent.ymax - extent.ymin;
+  const double cells = static_cast<double>(std::max<std::size_t>(expected_items, 1));
+  if (w > 0.0 && h > 0.0) {
+    const double side = std::sqrt(w * h / cells);
+    nx_ = static_cast<int>(std::clamp(std::ceil(w / side), 1.0, 2048.0));
+    ny_ = static_cast<int>(std::clamp(std::ceil(h / side), 1.0, 2048.0));
+  }
+  sx_ = w > 0.0 ? nx_ / w : 0.0;
+  sy_ = h > 0.0 ? ny_ / h : 0.0;
+  cells_.resize(static_cast<std::size_t>(nx_) * ny_);
+}
+
+bool SpatialGrid::cell_range(const Box2& box, int& x0, int& y0, int& x1, int& y1) const {
+  auto clamp_cell = [](double v, int n) {
+    return static_cast<int>(std::clamp(std::floor(v), 0.0, static_cast<double>(n - 1)));
+  };
+  x0 = clamp_cell((box.xmin - extent_.xmin) * sx_, nx_);
+  x1 = clamp_cell((box.xmax - extent_.xmin) * sx_, nx_);
+  y0 = clamp_cell((box.ymin - extent_.ymin) * sy_, ny_);
+  y1 = clamp_cell((box.ymax - extent_.ymin) * sy_, ny_);
+  return !box.empty();
+}
+
+void SpatialGrid::insert(std::size_t item, const Box2& box) {
+  if (item >= seen_.size()) {
+    seen_.resize(item + 1, 0);
+    is_wide_.resize(item + 1, false);
+  }
+  int x0, y0, x1, y1;
+  if (!cell_range(box, x0, y0, x1, y1)) return;
+  const std::size_t count = static_cast<std::size_t>(x1 - x0 + 1) * (y1 - y0 + 1);
+  if (count > kMaxCells) {
+    wide_.push_back(item);
+    is_wide_[item] = true;
+    return;
+  }
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) cells_[static_cast<std::size_t>(y) * nx_ + x].push_back(item);
+  }
+}
+
+void SpatialGrid::erase_wide(std::size_t item) {
+  if (item >= is_wide_.size() || !is_wide_[item]) return;
+  is_wide_[item] = false;
+  const auto it = std::find(wide_.begin(), wide_.end(), item);
+  if (it != wide_.end()) {
+    *it = wide_.back();
+    wide_.pop_back();
+  }
+}
+
+void SpatialGrid::query(const Box2& box, std::vector<std::size_t>& out) {
+  if (++stamp_ == 0) {
+    std::fill(seen_.begin(), seen_.end(), 0);
+    stamp_ = 1;
+  }
+  auto take = [&](std::size_t item) {
+    if (seen_[item] == stamp_) return;
+    seen_[item] = stamp_;
+    out.push_back(item);
+  };
+  for (std::size_t item : wide_) take(item);
+  int x0, y0, x1, y1;
+  if (!cell_range(box, x0, y0, x1, y1)) return;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      for (std::size_t item : cells_[static_cast<std::size_t>(y) * nx_ + x]) take(item);
+    }
+  }
+}
+
+}  // namespace shadowgen::hsr::detail

@@ -1,0 +1,41 @@
+#pragma once
+
+// A uniform grid over image-space bounding boxes: which pieces may overlap a template.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "hsr/detail/box2.h"
+
+namespace shadowgen::hsr::detail {
+
+class SpatialGrid {
+ public:
+  // A grid of about `expected_items` cells over `extent`. Items wider than kMaxCells
+  // cells are kept on a separate list that every query returns, so one huge polygon (a
+  // ground plane) does not fill every cell again each time it is clipped.
+  SpatialGrid(const Box2& extent, std::size_t expected_items);
+
+  void insert(std::size_t item, const Box2& box);
+  // Forgets an item of the wide list (cell entries of dead items are left for the caller
+  // to skip: they cost one look each).
+  void erase_wide(std::size_t item);
+  // Appends, once each, the items whose cells meet `box` (a superset of the overlapping).
+  void query(const Box2& box, std::vector<std::size_t>& out);
+
+ private:
+  static constexpr std::size_t kMaxCells = 64;
+  bool cell_range(const Box2& box, int& x0, int& y0, int& x1, int& y1) const;
+
+  Box2 extent_;
+  int nx_ = 1, ny_ = 1;
+  double sx_ = 1.0, sy_ = 1.0;
+  std::vector<std::vector<std::size_t>> cells_;
+  std::vector<std::size_t> wide_;
+  std::vector<std::uint32_t> seen_;
+  std::vector<bool> is_wide_;
+  std::uint32_t stamp_ = 0;
+};
+
+}  // namespace shadowgen::hsr::detail

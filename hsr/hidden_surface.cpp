@@ -1,0 +1,251 @@
+#include "hsr/hidden_surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+#include "clipper/clip.h"
+#include "clipper/merge.h"
+#include "hsr/detail/box2.h"
+#include "hsr/detail/half_plane.h"
+#include "hsr/detail/spatial_grid.h"
+
+namespace shadowgen::hsr {
+namespace {
+
+using clipper::PolygonSet2;
+using clipper::PolygonWithHoles2;
+using detail::Box2;
+
+// Relative bound on the error of a nearness difference: evaluating two affine functions,
+// whose coefficients are themselves rounded from the planes, costs a few dozen ulps of the
+// magnitudes summed. Differences below it are ties.
+constexpr double kTieTolerance = 0x1p-48;
+
+struct Piece {
+  PolygonWithHoles2 shape;
+  std::size_t parent = 0;
+};
+
+enum class DepthOrder { kBehindOrTied, kInFront, kCrossing };
+
+class AreaSort {
+ public:
+  AreaSort(const std::vector<Nearness>& nearness, HsrStats& stats)
+      : nearness_(nearness), stats_(stats) {}
+
+  void run(std::vector<Piece> pieces, std::vector<Fragment>& out) {
+    out_ = &out;
+    Box2 extent;
+    for (const Piece& p : pieces) extent.add(detail::box_of(p.shape));
+    detail::SpatialGrid grid(extent, pieces.size());
+    std::vector<Box2> boxes;
+    std::vector<bool> alive;
+    // Rough depth sort: nearest first, by each piece's nearest vertex; ties by parent so
+    // the order does not depend on the input order more than the geometry does.
+    using Entry = std::pair<double, std::size_t>;
+    auto later = [&pieces](const Entry& a, const Entry& b) {
+      if (a.first != b.first) return a.first < b.first;
+      return pieces[a.second].parent > pieces[b.second].parent;
+    };
+    std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
+    auto add = [&](Piece piece) {
+      const std::size_t id = pieces.size();
+      boxes.push_back(detail::box_of(piece.shape));
+      alive.push_back(true);
+      grid.insert(id, boxes.back());
+      const double key = nearest(piece);
+      pieces.push_back(std::move(piece));
+      queue.push({key, id});
+    };
+    std::vector<Piece> initial = std::move(pieces);
+    pieces.clear();
+    for (Piece& p : initial) add(std::move(p));
+
+    std::vector<std::size_t> candidates;
+    while (!queue.empty()) {
+      const std::size_t t = queue.top().second;
+      queue.pop();
+      if (!alive[t]) continue;
+      alive[t] = false;
+      grid.erase_wide(t);
+      ++stats_.templates;
+      const Piece template_piece = pieces[t];
+      const Box2 tbox = boxes[t];
+      candidates.clear();
+      grid.query(tbox, candidates);
+      std::vector<Piece> inside;
+      for (std::size_t c : candidates) {
+        if (!alive[c] || !boxes[c].overlaps(tbox)) continue;
+        ++stats_.clips;
+        clipper::ClipResult r = clipper::clip(pieces[c].shape, template_piece.shape);
+        if (r.inside.empty()) continue;
+        alive[c] = false;
+        grid.erase_wide(c);
+        const std::size_t parent = pieces[c].parent;
+        for (PolygonWithHoles2& p : r.inside) inside.push_back({std::move(p), parent});
+        for (PolygonWithHoles2& p : r.outside) add({std::move(p), parent});
+      }
+      std::vector<std::size_t> stack{template_piece.parent};
+      resolve({template_piece.shape}, template_piece.parent, std::move(inside), stack);
+    }
+  }
+
+ private:
+  double nearest(const Piece& p) const {
+    const Nearness& n = nearness_[p.parent];
+    double best = -INFINITY;
+    for (const clipper::Point2& v : p.shape.outer) best = std::max(best, n.at(v));
+    return best;
+  }
+
+  // Where `piece` lies relative to the plane of `front_parent`, over the piece: affine
+  // differences take their extremes at the outer loop's vertices.
+  DepthOrder order(const Piece& piece, std::size_t front_parent) const {
+    const Nearness& np = nearness_[piece.parent];
+    const Nearness& nt = nearness_[front_parent];
+    bool ahead = false, behind = false;
+    for (const clipper::Point2& v : piece.shape.outer) {
+      const double d = np.at(v) - nt.at(v);
+      const double scale = std::fabs(np.a * v.x) + std::fabs(np.b * v.y) + std::fabs(np.c) +
+                           std::fabs(nt.a * v.x) + std::fabs(nt.b * v.y) + std::fabs(nt.c);
+      const double tol = kTieTolerance * scale;
+      if (d > tol) ahead = true;
+      if (d < -tol) behind = true;
+    }
+    if (!ahead) return DepthOrder::kBehindOrTied;
+    return behind ? DepthOrder::kCrossing : DepthOrder::kInFront;
+  }
+
+  // The part of `piece` in front of the plane of `front_parent`: split along the line
+  // where the two planes' nearness is equal.
+  void front_part(const Piece& piece, std::size_t front_parent, std::vector<Piece>& out) {
+    ++stats_.depth_splits;
+    const Nearness& np = nearness_[piece.parent];
+    const Nearness& nt = nearness_[front_parent];
+    const PolygonWithHoles2 half = detail::half_plane_in_box(np.a - nt.a, np.b - nt.b, np.c - nt.c,
+                                                             detail::box_of(piece.shape));
+    if (half.outer.empty()) return;
+    ++stats_.clips;
+    for (PolygonWithHoles2& p : clipper::clip(piece.shape, half).inside) {
+      out.push_back({std::move(p), piece.parent});
+    }
+  }
+
+  // Settles the visibility of `region` (all of it covered by `parent`) against the
+  // pieces of other polygons lying within it.
+  void resolve(PolygonSet2 region, std::size_t parent, std::vector<Piece> within,
+               std::vector<std::size_t>& stack) {
+    std::vector<Piece> offenders;
+    for (Piece& p : within) {
+      switch (order(p, parent)) {
+        case DepthOrder::kBehindOrTied:
+          break;  // hidden by the template
+        case DepthOrder::kInFront:
+          offenders.push_back(std::move(p));
+          break;
+        case DepthOrder::kCrossing:
+          front_part(p, parent, offenders);
+          break;
+      }
+    }
+    // A piece whose polygon is already a template further up cannot truly be in front
+    // here; only rounding says so. Refusing it is what makes cycles terminate.
+    std::erase_if(offenders, [&](const Piece& p) {
+      const bool on_stack = std::find(stack.begin(), stack.end(), p.parent) != stack.end();
+      if (on_stack) ++stats_.cycle_breaks;
+      return on_stack;
+    });
+    if (offenders.empty()) {
+      for (PolygonWithHoles2& p : region) out_->push_back({parent, std::move(p)});
+      return;
+    }
+    // Depth-sort error: the nearest offender becomes the template over its own area.
+    ++stats_.depth_errors;
+    std::size_t best = 0;
+    double best_key = -INFINITY;
+    for (std::size_t i = 0; i < offenders.size(); ++i) {
+      const double key = nearest(offenders[i]);
+      if (key > best_key) {
+        best_key = key;
+        best = i;
+      }
+    }
+    Piece front = std::move(offenders[best]);
+    offenders.erase(offenders.begin() + static_cast<std::ptrdiff_t>(best));
+    std::vector<Piece> in_front_area, elsewhere;
+    for (Piece& p : offenders) {
+      ++stats_.clips;
+      clipper::ClipResult r = clipper::clip(p.shape, front.shape);
+      for (PolygonWithHoles2& q : r.inside) in_front_area.push_back({std::move(q), p.parent});
+      for (PolygonWithHoles2& q : r.outside) elsewhere.push_back({std::move(q), p.parent});
+    }
+    ++stats_.clips;
+    PolygonSet2 rest = clipper::difference(region, {front.shape});
+    stack.push_back(front.parent);
+    const std::size_t front_parent = front.parent;
+    resolve({std::move(front.shape)}, front_parent, std::move(in_front_area), stack);
+    stack.pop_back();
+    if (!rest.empty()) resolve(std::move(rest), parent, std::move(elsewhere), stack);
+  }
+
+  const std::vector<Nearness>& nearness_;
+  HsrStats& stats_;
+  std::vector<Fragment>* out_ = nullptr;
+};
+
+std::vector<Fragment> merge_by_parent(std::vector<Fragment> fragments) {
+  std::stable_sort(fragments.begin(), fragments.end(),
+                   [](const Fragment& a, const Fragment& b) { return a.parent < b.parent; });
+  std::vector<Fragment> merged;
+  std::vector<PolygonWithHoles2> group;
+  for (std::size_t i = 0; i < fragments.size();) {
+    std::size_t j = i;
+    group.clear();
+    while (j < fragments.size() && fragments[j].parent == fragments[i].parent) {
+      group.push_back(std::move(fragments[j].shape));
+      ++j;
+    }
+    for (PolygonWithHoles2& p : clipper::merge_adjacent(group)) {
+      merged.push_back({fragments[i].parent, std::move(p)});
+    }
+    i = j;
+  }
+  return merged;
+}
+
+}  // namespace
+
+VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const View& view,
+                                       const HsrOptions& options) {
+  VisibleSurfaces result;
+  HsrStats& stats = result.stats;
+  stats.input_polygons = polygons.size();
+  result.planes.resize(polygons.size());
+  result.nearness.resize(polygons.size());
+  std::vector<Piece> pieces;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    result.planes[i] = plane_of(polygons[i]);
+    const std::optional<Nearness> nearness = view.nearness_on(result.planes[i]);
+    if (!nearness) {
+      ++stats.edge_on;
+      continue;
+    }
+    result.nearness[i] = *nearness;
+    PolygonSet2 image = project_polygon(polygons[i], view);
+    if (image.empty()) {
+      ++stats.outside_view;
+      continue;
+    }
+    ++stats.projected_polygons;
+    for (PolygonWithHoles2& p : image) pieces.push_back({std::move(p), i});
+  }
+
+  AreaSort(result.nearness, stats).run(std::move(pieces), result.fragments);
+  stats.fragments_before_merge = result.fragments.size();
+  if (options.merge_fragments) result.fragments = merge_by_parent(std::move(result.fragments));
+  stats.fragments = result.fragments.size();
+  return result;
+}
+
+}  // namespace shadowgen::hsr

@@ -1,0 +1,115 @@
+#include "hsr/view.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <stdexcept>
+
+namespace shadowgen::hsr {
+namespace {
+
+// A right-handed frame (right, up, forward) with forward along `direction`.
+void make_frame(const glm::dvec3& direction, const glm::dvec3& up_hint, glm::dvec3& right,
+                glm::dvec3& up, glm::dvec3& forward) {
+  const double length = glm::length(direction);
+  if (!(length > 0.0) || !std::isfinite(length)) {
+    throw std::invalid_argument("view direction must be finite and non-zero");
+  }
+  forward = direction / length;
+  glm::dvec3 hint = up_hint;
+  if (!(glm::length(glm::cross(hint, forward)) > 1e-12 * glm::length(hint))) {
+    // No usable hint: take the world axis least aligned with forward.
+    const glm::dvec3 a = glm::abs(forward);
+    hint = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0)
+           : a.y <= a.z             ? glm::dvec3(0, 1, 0)
+                                    : glm::dvec3(0, 0, 1);
+  }
+  // Image x to the right and y up as seen looking along forward.
+  right = glm::normalize(glm::cross(forward, hint));
+  up = glm::cross(right, forward);
+}
+
+}  // namespace
+
+View View::orthographic(const glm::dvec3& direction, const glm::dvec3& center) {
+  View v;
+  v.perspective_ = false;
+  v.eye_ = center;
+  make_frame(direction, glm::dvec3(0, 0, 1), v.right_, v.up_, v.forward_);
+  return v;
+}
+
+View View::perspective(const glm::dvec3& eye, const glm::dvec3& forward, const glm::dvec3& up,
+                       double fov_deg, double near, double aspect) {
+  if (!(fov_deg > 0.0 && fov_deg < 180.0)) {
+    throw std::invalid_argument("field of view must lie strictly between 0 and 180 degrees");
+  }
+  if (!(near > 0.0) || !std::isfinite(near)) {
+    throw std::invalid_argument("near distance must be positive and finite");
+  }
+  if (!(aspect > 0.0) || !std::isfinite(aspect)) {
+    throw std::invalid_argument("aspect ratio must be positive and finite");
+  }
+  View v;
+  v.perspective_ = true;
+  v.eye_ = eye;
+  v.near_ = near;
+  v.aspect_ = aspect;
+  v.half_height_ = std::tan(0.5 * fov_deg * std::numbers::pi / 180.0);
+  make_frame(forward, up, v.right_, v.up_, v.forward_);
+  return v;
+}
+
+glm::dvec3 View::to_eye_frame(const glm::dvec3& p) const {
+  const glm::dvec3 d = p - eye_;
+  return {glm::dot(d, right_), glm::dot(d, up_), glm::dot(d, forward_)};
+}
+
+clipper::Point2 View::project(const glm::dvec3& p) const {
+  const glm::dvec3 e = to_eye_frame(p);
+  if (perspective_) return {e.x / e.z, e.y / e.z};
+  return {e.x, e.y};
+}
+
+Ray3 View::ray_through(const clipper::Point2& image) const {
+  if (perspective_) return {eye_, right_ * image.x + up_ * image.y + forward_};
+  return {eye_ + right_ * image.x + up_ * image.y, forward_};
+}
+
+std::optional<glm::dvec3> View::unproject(const clipper::Point2& image, const Plane3& plane) const {
+  const Ray3 ray = ray_through(image);
+  const double denom = glm::dot(plane.normal, ray.direction);
+  if (denom == 0.0) return std::nullopt;
+  const double t = (plane.offset - glm::dot(plane.normal, ray.origin)) / denom;
+  return ray.origin + t * ray.direction;
+}
+
+std::optional<Nearness> View::nearness_on(const Plane3& plane) const {
+  const double nr = glm::dot(plane.normal, right_);
+  const double nu = glm::dot(plane.normal, up_);
+  const double nf = glm::dot(plane.normal, forward_);
+  // The plane's offset relative to the eye (or centre): n·(p − eye) = rel.
+  const double rel = plane.offset - glm::dot(plane.normal, eye_);
+  if (perspective_) {
+    // p = eye + z (x right + y up + forward): n·p = offset gives
+    // 1/z = (x nr + y nu + nf) / rel.
+    if (rel == 0.0) return std::nullopt;
+    return Nearness{nr / rel, nu / rel, nf / rel};
+  }
+  // p = centre + x right + y up + z forward: z = (rel − x nr − y nu) / nf, nearness −z.
+  if (nf == 0.0) return std::nullopt;
+  return Nearness{nr / nf, nu / nf, -rel / nf};
+}
+
+double View::nearness_of(const glm::dvec3& p) const {
+  const double z = glm::dot(p - eye_, forward_);
+  return perspective_ ? 1.0 / z : -z;
+}
+
+std::optional<clipper::PolygonWithHoles2> View::window() const {
+  if (!perspective_) return std::nullopt;
+  const double h = half_height_, w = half_height_ * aspect_;
+  return clipper::PolygonWithHoles2{{{-w, -h}, {w, -h}, {w, h}, {-w, h}}, {}};
+}
+
+}  // namespace shadowgen::hsr
