@@ -60,3 +60,24 @@ TEST(OnSegment, ClosedSegmentExactly) {
 
 }  // namespace
 }  // namespace shadowgen::clipper
+
+namespace shadowgen::clipper {
+namespace {
+
+TEST(Orient3d, ExactOnATiltedPlaneAndOneUlpOff) {
+  // The plane z = 0.5·x + 0.25·y + 1e8 holds these dyadic points exactly.
+  auto on_plane = [](double x, double y) { return glm::dvec3(x, y, 0.5 * x + 0.25 * y + 1e8); };
+  const glm::dvec3 a = on_plane(0, 0), b = on_plane(4, 0), c = on_plane(0, 8);
+  const glm::dvec3 d = on_plane(3, 5);
+  EXPECT_EQ(orient3d(a, b, c, d), Orientation::kCollinear);
+  const glm::dvec3 above{d.x, d.y, std::nextafter(d.z, 2e8)};
+  const glm::dvec3 below{d.x, d.y, std::nextafter(d.z, 0.0)};
+  EXPECT_NE(orient3d(a, b, c, above), Orientation::kCollinear);
+  EXPECT_NE(orient3d(a, b, c, below), Orientation::kCollinear);
+  EXPECT_NE(orient3d(a, b, c, above), orient3d(a, b, c, below));
+  // a, b, c counter-clockwise seen from above: a point below is positive.
+  EXPECT_EQ(orient3d(a, b, c, below), Orientation::kCounterClockwise);
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper

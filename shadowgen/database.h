@@ -1,0 +1,59 @@
+#pragma once
+
+// The shadowed database, `shadowgen-shadowed/1` (JSON): the scene as read plus the lit
+// detail polygons of every (face, light). Written and read back losslessly: every double
+// is printed in the shortest form that reads back to the same value.
+//
+// Layout (keys in this order when written; readers ignore keys they do not know):
+//
+//   {
+//     "format": "shadowgen-shadowed/1",
+//     "lights": [                               scene order, ids unique
+//       {"id":"sun","type":"directional","direction":[x,y,z],"intensity":[r,g,b]},
+//       {"id":"lamp","type":"point","position":[x,y,z],"intensity":[r,g,b],
+//        "range":{"falloff_start":5.0,"end":20.0,"exponent":2.0}}    range optional
+//     ],
+//     "views": [                                scene order, ids unique
+//       {"id":"main","eye":[x,y,z],"target":[x,y,z],"up":[x,y,z],"fov_deg":45.0}
+//     ],
+//     "faces": [                                scene order, ids unique
+//       {
+//         "id": "wall",
+//         "source_file": "scenes/room.json",    the file the face came from
+//         "parts": [                            one polygon, or the triangles of a
+//           POLYGON, ...                        non-planar one
+//         ],
+//         "lit": {                              by light id; a light whose lit region
+//           "sun": [POLYGON, ...]               on this face is empty is left out
+//         }
+//       }
+//     ]
+//   }
+//
+//   POLYGON = {"outer":[[x,y,z],...],"holes":[[[x,y,z],...],...]}
+//
+// All coordinates are the scene's, in 3D; a lit polygon lies in its face's plane and the
+// lit polygons of one (face, light) cover exactly its lit region. Every loop has at least
+// three vertices. Numbers are written with a '.' or an exponent ("28.0", "-0.0", "1e-300");
+// readers take integers too. A light keeps only the keys of its type (a directional
+// light's position is not stored). The writer puts one light, view or polygon per line.
+
+#include <filesystem>
+#include <string>
+
+#include "shadowgen/shadowed_scene.h"
+
+namespace shadowgen {
+
+// Throws std::invalid_argument (naming the face or light) for what the format cannot
+// hold: a non-finite number, a loop of fewer than three vertices, a face without parts,
+// duplicate ids, or `lit` not shaped [face][light].
+std::string database_json(const ShadowedScene& shadowed);
+// Throws InputError naming `path`, the face (when one is to blame) and what is wrong.
+ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path);
+
+// Writes through a temporary file in the same folder and a rename: never a partial file.
+void write_database(const ShadowedScene& shadowed, const std::filesystem::path& path);
+ShadowedScene read_database(const std::filesystem::path& path);
+
+}  // namespace shadowgen

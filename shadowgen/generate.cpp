@@ -1,0 +1,229 @@
+#include "shadowgen/generate.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <glm/geometric.hpp>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+
+#include "clipper/clip.h"
+#include "clipper/merge.h"
+#include "hsr/hidden_surface.h"
+#include "shadowgen/detail/coplanar_groups.h"
+#include "shadowgen/detail/light_views.h"
+
+namespace shadowgen {
+namespace {
+
+// Every part of every face, flattened: hidden-surface removal works on these.
+struct Parts {
+  std::vector<hsr::Polygon3> polygons;
+  std::vector<hsr::Plane3> planes;
+  std::vector<std::size_t> face;  // owner face index
+  std::vector<int> coplanar;      // detail::coplanar_groups
+  glm::dvec3 centre{0.0};
+};
+
+Parts flatten(const Scene& scene) {
+  Parts parts;
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    for (const hsr::Polygon3& p : scene.faces[f].parts) {
+      parts.polygons.push_back(p);
+      parts.planes.push_back(hsr::plane_of(p));
+      parts.face.push_back(f);
+      for (const glm::dvec3& v : p.outer) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+      }
+    }
+  }
+  if (!parts.polygons.empty()) parts.centre = 0.5 * (lo + hi);
+  parts.coplanar = detail::coplanar_groups(parts.polygons, parts.planes);
+  return parts;
+}
+
+// Does the light reach the front side of this plane at all? A light in the plane (or
+// parallel to it) leaves it unlit, as the spec settles.
+bool faces_light(const hsr::Plane3& plane, const Light& light) {
+  if (glm::length(plane.normal) == 0.0) return false;
+  if (light.type == LightType::kDirectional) return glm::dot(plane.normal, light.direction) < 0.0;
+  return plane.signed_distance(light.position) > 0.0;
+}
+
+// Maps image points of one view back onto a part's plane: the part's own vertices come
+// back exactly, other points are cast onto the plane along the light's ray.
+class BackProjector {
+ public:
+  BackProjector(const hsr::View& view, const hsr::Polygon3& polygon, const hsr::Plane3& plane)
+      : view_(view), plane_(plane) {
+    auto add = [this](const hsr::Loop3& loop) {
+      for (const glm::dvec3& v : loop) original_.emplace(view_.project(v), v);
+    };
+    add(polygon.outer);
+    for (const hsr::Loop3& h : polygon.holes) add(h);
+  }
+
+  hsr::Loop3 lift(const clipper::Loop2& loop) const {
+    hsr::Loop3 out;
+    out.reserve(loop.size());
+    for (const clipper::Point2& q : loop) {
+      const auto it = original_.find(q);
+      if (it != original_.end()) {
+        out.push_back(it->second);
+      } else if (const auto p = view_.unproject(q, plane_)) {
+        out.push_back(*p);
+      }
+    }
+    return out;
+  }
+
+  hsr::Polygon3 lift(const clipper::PolygonWithHoles2& p) const {
+    hsr::Polygon3 out{lift(p.outer), {}};
+    for (const clipper::Loop2& h : p.holes) out.holes.push_back(lift(h));
+    return out;
+  }
+
+ private:
+  const hsr::View& view_;
+  const hsr::Plane3& plane_;
+  std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original_;
+};
+
+// The lit detail polygons of every face for one light.
+std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Light& light,
+                                                  LightStats& stats) {
+  const std::size_t n = parts.polygons.size();
+  std::vector<std::vector<hsr::Polygon3>> lit_by_part(n);
+
+  // Model only what the light requires: faces wholly beyond range.end are left out.
+  std::vector<std::size_t> considered;
+  considered.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (light.type == LightType::kPoint && light.range &&
+        detail::distance_to_polygon(light.position, parts.polygons[i], parts.planes[i]) >
+            light.range->end) {
+      ++stats.faces_culled_range;
+      continue;
+    }
+    considered.push_back(i);
+    if (!faces_light(parts.planes[i], light)) ++stats.faces_facing_away;
+  }
+  stats.faces_considered = considered.size();
+  std::vector<hsr::Polygon3> polygons;
+  std::vector<hsr::Plane3> planes;
+  polygons.reserve(considered.size());
+  for (std::size_t i : considered) {
+    polygons.push_back(parts.polygons[i]);
+    planes.push_back(parts.planes[i]);
+  }
+
+  const std::vector<hsr::View> views = detail::light_views(light, polygons, planes, parts.centre);
+  stats.frusta = views.size();
+  for (const hsr::View& view : views) {
+    hsr::VisibleSurfaces visible = hsr::remove_hidden_surfaces(polygons, view);
+    stats.fragments += visible.fragments.size();
+    // Fragments per considered polygon, in image space.
+    std::vector<clipper::PolygonSet2> seen(polygons.size());
+    for (hsr::Fragment& f : visible.fragments) seen[f.parent].push_back(std::move(f.shape));
+
+    // Coplanar faces do not shadow each other: a front-facing face is lit wherever the
+    // plane it shares with others is visible within its own image.
+    std::unordered_map<int, std::vector<std::size_t>> groups;
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+      const int g = parts.coplanar[considered[k]];
+      if (g >= 0 && !seen[k].empty()) groups[g].push_back(k);
+    }
+    std::vector<clipper::PolygonSet2> extra(polygons.size());
+    for (const auto& [g, members] : groups) {
+      if (members.size() < 2) continue;
+      for (std::size_t k : members) {
+        if (!faces_light(planes[k], light)) continue;
+        const clipper::PolygonSet2 image = hsr::project_polygon(polygons[k], view);
+        for (std::size_t m : members) {
+          if (m == k) continue;
+          for (const auto& piece : seen[m]) {
+            for (auto& q : clipper::intersection({piece}, image)) extra[k].push_back(std::move(q));
+          }
+        }
+      }
+    }
+
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+      if (!faces_light(planes[k], light)) continue;
+      if (seen[k].empty() && extra[k].empty()) continue;
+      clipper::PolygonSet2 lit = std::move(seen[k]);
+      for (auto& q : extra[k]) lit.push_back(std::move(q));
+      const BackProjector back(view, polygons[k], planes[k]);
+      for (const clipper::PolygonWithHoles2& p : clipper::merge_adjacent(lit)) {
+        hsr::Polygon3 detail = back.lift(p);
+        if (detail.outer.size() >= 3) lit_by_part[considered[k]].push_back(std::move(detail));
+      }
+    }
+  }
+
+  std::vector<std::vector<hsr::Polygon3>> lit_by_face;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t f = parts.face[i];
+    if (lit_by_face.size() <= f) lit_by_face.resize(f + 1);
+    for (hsr::Polygon3& p : lit_by_part[i]) {
+      ++stats.lit_polygons;
+      lit_by_face[f].push_back(std::move(p));
+    }
+  }
+  return lit_by_face;
+}
+
+}  // namespace
+
+GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options) {
+  GenerateResult result;
+  result.shadowed.scene = scene;
+  const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
+  result.shadowed.lit.assign(faces, std::vector<std::vector<hsr::Polygon3>>(lights));
+  result.stats.resize(lights);
+  if (lights == 0) return result;
+
+  const Parts parts = flatten(scene);
+  std::vector<std::vector<std::vector<hsr::Polygon3>>> per_light(lights);
+  std::atomic<std::size_t> next{0};
+  std::mutex report_mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (std::size_t l = next++; l < lights; l = next++) {
+      try {
+        const auto start = std::chrono::steady_clock::now();
+        per_light[l] = light_one(parts, scene.lights[l], result.stats[l]);
+        result.stats[l].seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (options.on_light_done) {
+          const std::lock_guard lock(report_mutex);
+          options.on_light_done(l, result.stats[l]);
+        }
+      } catch (...) {
+        const std::lock_guard lock(report_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t count = std::min<std::size_t>(options.threads ? options.threads : hw, lights);
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < count; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+
+  for (std::size_t l = 0; l < lights; ++l) {
+    for (std::size_t f = 0; f < faces && f < per_light[l].size(); ++f) {
+      result.shadowed.lit[f][l] = std::move(per_light[l][f]);
+    }
+  }
+  return result;
+}
+
+}  // namespace shadowgen

@@ -1,0 +1,33 @@
+#pragma once
+
+// Errors in user input: what is wrong, in which file, on which face (when one is to blame).
+// The library throws them; the command line turns them into one message and exit code 1.
+
+#include <stdexcept>
+#include <string>
+
+namespace shadowgen {
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, std::string face_id, const std::string& problem)
+      : std::runtime_error(format(file, face_id, problem)),
+        file_(std::move(file)),
+        face_id_(std::move(face_id)),
+        problem_(problem) {}
+
+  const std::string& file() const { return file_; }
+  const std::string& face_id() const { return face_id_; }  // empty when no face is to blame
+  const std::string& problem() const { return problem_; }
+
+ private:
+  static std::string format(const std::string& file, const std::string& face_id,
+                            const std::string& problem) {
+    std::string s = file;
+    if (!face_id.empty()) s += ": face '" + face_id + "'";
+    return s + ": " + problem;
+  }
+  std::string file_, face_id_, problem_;
+};
+
+}  // namespace shadowgen

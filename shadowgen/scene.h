@@ -1,0 +1,57 @@
+#pragma once
+
+// The scene as shadowgen models it (../shared/spec/scene-format.md, `shadowgen-scene/1`):
+// faces in 3D with their ids, lights and optional views.
+
+#include <cstddef>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hsr/polygon3.h"
+
+namespace shadowgen {
+
+// One face of the scene. Its front side is the side from which the outer loop of each
+// part runs counter-clockwise. A planar face has one part; a non-planar polygon is split
+// into triangles that all keep the face's id.
+struct Face {
+  std::string id;
+  std::vector<hsr::Polygon3> parts;
+  std::string source_file;  // the scene or mesh file it came from, for messages
+};
+
+enum class LightType { kDirectional, kPoint };
+
+// Fall-off of a point light: full intensity up to falloff_start, zero from end on.
+struct LightRange {
+  double falloff_start = 0.0;
+  double end = 0.0;
+  double exponent = 2.0;
+};
+
+struct Light {
+  std::string id;
+  LightType type = LightType::kDirectional;
+  glm::dvec3 direction{0.0, 0.0, -1.0};  // directional: the way the light travels
+  glm::dvec3 position{0.0};              // point
+  glm::dvec3 intensity{1.0, 1.0, 1.0};
+  std::optional<LightRange> range;  // point lights only
+};
+
+struct ViewSpec {
+  std::string id;
+  glm::dvec3 eye{0.0};
+  glm::dvec3 target{0.0};
+  glm::dvec3 up{0.0, 0.0, 1.0};
+  double fov_deg = 45.0;
+};
+
+struct Scene {
+  std::vector<Face> faces;  // polygons first, then mesh faces, in file order
+  std::vector<Light> lights;
+  std::vector<ViewSpec> views;
+};
+
+}  // namespace shadowgen

@@ -1,0 +1,37 @@
+#pragma once
+
+// Reading a `shadowgen-scene/1` file (../shared/spec/scene-format.md): JSON polygons with
+// holes and mesh files through OpenMesh (OBJ, OFF, PLY, STL) with optional transforms.
+// Every problem is an InputError naming the file, the face id and what is wrong; nothing
+// is returned half-read.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shadowgen/scene.h"
+
+namespace shadowgen {
+
+struct ReadOptions {
+  // Non-planar polygons are an error instead of being split into triangles.
+  bool strict = false;
+};
+
+// Relative planarity tolerance: a polygon is planar when every vertex lies within
+// kPlanarityTolerance × (its largest extent) of its best-fit plane.
+inline constexpr double kPlanarityTolerance = 1e-9;
+
+struct ReadResult {
+  Scene scene;
+  std::vector<std::string> warnings;  // "file: face 'id': what" lines
+};
+
+ReadResult read_scene(const std::filesystem::path& path, const ReadOptions& options = {});
+
+// The same from JSON text; mesh files are resolved relative to `path`'s folder, and
+// `path` names the file in messages.
+ReadResult parse_scene(const std::string& json_text, const std::filesystem::path& path,
+                       const ReadOptions& options = {});
+
+}  // namespace shadowgen
