@@ -188,27 +188,38 @@ class IntersectionFinder {
   const Boundary* sides_[2];
 };
 
-// The loops of one operand with the intersection points inserted in order along each
-// edge (a point exactly on a segment is ordered exactly by the coordinate that varies
-// most along it).
-Boundary with_insertions(const Boundary& loops, std::vector<Insertion>& insertions) {
+// One loop of an operand with the intersection points inserted in order along each edge
+// (a point exactly on a segment is ordered exactly by the coordinate that varies most
+// along it). Each vertex remembers where it came from, because sides are decided on the
+// original edges: exact input, never a rounded crossing point.
+struct SplitLoop {
+  Loop2 points;
+  std::vector<int> original;  // index of the input vertex, or -1 for an inserted point
+  std::vector<int> edge;      // input edge that the edge leaving this vertex lies on
+};
+using SplitBoundary = std::vector<SplitLoop>;
+
+SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& insertions) {
   std::sort(insertions.begin(), insertions.end(), [](const Insertion& a, const Insertion& b) {
     return a.loop != b.loop ? a.loop < b.loop : a.index < b.index;
   });
-  Boundary out(loops.size());
+  SplitBoundary out(loops.size());
   std::size_t k = 0;
   for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
     const Loop2& loop = loops[l];
-    Loop2& result = out[l];
-    result.reserve(loop.size());
+    SplitLoop& result = out[l];
+    result.points.reserve(loop.size());
     const int n = static_cast<int>(loop.size());
-    auto push = [&result](const Point2& p) {
-      if (result.empty() || result.back() != p) result.push_back(p);
+    auto push = [&result](const Point2& p, int original, int edge) {
+      if (!result.points.empty() && result.points.back() == p) return;
+      result.points.push_back(p);
+      result.original.push_back(original);
+      result.edge.push_back(edge);
     };
     for (int i = 0; i < n; ++i) {
       const Point2& p = loop[i];
       const Point2& q = loop[i + 1 == n ? 0 : i + 1];
-      push(p);
+      push(p, i, i);
       const std::size_t first = k;
       while (k < insertions.size() && insertions[k].loop == l && insertions[k].index == i) ++k;
       if (k == first) continue;
@@ -222,28 +233,44 @@ Boundary with_insertions(const Boundary& loops, std::vector<Insertion>& insertio
                   return ascending ? u < v : u > v;
                 });
       for (std::size_t j = first; j < k; ++j) {
-        if (insertions[j].point != q) push(insertions[j].point);
+        if (insertions[j].point != q) push(insertions[j].point, -1, i);
       }
     }
-    while (result.size() > 1 && result.back() == result.front()) result.pop_back();
+    while (result.points.size() > 1 && result.points.back() == result.points.front()) {
+      result.points.pop_back();
+      result.original.pop_back();
+      result.edge.pop_back();
+    }
   }
   return out;
 }
 
-// Where a boundary passes through a point: the vertices before and after it.
+// How a boundary passes through a node, in terms of its input geometry. At one of its
+// own input vertices it turns there: `from` is the previous input vertex, `to` the next.
+// Anywhere else it runs straight along one input edge from `from` to `to`.
 struct Pass {
-  Point2 prev;
-  Point2 next;
+  bool at_vertex;
+  Point2 from;
+  Point2 to;
 };
 using PassMap = std::unordered_map<Point2, std::vector<Pass>, Point2Hash>;
 
-PassMap passes_through(const Boundary& loops, const std::unordered_set<Point2, Point2Hash>& nodes) {
+PassMap passes_through(const Boundary& loops, const SplitBoundary& split,
+                       const std::unordered_set<Point2, Point2Hash>& nodes) {
   PassMap passes;
-  for (const Loop2& loop : loops) {
-    const std::size_t n = loop.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!nodes.count(loop[i])) continue;
-      passes[loop[i]].push_back({loop[(i + n - 1) % n], loop[(i + 1) % n]});
+  for (std::size_t l = 0; l < split.size(); ++l) {
+    const Loop2& input = loops[l];
+    const SplitLoop& loop = split[l];
+    const int n = static_cast<int>(input.size());
+    for (std::size_t i = 0; i < loop.points.size(); ++i) {
+      if (!nodes.count(loop.points[i])) continue;
+      const int e = loop.edge[i];
+      if (loop.original[i] >= 0) {
+        const int v = loop.original[i];
+        passes[loop.points[i]].push_back({true, input[(v + n - 1) % n], input[(v + 1) % n]});
+      } else {
+        passes[loop.points[i]].push_back({false, input[e], input[(e + 1) % n]});
+      }
     }
   }
   return passes;
@@ -251,26 +278,46 @@ PassMap passes_through(const Boundary& loops, const std::unordered_set<Point2, P
 
 enum class Side { kInside, kOutside, kSharedSame, kSharedOpposite };
 
-bool same_ray(const Point2& v, const Point2& a, const Point2& b) {
-  if (orient2d(v, a, b) != Orientation::kCollinear) return false;
-  return (a.x - v.x) * (b.x - v.x) + (a.y - v.y) * (b.y - v.y) > 0.0;
+// Collinear segments p0p1 and q0q1: do they point the same way?
+bool same_direction(const Point2& p0, const Point2& p1, const Point2& q0, const Point2& q1) {
+  return (p1.x - p0.x) * (q1.x - q0.x) + (p1.y - p0.y) * (q1.y - q0.y) > 0.0;
 }
 
-// Which side of the other operand the edge v -> w lies on, from the other boundary's
-// passes through v: w inside the angle swept counter-clockwise from `next` to `prev` of
-// some pass is inside (the other region lies left of prev -> v -> next). This is the
-// exact local form of the entry/exit test.
-Side side_of_edge(const Point2& v, const Point2& w, const std::vector<Pass>& passes) {
+// Which side of the other operand the stretch leaving node v along the input edge
+// (e0 -> e1) lies on, given the other boundary's passes through v. This is the exact
+// local form of the entry/exit test: at a pass straight along an input edge (f0 -> f1),
+// the other region lies left of it, so the stretch enters exactly when e1 is left of
+// f0 -> f1 — a question about input points only, however v was rounded. At a pass that
+// turns at the other operand's input vertex v (then v is exact), the stretch is inside
+// when it leaves into the angle swept counter-clockwise from `to` round to `from`.
+Side side_of_edge(const Point2& v, const Point2& e0, const Point2& e1,
+                  const std::vector<Pass>& passes) {
   for (const Pass& pass : passes) {
-    if (w == pass.next || same_ray(v, pass.next, w)) return Side::kSharedSame;
-    if (w == pass.prev || same_ray(v, pass.prev, w)) return Side::kSharedOpposite;
+    if (pass.at_vertex) {
+      if (orient2d(v, pass.to, e1) == Orientation::kCollinear &&
+          same_direction(v, pass.to, v, e1)) {
+        return Side::kSharedSame;
+      }
+      if (orient2d(v, pass.from, e1) == Orientation::kCollinear &&
+          same_direction(v, pass.from, v, e1)) {
+        return Side::kSharedOpposite;
+      }
+    } else if (orient2d(pass.from, pass.to, e0) == Orientation::kCollinear &&
+               orient2d(pass.from, pass.to, e1) == Orientation::kCollinear) {
+      return same_direction(e0, e1, pass.from, pass.to) ? Side::kSharedSame : Side::kSharedOpposite;
+    }
   }
   for (const Pass& pass : passes) {
-    const Orientation corner = orient2d(pass.prev, v, pass.next);
-    const bool left_of_next = orient2d(v, pass.next, w) == Orientation::kCounterClockwise;
-    const bool right_of_prev = orient2d(v, pass.prev, w) == Orientation::kClockwise;
-    const bool inside = corner == Orientation::kCounterClockwise ? left_of_next && right_of_prev
-                                                                 : left_of_next || right_of_prev;
+    bool inside;
+    if (pass.at_vertex) {
+      const Orientation corner = orient2d(pass.from, v, pass.to);
+      const bool left_of_next = orient2d(v, pass.to, e1) == Orientation::kCounterClockwise;
+      const bool right_of_prev = orient2d(v, pass.from, e1) == Orientation::kClockwise;
+      inside = corner == Orientation::kCounterClockwise ? left_of_next && right_of_prev
+                                                        : left_of_next || right_of_prev;
+    } else {
+      inside = orient2d(pass.from, pass.to, e1) == Orientation::kCounterClockwise;
+    }
     if (inside) return Side::kInside;
   }
   return Side::kOutside;
@@ -281,8 +328,8 @@ struct ClassifiedEdges {
   std::vector<DirectedEdge> inside, outside, shared_same, shared_opposite;
 };
 
-ClassifiedEdges classify(const Boundary& loops, const Boundary& other_loops,
-                         const PassMap& other_passes,
+ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
+                         const Boundary& other_loops, const PassMap& other_passes,
                          const std::unordered_set<Point2, Point2Hash>& nodes) {
   ClassifiedEdges out;
   auto bucket = [&out](Side s) -> std::vector<DirectedEdge>& {
@@ -298,7 +345,9 @@ ClassifiedEdges classify(const Boundary& loops, const Boundary& other_loops,
     }
     return out.shared_opposite;
   };
-  for (const Loop2& loop : loops) {
+  for (std::size_t l = 0; l < split.size(); ++l) {
+    const Loop2& input = loops[l];
+    const Loop2& loop = split[l].points;
     const std::size_t n = loop.size();
     std::size_t first_node = n;
     for (std::size_t i = 0; i < n; ++i) {
@@ -322,8 +371,11 @@ ClassifiedEdges classify(const Boundary& loops, const Boundary& other_loops,
       const Point2& w = loop[(i + 1) % n];
       if (nodes.count(v)) {
         const auto it = other_passes.find(v);
+        const int e = split[l].edge[i];
+        const Point2& e0 = input[e];
+        const Point2& e1 = input[(e + 1) % input.size()];
         if (it != other_passes.end()) {
-          dst = &bucket(side_of_edge(v, w, it->second));
+          dst = &bucket(side_of_edge(v, e0, e1, it->second));
         } else {
           const Point2 mid{0.5 * (v.x + w.x), 0.5 * (v.y + w.y)};
           dst = detail::locate(mid, other_loops) == Location::kInside ? &out.inside : &out.outside;
@@ -359,12 +411,12 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
 
   IntersectionFinder finder(a_loops, b_loops);
   finder.run();
-  const Boundary a_split = with_insertions(a_loops, finder.insertions[0]);
-  const Boundary b_split = with_insertions(b_loops, finder.insertions[1]);
-  const PassMap a_passes = passes_through(a_split, finder.nodes);
-  const PassMap b_passes = passes_through(b_split, finder.nodes);
-  const ClassifiedEdges a_edges = classify(a_split, b_split, b_passes, finder.nodes);
-  const ClassifiedEdges b_edges = classify(b_split, a_split, a_passes, finder.nodes);
+  const SplitBoundary a_split = with_insertions(a_loops, finder.insertions[0]);
+  const SplitBoundary b_split = with_insertions(b_loops, finder.insertions[1]);
+  const PassMap a_passes = passes_through(a_loops, a_split, finder.nodes);
+  const PassMap b_passes = passes_through(b_loops, b_split, finder.nodes);
+  const ClassifiedEdges a_edges = classify(a_loops, a_split, b_loops, b_passes, finder.nodes);
+  const ClassifiedEdges b_edges = classify(b_loops, b_split, a_loops, a_passes, finder.nodes);
 
   // subject ∩ clip: the subject inside the clip, the clip inside the subject, and the
   // shared stretches where both regions lie on the same side (taken once).
