@@ -245,9 +245,10 @@ SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& ins
   return out;
 }
 
-// How a boundary passes through a node, in terms of its input geometry. At one of its
-// own input vertices it turns there: `from` is the previous input vertex, `to` the next.
-// Anywhere else it runs straight along one input edge from `from` to `to`.
+// How a boundary passes through a node, told in input geometry. At one of its own input
+// vertices (then the node is exact) it turns there: `from` is the previous input vertex,
+// `to` the next. Anywhere else the node was inserted into one of its input edges, and the
+// boundary runs straight along that edge from `from` to `to`.
 struct Pass {
   bool at_vertex;
   Point2 from;
@@ -278,49 +279,76 @@ PassMap passes_through(const Boundary& loops, const SplitBoundary& split,
 
 enum class Side { kInside, kOutside, kSharedSame, kSharedOpposite };
 
-// Collinear segments p0p1 and q0q1: do they point the same way?
-bool same_direction(const Point2& p0, const Point2& p1, const Point2& q0, const Point2& q1) {
-  return (p1.x - p0.x) * (q1.x - q0.x) + (p1.y - p0.y) * (q1.y - q0.y) > 0.0;
+// Does c lie on the ray from v through b?
+bool on_ray(const Point2& v, const Point2& b, const Point2& c) {
+  if (orient2d(v, b, c) != Orientation::kCollinear) return false;
+  return (b.x - v.x) * (c.x - v.x) + (b.y - v.y) * (c.y - v.y) > 0.0;
+}
+
+// Is direction point w strictly inside the angle swept counter-clockwise at v from `to`
+// round to `from` (the region left of from -> v -> to)?
+bool in_sector(const Point2& v, const Pass& pass, const Point2& w) {
+  const Orientation corner = orient2d(pass.from, v, pass.to);
+  const bool left_of_next = orient2d(v, pass.to, w) == Orientation::kCounterClockwise;
+  const bool right_of_prev = orient2d(v, pass.from, w) == Orientation::kClockwise;
+  return corner == Orientation::kCounterClockwise ? left_of_next && right_of_prev
+                                                  : left_of_next || right_of_prev;
 }
 
 // Which side of the other operand the stretch leaving node v along the input edge
-// (e0 -> e1) lies on, given the other boundary's passes through v. This is the exact
-// local form of the entry/exit test: at a pass straight along an input edge (f0 -> f1),
-// the other region lies left of it, so the stretch enters exactly when e1 is left of
-// f0 -> f1 — a question about input points only, however v was rounded. At a pass that
-// turns at the other operand's input vertex v (then v is exact), the stretch is inside
-// when it leaves into the angle swept counter-clockwise from `to` round to `from`.
+// (e0 -> e1) lies on, judged against one pass of the other boundary. This is the exact
+// local form of the entry/exit test (a touch does not flip the state, a crossing does),
+// asked of input points wherever the node itself is a rounded crossing:
+//   - a pass straight along an input edge f: the stretch lies on e1's side of f (on e0's
+//     side if e1 is on f's line; on f itself if both are);
+//   - a pass turning at an input vertex v of the other operand (v exact): if v lies on the
+//     stretch's input edge, the sector test at v is exact. If not, v is only where the
+//     rounded crossing of the stretch's edge with one of the two edges at v fell, and the
+//     stretch lies on e1's side of the edge it crossed.
+Side side_against(const Point2& v, const Point2& e0, const Point2& e1, const Pass& pass) {
+  if (!pass.at_vertex) {
+    const Orientation s1 = orient2d(pass.from, pass.to, e1);
+    const Orientation s0 = orient2d(pass.from, pass.to, e0);
+    if (s1 == Orientation::kCollinear && s0 == Orientation::kCollinear) {
+      const double dot =
+          (e1.x - e0.x) * (pass.to.x - pass.from.x) + (e1.y - e0.y) * (pass.to.y - pass.from.y);
+      return dot > 0.0 ? Side::kSharedSame : Side::kSharedOpposite;
+    }
+    const Orientation side = s1 != Orientation::kCollinear ? s1 : s0;
+    return side == Orientation::kCounterClockwise ? Side::kInside : Side::kOutside;
+  }
+  if (orient2d(e0, e1, v) == Orientation::kCollinear) {
+    if (on_ray(v, pass.to, e1)) return Side::kSharedSame;
+    if (on_ray(v, pass.from, e1)) return Side::kSharedOpposite;
+    return in_sector(v, pass, e1) ? Side::kInside : Side::kOutside;
+  }
+  auto crosses = [&](const Point2& f0, const Point2& f1) {
+    const Orientation a = orient2d(f0, f1, e0), b = orient2d(f0, f1, e1);
+    return a != Orientation::kCollinear && b != Orientation::kCollinear && a != b;
+  };
+  if (crosses(pass.from, v)) {
+    return orient2d(pass.from, v, e1) == Orientation::kCounterClockwise ? Side::kInside
+                                                                        : Side::kOutside;
+  }
+  if (crosses(v, pass.to)) {
+    return orient2d(v, pass.to, e1) == Orientation::kCounterClockwise ? Side::kInside
+                                                                      : Side::kOutside;
+  }
+  const Point2 ahead{v.x + (e1.x - e0.x), v.y + (e1.y - e0.y)};
+  return in_sector(v, pass, ahead) ? Side::kInside : Side::kOutside;
+}
+
+// Against all passes through v: shared if along any, inside if inside any (the other
+// region's sectors at one point are disjoint), else outside.
 Side side_of_edge(const Point2& v, const Point2& e0, const Point2& e1,
                   const std::vector<Pass>& passes) {
+  bool inside = false;
   for (const Pass& pass : passes) {
-    if (pass.at_vertex) {
-      if (orient2d(v, pass.to, e1) == Orientation::kCollinear &&
-          same_direction(v, pass.to, v, e1)) {
-        return Side::kSharedSame;
-      }
-      if (orient2d(v, pass.from, e1) == Orientation::kCollinear &&
-          same_direction(v, pass.from, v, e1)) {
-        return Side::kSharedOpposite;
-      }
-    } else if (orient2d(pass.from, pass.to, e0) == Orientation::kCollinear &&
-               orient2d(pass.from, pass.to, e1) == Orientation::kCollinear) {
-      return same_direction(e0, e1, pass.from, pass.to) ? Side::kSharedSame : Side::kSharedOpposite;
-    }
+    const Side s = side_against(v, e0, e1, pass);
+    if (s == Side::kSharedSame || s == Side::kSharedOpposite) return s;
+    inside = inside || s == Side::kInside;
   }
-  for (const Pass& pass : passes) {
-    bool inside;
-    if (pass.at_vertex) {
-      const Orientation corner = orient2d(pass.from, v, pass.to);
-      const bool left_of_next = orient2d(v, pass.to, e1) == Orientation::kCounterClockwise;
-      const bool right_of_prev = orient2d(v, pass.from, e1) == Orientation::kClockwise;
-      inside = corner == Orientation::kCounterClockwise ? left_of_next && right_of_prev
-                                                        : left_of_next || right_of_prev;
-    } else {
-      inside = orient2d(pass.from, pass.to, e1) == Orientation::kCounterClockwise;
-    }
-    if (inside) return Side::kInside;
-  }
-  return Side::kOutside;
+  return inside ? Side::kInside : Side::kOutside;
 }
 
 // The edges of one operand's boundary split by side of the other operand.

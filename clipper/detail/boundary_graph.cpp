@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <unordered_map>
 
 #include "clipper/detail/point_location.h"
@@ -150,6 +149,21 @@ bool encloses(const Loop2& outer, const Loop2& hole) {
   return false;
 }
 
+// How much area the rounding of a loop's constructed vertices can account for: each moves
+// by at most 4u·(adjacent edge) + u·|P| (clip.h), sweeping at most that times the
+// perimeter.
+double rounding_area_bound(const Loop2& loop) {
+  constexpr double kUnit = 0x1p-53;
+  double perimeter = 0.0, magnitude = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Point2& a = loop[i];
+    const Point2& b = loop[(i + 1) % loop.size()];
+    perimeter += std::hypot(b.x - a.x, b.y - a.y);
+    magnitude = std::max({magnitude, std::fabs(a.x), std::fabs(a.y)});
+  }
+  return 8.0 * kUnit * (magnitude + 4.0 * perimeter) * perimeter;
+}
+
 }  // namespace
 
 PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
@@ -174,6 +188,7 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
     outer_bounds.emplace_back(p.outer);
     outer_areas.push_back(signed_area(p.outer));
   }
+  std::vector<Loop2> orphans;
   for (Loop2& hole : holes) {
     const Bounds hb(hole);
     std::size_t parent = polygons.size();
@@ -183,9 +198,19 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
       if (encloses(polygons[i].outer, hole)) parent = i;
     }
     if (parent == polygons.size()) {
-      throw std::logic_error("clipper: a traced hole has no enclosing outer loop");
+      orphans.push_back(std::move(hole));
+    } else {
+      polygons[parent].holes.push_back(std::move(hole));
     }
-    polygons[parent].holes.push_back(std::move(hole));
+  }
+  // A clockwise loop inside no outer loop cannot come from exact arithmetic: it is a
+  // sliver whose orientation the rounding of crossing points turned over. If its area is
+  // within the construction error bound (clip.h) it is that artefact and is dropped;
+  // anything larger keeps its area as an outer loop.
+  for (Loop2& loop : orphans) {
+    if (std::fabs(signed_area(loop)) <= rounding_area_bound(loop)) continue;
+    std::reverse(loop.begin(), loop.end());
+    polygons.push_back({std::move(loop), {}});
   }
   return polygons;
 }

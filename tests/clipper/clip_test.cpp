@@ -273,3 +273,40 @@ TEST(Clip, NearlyCollinearCrossingKeepsSides) {
 
 }  // namespace
 }  // namespace shadowgen::clipper
+
+namespace shadowgen::clipper {
+namespace {
+
+// Regression: the crossing of the clip's edge with the subject's vertical edge rounds
+// exactly onto the subject's vertex below it, so that vertex becomes a node although it
+// lies off the clip's boundary. The clip's stretch leaving it must be judged against the
+// edge it really crossed. The subject lies inside the clip up to that rounding.
+TEST(Clip, CrossingRoundedOntoAVertex) {
+  const PolygonWithHoles2 a{{{0.41943301853768244, -0.33226804786452369},
+                             {0.41943301853768244, -0.39603367411755608},
+                             {0.49184835399394961, -0.4644091002182178},
+                             {0.4411772401093631, -0.41656482826913421},
+                             {0.4411772401093631, -0.33226804786452369}},
+                            {}};
+  const PolygonWithHoles2 b{{{0.4411772401093631, -0.33226804786452369},
+                             {0.37244435969843409, -0.33226804786452369},
+                             {0.37244435969843409, -0.37326481453924626},
+                             {0.39531887843868585, -0.37326481453924626},
+                             {0.49184835399394961, -0.4644091002182178},
+                             {0.4411772401093631, -0.41656482826913421}},
+                            {}};
+  const ClipResult ab = clip(a, b);
+  const ClipResult ba = clip(b, a);
+  for (const ClipResult* r : {&ab, &ba}) {
+    ExpectWellFormed(r->inside);
+    ExpectWellFormed(r->outside);
+  }
+  const double area_a = area(PolygonSet2{a}), area_b = area(PolygonSet2{b});
+  EXPECT_NEAR(area(ab.inside), area_a, 1e-14);
+  EXPECT_NEAR(area(ab.outside), 0.0, 1e-14);
+  EXPECT_NEAR(area(ba.inside), area_a, 1e-14);
+  EXPECT_NEAR(area(ba.outside), area_b - area_a, 1e-14);
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper
