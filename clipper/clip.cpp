@@ -188,6 +188,53 @@ class IntersectionFinder {
   const Boundary* sides_[2];
 };
 
+// Where a loop of one operand touches another loop of the same operand (a hole touching
+// its outer loop, two polygons of a set meeting at a point), the touching vertex lies
+// inside an edge of the other loop. Inserting it there makes it a vertex of both, so the
+// traversal and the split at repeated vertices see the touch. Decided exactly.
+std::vector<Insertion> self_touches(const Boundary& loops) {
+  struct Event {
+    double x;
+    int kind;  // 0: an edge starts, 1: a vertex
+    int loop;
+    int index;
+  };
+  std::vector<Event> events;
+  for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
+    const Loop2& loop = loops[l];
+    for (int i = 0; i < static_cast<int>(loop.size()); ++i) {
+      const Point2& p = loop[i];
+      const Point2& q = loop[(i + 1) % loop.size()];
+      events.push_back({std::min(p.x, q.x), 0, l, i});
+      events.push_back({p.x, 1, l, i});
+    }
+  }
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    return a.x != b.x ? a.x < b.x : a.kind < b.kind;
+  });
+  std::vector<Insertion> found;
+  std::vector<const Event*> active;
+  for (const Event& ev : events) {
+    if (ev.kind == 0) {
+      active.push_back(&ev);
+      continue;
+    }
+    const Point2& p = loops[ev.loop][ev.index];
+    std::size_t kept = 0;
+    for (const Event* e : active) {
+      const Loop2& loop = loops[e->loop];
+      const Point2& a = loop[e->index];
+      const Point2& b = loop[(e->index + 1) % loop.size()];
+      if (std::max(a.x, b.x) < p.x) continue;  // left behind by the sweep
+      active[kept++] = e;
+      if (p == a || p == b) continue;
+      if (on_segment(a, b, p)) found.push_back({e->loop, e->index, p});
+    }
+    active.resize(kept);
+  }
+  return found;
+}
+
 // One loop of an operand with the intersection points inserted in order along each edge
 // (a point exactly on a segment is ordered exactly by the coordinate that varies most
 // along it). Each vertex remembers where it came from, because sides are decided on the
@@ -243,6 +290,14 @@ SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& ins
     }
   }
   return out;
+}
+
+Boundary self_noded(Boundary loops) {
+  std::vector<Insertion> touches = self_touches(loops);
+  if (touches.empty()) return loops;
+  SplitBoundary split = with_insertions(loops, touches);
+  for (std::size_t l = 0; l < loops.size(); ++l) loops[l] = std::move(split[l].points);
+  return loops;
 }
 
 // How a boundary passes through a node, told in input geometry. At one of its own input
@@ -338,17 +393,43 @@ Side side_against(const Point2& v, const Point2& e0, const Point2& e1, const Pas
   return in_sector(v, pass, ahead) ? Side::kInside : Side::kOutside;
 }
 
-// Against all passes through v: shared if along any, inside if inside any (the other
-// region's sectors at one point are disjoint), else outside.
+// Is the direction just counter-clockwise of the ray v -> r in the left sector of `pass`?
+bool just_past_ray_in_sector(const Point2& v, const Point2& r, const Pass& pass) {
+  if (on_ray(v, pass.to, r)) return true;     // the sector starts at `to`
+  if (on_ray(v, pass.from, r)) return false;  // and ends at `from`
+  return in_sector(v, pass, r);
+}
+
+// Against all passes through v. One pass: its side. Several (loops touching at v, such as
+// a hole touching its outer loop, or two polygons of a set meeting at a point): the other
+// region near v is where the winding number is 1. Each pass adds one to the winding of
+// its left sector (less a constant for clockwise loops), so a direction is inside exactly
+// when it lies in as many left sectors as a direction known to be inside: the one just
+// counter-clockwise of a pass's outgoing edge, which has the region on its left.
 Side side_of_edge(const Point2& v, const Point2& e0, const Point2& e1,
                   const std::vector<Pass>& passes) {
-  bool inside = false;
+  if (passes.size() == 1) return side_against(v, e0, e1, passes.front());
+  int count = 0;
   for (const Pass& pass : passes) {
     const Side s = side_against(v, e0, e1, pass);
     if (s == Side::kSharedSame || s == Side::kSharedOpposite) return s;
-    inside = inside || s == Side::kInside;
+    if (s == Side::kInside) ++count;
   }
-  return inside ? Side::kInside : Side::kOutside;
+  int reference = 0;
+  for (const Pass& pass : passes) {
+    if (just_past_ray_in_sector(v, passes.front().to, pass)) ++reference;
+  }
+  return count >= reference ? Side::kInside : Side::kOutside;
+}
+
+// Several passes through v of which one was put there by a rounded crossing: crossings
+// less than a rounding apart (a boundary cutting through the thin tip of a spike) have
+// merged into one node, and no local test at v can tell in which order they were crossed.
+bool merged_crossings(const Point2& v, const std::vector<Pass>& passes) {
+  if (passes.size() < 2) return false;
+  return std::any_of(passes.begin(), passes.end(), [&v](const Pass& p) {
+    return !p.at_vertex && orient2d(p.from, p.to, v) != Orientation::kCollinear;
+  });
 }
 
 // The edges of one operand's boundary split by side of the other operand.
@@ -402,9 +483,10 @@ ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
         const int e = split[l].edge[i];
         const Point2& e0 = input[e];
         const Point2& e1 = input[(e + 1) % input.size()];
-        if (it != other_passes.end()) {
+        if (it != other_passes.end() && !merged_crossings(v, it->second)) {
           dst = &bucket(side_of_edge(v, e0, e1, it->second));
         } else {
+          // No usable local picture: decide at the middle of the stretch's first edge.
           const Point2 mid{0.5 * (v.x + w.x), 0.5 * (v.y + w.y)};
           dst = detail::locate(mid, other_loops) == Location::kInside ? &out.inside : &out.outside;
         }
@@ -430,8 +512,8 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   PolygonSet2 a = normalized(subject);
   const PolygonSet2 b = normalized(clip_region);
   if (a.empty()) return result;
-  const Boundary a_loops = boundary_of(a);
-  const Boundary b_loops = boundary_of(b);
+  const Boundary a_loops = self_noded(boundary_of(a));
+  const Boundary b_loops = self_noded(boundary_of(b));
   if (b.empty() || !overlap(bounds(a_loops), bounds(b_loops))) {
     result.outside = std::move(a);
     return result;
@@ -469,11 +551,20 @@ ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_
 ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips) {
   // The outside pieces left by one clip are the subject of the next, so the inside
   // pieces of different clips never overlap even where the clips do.
+  // Re-clipping rounded pieces against clips that overlap earlier ones can leave slivers
+  // that exist only because of that rounding; pieces within the rounding bound go.
+  auto drop_rounding_slivers = [](PolygonSet2& set) {
+    std::erase_if(set, [](const PolygonWithHoles2& p) {
+      return std::fabs(signed_area(p.outer)) <= detail::rounding_area_bound(p.outer);
+    });
+  };
   ClipResult result;
   result.outside = normalized(PolygonSet2{subject});
   for (const PolygonWithHoles2& c : clips) {
     if (result.outside.empty()) break;
     ClipResult step = clip(result.outside, PolygonSet2{c});
+    drop_rounding_slivers(step.inside);
+    drop_rounding_slivers(step.outside);
     for (PolygonWithHoles2& p : step.inside) result.inside.push_back(std::move(p));
     result.outside = std::move(step.outside);
   }

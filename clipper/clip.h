@@ -17,12 +17,25 @@
 // Input. Any PolygonWithHoles2 / PolygonSet2 whose region is well formed: loops simple,
 // holes inside their outer loop, loops meeting at most at points. Orientation is free
 // (normalized on entry). Repeated vertices, zero-area spikes and collinear vertices are
-// removed first; loops left with no area are dropped. Self-crossing loops are outside
-// the contract (the result is then unspecified, but the call returns).
+// removed first; loops left with no area are dropped.
+//
+// Near-degenerate input. Where rounded crossings fall on an input vertex, the side of a
+// stretch is judged by the input edges that made its node; where several crossings less
+// than a rounding apart merge into one node (a boundary cutting the thin tip of a spike),
+// by exact point location of the stretch's first edge. A clockwise loop that rounding
+// leaves outside every outer loop is a sliver within the rounding bound and is dropped.
+// Self-crossing loops are outside the contract (the result is then unspecified, but the call
+// returns).
 //
 // Output. Polygons in the conventions of clipper/polygon.h: outer loops counter-
 // clockwise, holes clockwise and attached to the smallest outer loop that contains
-// them, no repeated vertices, no zero-length edges, no spikes, no collinear vertices.
+// them, no repeated vertices, no zero-length edges, no spikes. Vertices where a loop runs
+// straight on are kept: one may be where another loop touches it.
+//
+// Touching loops of one operand (a hole touching its outer loop, polygons of a set
+// meeting at a point) are found first and the touching point made a vertex of both. At a
+// point where several loops of the other operand meet, a stretch is inside where the
+// winding number is 1.
 //
 // Exactness and tolerance. Every decision (do two edges cross, does a point lie on an
 // edge, which side is a stretch on) is an exact predicate on the input doubles; there
@@ -54,7 +67,9 @@ ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_
 
 // One subject against several clip polygons, as hidden-surface removal needs: inside is
 // subject ∩ (union of the clips), outside is subject − (union of the clips). The clips
-// may overlap each other.
+// may overlap each other. The outside pieces of one clip are clipped by the next; pieces
+// whose area is within the rounding bound of their vertices (slivers that only rounding
+// made) are dropped along the way.
 ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips);
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b);

@@ -6,13 +6,19 @@
 
 namespace shadowgen::clipper {
 
-bool clean_loop(Loop2& loop) {
-  // One pass with a stack: a vertex is dropped when it repeats its predecessor, or when
-  // it is collinear with its neighbours (a straight-through vertex or a spike). Dropping
-  // one can make its predecessor removable, hence the stack and the final wrap-around.
-  auto redundant = [](const Point2& prev, const Point2& v, const Point2& next) {
-    return prev == v || v == next || orient2d(prev, v, next) == Orientation::kCollinear;
-  };
+namespace {
+
+// True when prev -> v -> next turns straight back at v (v is not between its neighbours).
+bool is_spike(const Point2& prev, const Point2& v, const Point2& next) {
+  if (orient2d(prev, v, next) != Orientation::kCollinear) return false;
+  return (prev.x - v.x) * (next.x - v.x) + (prev.y - v.y) * (next.y - v.y) >= 0.0;
+}
+
+// One pass with a stack: a vertex is dropped when it repeats its predecessor, or when
+// `redundant` says so of it and its neighbours. Dropping one can make its predecessor
+// removable, hence the stack and the final wrap-around.
+template <typename Redundant>
+bool clean(Loop2& loop, Redundant redundant) {
   bool changed = true;
   while (changed && loop.size() >= 3) {
     changed = false;
@@ -49,6 +55,31 @@ bool clean_loop(Loop2& loop) {
     return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool clean_loop(Loop2& loop) {
+  return clean(loop, [](const Point2& prev, const Point2& v, const Point2& next) {
+    return prev == v || v == next || orient2d(prev, v, next) == Orientation::kCollinear;
+  });
+}
+
+bool remove_spikes(Loop2& loop) {
+  if (!clean(loop, [](const Point2& prev, const Point2& v, const Point2& next) {
+        return prev == v || v == next || is_spike(prev, v, next);
+      })) {
+    return false;
+  }
+  // Still all on one line: no area.
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    if (orient2d(loop[i], loop[(i + 1) % loop.size()], loop[(i + 2) % loop.size()]) !=
+        Orientation::kCollinear) {
+      return true;
+    }
+  }
+  loop.clear();
+  return false;
 }
 
 bool is_counter_clockwise(const Loop2& loop) {

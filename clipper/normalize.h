@@ -11,12 +11,16 @@ namespace shadowgen::clipper {
 // none is left. Returns false when fewer than three vertices remain (no area).
 bool clean_loop(Loop2& loop);
 
+// The same but keeps vertices where the boundary runs straight on: such a vertex may be
+// where another loop touches this one, which must stay a vertex of both.
+bool remove_spikes(Loop2& loop);
+
 // Cleans every loop, drops loops without area, orients outer loops counter-clockwise and
 // holes clockwise. A polygon whose outer loop has no area is dropped with its holes.
 PolygonSet2 normalized(const PolygonSet2& polygons);
 
-// Exact orientation of a clean loop (at least three vertices, no spike): the turn at its
-// lexicographically smallest vertex.
+// Exact orientation of a loop without spikes (at least three vertices, not all on one
+// line): the turn at its lexicographically smallest vertex, which is never straight.
 bool is_counter_clockwise(const Loop2& loop);
 
 }  // namespace shadowgen::clipper

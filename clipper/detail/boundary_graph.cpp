@@ -149,21 +149,6 @@ bool encloses(const Loop2& outer, const Loop2& hole) {
   return false;
 }
 
-// How much area the rounding of a loop's constructed vertices can account for: each moves
-// by at most 4u·(adjacent edge) + u·|P| (clip.h), sweeping at most that times the
-// perimeter.
-double rounding_area_bound(const Loop2& loop) {
-  constexpr double kUnit = 0x1p-53;
-  double perimeter = 0.0, magnitude = 0.0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Point2& a = loop[i];
-    const Point2& b = loop[(i + 1) % loop.size()];
-    perimeter += std::hypot(b.x - a.x, b.y - a.y);
-    magnitude = std::max({magnitude, std::fabs(a.x), std::fabs(a.y)});
-  }
-  return 8.0 * kUnit * (magnitude + 4.0 * perimeter) * perimeter;
-}
-
 }  // namespace
 
 PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
@@ -173,7 +158,7 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
   PolygonSet2 polygons;
   std::vector<Loop2> holes;
   for (Loop2& loop : loops) {
-    if (!clean_loop(loop)) continue;
+    if (!remove_spikes(loop)) continue;
     if (is_counter_clockwise(loop)) {
       polygons.push_back({std::move(loop), {}});
     } else {
@@ -213,6 +198,18 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
     polygons.push_back({std::move(loop), {}});
   }
   return polygons;
+}
+
+double rounding_area_bound(const Loop2& loop) {
+  constexpr double kUnit = 0x1p-53;
+  double perimeter = 0.0, magnitude = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Point2& a = loop[i];
+    const Point2& b = loop[(i + 1) % loop.size()];
+    perimeter += std::hypot(b.x - a.x, b.y - a.y);
+    magnitude = std::max({magnitude, std::fabs(a.x), std::fabs(a.y)});
+  }
+  return 8.0 * kUnit * (magnitude + 4.0 * perimeter) * perimeter;
 }
 
 }  // namespace shadowgen::clipper::detail

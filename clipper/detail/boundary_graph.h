@@ -17,9 +17,14 @@ struct DirectedEdge {
 // Traces closed loops through the edges. Where several edges leave one point, the walk
 // takes the first one clockwise from the way it came in (the tightest turn around the
 // region on its left), so regions that only touch at a point become separate loops;
-// loops are then split at repeated vertices, cleaned (normalize.h's clean_loop), and
+// loops are then split at repeated vertices, rid of spikes (normalize.h's remove_spikes), and
 // sorted into counter-clockwise outer loops and clockwise holes, each hole attached to
 // the smallest outer loop containing it.
 PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges);
+
+// How much area the rounding of a loop's constructed vertices can account for: each moves
+// by at most 4u·(adjacent edge) + u·|P| (clip.h), sweeping at most that times the
+// perimeter. A loop of smaller area may exist only because of rounding.
+double rounding_area_bound(const Loop2& loop);
 
 }  // namespace shadowgen::clipper::detail

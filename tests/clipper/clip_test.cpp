@@ -16,8 +16,8 @@ PolygonWithHoles2 rect(double x0, double y0, double x1, double y1) {
 }
 
 // Structural facts every output must have (clip.h's output contract), checked without
-// an oracle: rings of >= 3 distinct vertices, no spikes or collinear vertices, outer
-// loops counter-clockwise, holes clockwise.
+// an oracle: rings of >= 3 distinct vertices, no spikes (a vertex where the boundary turns
+// straight back), outer loops counter-clockwise, holes clockwise.
 void ExpectWellFormed(const PolygonSet2& set) {
   auto check_loop = [](const Loop2& loop) {
     ASSERT_GE(loop.size(), 3u);
@@ -26,7 +26,9 @@ void ExpectWellFormed(const PolygonSet2& set) {
       const Point2& b = loop[(i + 1) % loop.size()];
       const Point2& c = loop[(i + 2) % loop.size()];
       EXPECT_NE(a, b);
-      EXPECT_NE(orient2d(a, b, c), Orientation::kCollinear);
+      const bool spike = orient2d(a, b, c) == Orientation::kCollinear &&
+                         (a.x - b.x) * (c.x - b.x) + (a.y - b.y) * (c.y - b.y) >= 0.0;
+      EXPECT_FALSE(spike) << "spike at (" << b.x << ", " << b.y << ")";
     }
   };
   for (const PolygonWithHoles2& p : set) {
