@@ -73,7 +73,10 @@ Point2 crossing_point(const Point2& a0, const Point2& a1, const Point2& b0, cons
     const double dx = q.x - p.x, dy = q.y - p.y;
     return dx * dx + dy * dy;
   };
-  const bool along_a = length2(a0, a1) <= length2(b0, b1);
+  // The same answer whichever segment comes first: ties in length go to the segment with
+  // the smaller first endpoint.
+  const double la = length2(a0, a1), lb = length2(b0, b1);
+  const bool along_a = la < lb || (la == lb && (a0 < b0 || (a0 == b0 && a1 < b1)));
   const Point2& p0 = along_a ? a0 : b0;
   const Point2& p1 = along_a ? a1 : b1;
   const Point2& q0 = along_a ? b0 : a0;
@@ -293,6 +296,7 @@ SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& ins
 }
 
 Boundary self_noded(Boundary loops) {
+  if (loops.size() < 2) return loops;  // a simple loop touches no other
   std::vector<Insertion> touches = self_touches(loops);
   if (touches.empty()) return loops;
   SplitBoundary split = with_insertions(loops, touches);
@@ -377,18 +381,24 @@ Side side_against(const Point2& v, const Point2& e0, const Point2& e1, const Pas
     if (on_ray(v, pass.from, e1)) return Side::kSharedOpposite;
     return in_sector(v, pass, e1) ? Side::kInside : Side::kOutside;
   }
+  // Does the stretch's input edge properly cross the input edge f0 -> f1?
   auto crosses = [&](const Point2& f0, const Point2& f1) {
     const Orientation a = orient2d(f0, f1, e0), b = orient2d(f0, f1, e1);
-    return a != Orientation::kCollinear && b != Orientation::kCollinear && a != b;
+    const Orientation c = orient2d(e0, e1, f0), d = orient2d(e0, e1, f1);
+    return a != Orientation::kCollinear && b != Orientation::kCollinear && a != b &&
+           c != Orientation::kCollinear && d != Orientation::kCollinear && c != d;
   };
-  if (crosses(pass.from, v)) {
-    return orient2d(pass.from, v, e1) == Orientation::kCounterClockwise ? Side::kInside
-                                                                        : Side::kOutside;
-  }
-  if (crosses(v, pass.to)) {
-    return orient2d(v, pass.to, e1) == Orientation::kCounterClockwise ? Side::kInside
-                                                                      : Side::kOutside;
-  }
+  // Of the two edges at v, the one whose rounded crossing with the stretch's edge is v
+  // itself (a crossing with the other one, if any, made a node of its own); failing that,
+  // any one the stretch's edge crosses.
+  auto side_of = [&](const Point2& f0, const Point2& f1) {
+    return orient2d(f0, f1, e1) == Orientation::kCounterClockwise ? Side::kInside : Side::kOutside;
+  };
+  const bool crosses_in = crosses(pass.from, v), crosses_out = crosses(v, pass.to);
+  if (crosses_in && crossing_point(pass.from, v, e0, e1) == v) return side_of(pass.from, v);
+  if (crosses_out && crossing_point(v, pass.to, e0, e1) == v) return side_of(v, pass.to);
+  if (crosses_in) return side_of(pass.from, v);
+  if (crosses_out) return side_of(v, pass.to);
   const Point2 ahead{v.x + (e1.x - e0.x), v.y + (e1.y - e0.y)};
   return in_sector(v, pass, ahead) ? Side::kInside : Side::kOutside;
 }

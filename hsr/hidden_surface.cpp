@@ -22,6 +22,9 @@ using detail::Box2;
 // magnitudes summed. Differences below it are ties.
 constexpr double kTieTolerance = 0x1p-48;
 
+// Tiles for wide polygons: blocks of this many grid cells a side.
+constexpr int kTileBlock = 4;
+
 struct Piece {
   PolygonWithHoles2 shape;
   std::size_t parent = 0;
@@ -60,7 +63,24 @@ class AreaSort {
     };
     std::vector<Piece> initial = std::move(pieces);
     pieces.clear();
-    for (Piece& p : initial) add(std::move(p));
+    for (Piece& p : initial) {
+      const Box2 box = detail::box_of(p.shape);
+      if (!grid.is_wide(box)) {
+        add(std::move(p));
+        continue;
+      }
+      // A polygon spanning much of the image (a ground plane) would be clipped by every
+      // template over it, each time in whole: cut it into tiles first, so each template
+      // clips only the tiles it covers. Tiles of one parent merge again at the end.
+      for (const Box2& t : grid.tiles(box, kTileBlock)) {
+        const PolygonWithHoles2 rect{
+            {{t.xmin, t.ymin}, {t.xmax, t.ymin}, {t.xmax, t.ymax}, {t.xmin, t.ymax}}, {}};
+        ++stats_.clips;
+        for (PolygonWithHoles2& q : clipper::clip(p.shape, rect).inside) {
+          add({std::move(q), p.parent});
+        }
+      }
+    }
 
     std::vector<std::size_t> candidates;
     while (!queue.empty()) {

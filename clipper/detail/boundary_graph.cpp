@@ -41,12 +41,18 @@ class Tracer {
   explicit Tracer(const std::vector<DirectedEdge>& edges) : edges_(edges) {
     ids_.reserve(edges.size() * 2);
     from_.resize(edges.size());
+    to_.resize(edges.size());
     for (std::size_t e = 0; e < edges.size(); ++e) {
       from_[e] = id_of(edges[e].from);
-      id_of(edges[e].to);
+      to_[e] = id_of(edges[e].to);
     }
-    out_.assign(points_.size(), {});
-    for (std::size_t e = 0; e < edges.size(); ++e) out_[from_[e]].push_back(e);
+    // Edges leaving each point, in one array (counting sort by start point).
+    first_.assign(count_ + 1, 0);
+    for (std::size_t e = 0; e < edges.size(); ++e) ++first_[from_[e] + 1];
+    for (std::size_t v = 0; v < count_; ++v) first_[v + 1] += first_[v];
+    leaving_.resize(edges.size());
+    std::vector<std::size_t> fill(first_.begin(), first_.end() - 1);
+    for (std::size_t e = 0; e < edges.size(); ++e) leaving_[fill[from_[e]]++] = e;
     used_.assign(edges.size(), false);
   }
 
@@ -62,10 +68,11 @@ class Tracer {
         walk.push_back(edges_[e].from);
         const Point2& back = edges_[e].from;
         const Point2& v = edges_[e].to;
-        const std::size_t vid = ids_.at(v);
+        const std::size_t vid = to_[e];
         // Candidates: unused edges leaving v, and the first edge when v closes the walk.
         std::size_t best = kNone;
-        for (std::size_t c : out_[vid]) {
+        for (std::size_t k = first_[vid]; k < first_[vid + 1]; ++k) {
+          const std::size_t c = leaving_[k];
           if (used_[c] && !(c == start && vid == origin)) continue;
           if (best == kNone || clockwise_before(v, back, edges_[c].to, edges_[best].to)) {
             best = c;
@@ -84,16 +91,16 @@ class Tracer {
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
   std::size_t id_of(const Point2& p) {
-    const auto [it, inserted] = ids_.try_emplace(p, points_.size());
-    if (inserted) points_.push_back(p);
+    const auto [it, inserted] = ids_.try_emplace(p, count_);
+    if (inserted) ++count_;
     return it->second;
   }
 
   const std::vector<DirectedEdge>& edges_;
   std::unordered_map<Point2, std::size_t, Point2Hash> ids_;
-  std::vector<Point2> points_;
-  std::vector<std::size_t> from_;
-  std::vector<std::vector<std::size_t>> out_;
+  std::size_t count_ = 0;
+  std::vector<std::size_t> from_, to_;
+  std::vector<std::size_t> first_, leaving_;
   std::vector<bool> used_;
 };
 

@@ -47,6 +47,36 @@ void SpatialGrid::insert(std::size_t item, const Box2& box) {
   }
 }
 
+bool SpatialGrid::is_wide(const Box2& box) const {
+  int x0, y0, x1, y1;
+  if (!cell_range(box, x0, y0, x1, y1)) return false;
+  return static_cast<std::size_t>(x1 - x0 + 1) * (y1 - y0 + 1) > kMaxCells;
+}
+
+std::vector<Box2> SpatialGrid::tiles(const Box2& box, int block) const {
+  std::vector<Box2> out;
+  int x0, y0, x1, y1;
+  if (!cell_range(box, x0, y0, x1, y1)) return out;
+  // Grid lines computed one way only, so neighbouring tiles share their sides exactly.
+  auto line_x = [this](int i) {
+    return i >= nx_ ? extent_.xmax : extent_.xmin + (extent_.xmax - extent_.xmin) * i / nx_;
+  };
+  auto line_y = [this](int j) {
+    return j >= ny_ ? extent_.ymax : extent_.ymin + (extent_.ymax - extent_.ymin) * j / ny_;
+  };
+  for (int j = y0 - y0 % block; j <= y1; j += block) {
+    for (int i = x0 - x0 % block; i <= x1; i += block) {
+      Box2 t;
+      t.xmin = i == 0 ? std::min(box.xmin, extent_.xmin) : line_x(i);
+      t.ymin = j == 0 ? std::min(box.ymin, extent_.ymin) : line_y(j);
+      t.xmax = i + block >= nx_ ? std::max(box.xmax, extent_.xmax) : line_x(i + block);
+      t.ymax = j + block >= ny_ ? std::max(box.ymax, extent_.ymax) : line_y(j + block);
+      out.push_back(t);
+    }
+  }
+  return out;
+}
+
 void SpatialGrid::erase_wide(std::size_t item) {
   if (item >= is_wide_.size() || !is_wide_[item]) return;
   is_wide_[item] = false;

@@ -24,6 +24,12 @@ class SpatialGrid {
   // Appends, once each, the items whose cells meet `box` (a superset of the overlapping).
   void query(const Box2& box, std::vector<std::size_t>& out);
 
+  // True when `box` would go to the wide list.
+  bool is_wide(const Box2& box) const;
+  // Rectangles of block × block cells, aligned with the grid, covering `box`: cutting a
+  // wide polygon along them keeps each piece local.
+  std::vector<Box2> tiles(const Box2& box, int block) const;
+
  private:
   static constexpr std::size_t kMaxCells = 64;
   bool cell_range(const Box2& box, int& x0, int& y0, int& x1, int& y1) const;

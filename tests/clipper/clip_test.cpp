@@ -312,3 +312,56 @@ TEST(Clip, CrossingRoundedOntoAVertex) {
 
 }  // namespace
 }  // namespace shadowgen::clipper
+
+namespace shadowgen::clipper {
+namespace {
+
+// Regression (found by hidden-surface removal over a city): the clip's edge runs nearly
+// parallel to one subject edge, crosses it, and crosses the next subject edge so close to
+// their common vertex that the crossing rounds onto it. The stretch leaving that vertex
+// must be judged by the edge whose crossing landed there, not by the first one crossed.
+TEST(Clip, SecondOfTwoCrossingsRoundedOntoTheVertexBetween) {
+  const PolygonWithHoles2 a{{{-2.9415919496792498, -63.764336833869351},
+                             {-2.9415919496792498, -58.974907736355917},
+                             {-6.1682052740030819, -60.998469395286591},
+                             {-8.962155588477362, -57.055978346207283},
+                             {-7.8515878158637413, -58.623079765385171},
+                             {-7.8515878158637413, -61.292279055972507},
+                             {-13.487098609934566, -64.826574127961479},
+                             {-11.125912025178604, -68.158400369602475},
+                             {-11.125912025178604, -71.632487725700273},
+                             {-9.4439627896092695, -71.632487725700273},
+                             {-8.6367372635896515, -71.126238460487883},
+                             {-8.2779703631364878, -71.632487725700273},
+                             {-3.2029097581033827, -71.632487725700273},
+                             {-2.9415919496792498, -71.468602981923709},
+                             {-2.9415919496792498, -67.696371564686132},
+                             {-6.8151241635454909, -70.125646623312846},
+                             {-10.667133418293567, -64.690148386590465},
+                             {-4.864458010766441, -61.05101648771241}},
+                            {}};
+  const PolygonWithHoles2 b{{{-5.4563078588118543, -73.045700137775228},
+                             {-1.6355685849343615, -70.649534026048983},
+                             {-1.3273064254192886, -71.084516995632214},
+                             {-1.0124487560183653, -70.887054875514835},
+                             {-1.0124487560183653, -66.486514724434812},
+                             {-6.8151241635454909, -70.125646623312846},
+                             {-6.8151241635454909, -73.696682646486607},
+                             {-6.4081510943804663, -74.270954735037094},
+                             {-5.4563078588118543, -73.674008871617659}},
+                            {}};
+  for (int swap = 0; swap < 2; ++swap) {
+    const PolygonWithHoles2& s = swap ? b : a;
+    const PolygonWithHoles2& c = swap ? a : b;
+    const ClipResult r = clip(s, c);
+    ExpectWellFormed(r.inside);
+    ExpectWellFormed(r.outside);
+    const double total = area(PolygonSet2{s});
+    EXPECT_NEAR(area(r.inside) + area(r.outside), total, 1e-12);
+    EXPECT_LE(area(r.inside), std::min(area(PolygonSet2{a}), area(PolygonSet2{b})) + 1e-12);
+  }
+  EXPECT_NEAR(area(clip(a, b).inside), area(clip(b, a).inside), 1e-12);
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper
