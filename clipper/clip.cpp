@@ -358,8 +358,10 @@ bool in_sector(const Point2& v, const Pass& pass, const Point2& w) {
 // (e0 -> e1) lies on, judged against one pass of the other boundary. This is the exact
 // local form of the entry/exit test (a touch does not flip the state, a crossing does),
 // asked of input points wherever the node itself is a rounded crossing:
-//   - a pass straight along an input edge f: the stretch lies on e1's side of f (on e0's
-//     side if e1 is on f's line; on f itself if both are);
+//   - a pass straight along an input edge f: where v lies exactly on f, the stretch lies
+//     on e1's side of f (e0's if e1 is on f's line; on f itself if both are); where v is
+//     the rounded crossing of the stretch's edge with f, on e1's side; where v is off f
+//     (a rounded crossing with some other edge fell on it), on v's own side;
 //   - a pass turning at an input vertex v of the other operand (v exact): if v lies on the
 //     stretch's input edge, the sector test at v is exact. If not, v is only where the
 //     rounded crossing of the stretch's edge with one of the two edges at v fell, and the
@@ -373,7 +375,19 @@ Side side_against(const Point2& v, const Point2& e0, const Point2& e1, const Pas
           (e1.x - e0.x) * (pass.to.x - pass.from.x) + (e1.y - e0.y) * (pass.to.y - pass.from.y);
       return dot > 0.0 ? Side::kSharedSame : Side::kSharedOpposite;
     }
-    const Orientation side = s1 != Orientation::kCollinear ? s1 : s0;
+    Orientation side;
+    const Orientation sv = orient2d(pass.from, pass.to, v);
+    if (sv == Orientation::kCollinear) {
+      side = s1 != Orientation::kCollinear ? s1 : s0;  // v on f: the stretch leaves it
+    } else if (s0 != Orientation::kCollinear && s1 != Orientation::kCollinear && s0 != s1 &&
+               orient2d(e0, e1, pass.from) != Orientation::kCollinear &&
+               orient2d(e0, e1, pass.to) != Orientation::kCollinear &&
+               orient2d(e0, e1, pass.from) != orient2d(e0, e1, pass.to) &&
+               crossing_point(e0, e1, pass.from, pass.to) == v) {
+      side = s1;  // v is the rounded crossing of the two: the stretch is past it
+    } else {
+      side = sv;  // v is off f (a crossing with another edge fell here): it starts on v's side
+    }
     return side == Orientation::kCounterClockwise ? Side::kInside : Side::kOutside;
   }
   if (orient2d(e0, e1, v) == Orientation::kCollinear) {
@@ -447,8 +461,37 @@ struct ClassifiedEdges {
   std::vector<DirectedEdge> inside, outside, shared_same, shared_opposite;
 };
 
+struct Segment {
+  Point2 from, to;
+  friend bool operator==(const Segment&, const Segment&) = default;
+};
+struct SegmentHash {
+  std::size_t operator()(const Segment& s) const noexcept {
+    const Point2Hash h;
+    return h(s.from) * 31u + h(s.to);
+  }
+};
+using SegmentSet = std::unordered_set<Segment, SegmentHash>;
+
+// The split edges of one operand that run from node to node: the only ones that can be
+// the very same segment as one of the other operand's.
+SegmentSet node_to_node_segments(const SplitBoundary& split,
+                                 const std::unordered_set<Point2, Point2Hash>& nodes) {
+  SegmentSet out;
+  for (const SplitLoop& loop : split) {
+    const std::size_t n = loop.points.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point2& v = loop.points[i];
+      const Point2& w = loop.points[(i + 1) % n];
+      if (nodes.count(v) && nodes.count(w)) out.insert({v, w});
+    }
+  }
+  return out;
+}
+
 ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
                          const Boundary& other_loops, const PassMap& other_passes,
+                         const SegmentSet& other_segments,
                          const std::unordered_set<Point2, Point2Hash>& nodes) {
   ClassifiedEdges out;
   auto bucket = [&out](Side s) -> std::vector<DirectedEdge>& {
@@ -493,7 +536,14 @@ ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
         const int e = split[l].edge[i];
         const Point2& e0 = input[e];
         const Point2& e1 = input[(e + 1) % input.size()];
-        if (it != other_passes.end() && !merged_crossings(v, it->second)) {
+        // The same segment in both boundaries (after rounding, whatever the input edges
+        // were) is shared: deciding it any other way would leave the two copies on
+        // different sides of a zero-width gap.
+        if (other_segments.count({v, w})) {
+          dst = &out.shared_same;
+        } else if (other_segments.count({w, v})) {
+          dst = &out.shared_opposite;
+        } else if (it != other_passes.end() && !merged_crossings(v, it->second)) {
           dst = &bucket(side_of_edge(v, e0, e1, it->second));
         } else {
           // No usable local picture: decide at the middle of the stretch's first edge.
@@ -535,8 +585,12 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   const SplitBoundary b_split = with_insertions(b_loops, finder.insertions[1]);
   const PassMap a_passes = passes_through(a_loops, a_split, finder.nodes);
   const PassMap b_passes = passes_through(b_loops, b_split, finder.nodes);
-  const ClassifiedEdges a_edges = classify(a_loops, a_split, b_loops, b_passes, finder.nodes);
-  const ClassifiedEdges b_edges = classify(b_loops, b_split, a_loops, a_passes, finder.nodes);
+  const SegmentSet a_segments = node_to_node_segments(a_split, finder.nodes);
+  const SegmentSet b_segments = node_to_node_segments(b_split, finder.nodes);
+  const ClassifiedEdges a_edges =
+      classify(a_loops, a_split, b_loops, b_passes, b_segments, finder.nodes);
+  const ClassifiedEdges b_edges =
+      classify(b_loops, b_split, a_loops, a_passes, a_segments, finder.nodes);
 
   // subject ∩ clip: the subject inside the clip, the clip inside the subject, and the
   // shared stretches where both regions lie on the same side (taken once).
