@@ -18,13 +18,36 @@ struct ReportRow {
   double lit_fraction = 0.0;  // lit_area / area; 0 for a zero-area face
 };
 
-// One row per (face, light): faces in scene order, lights in scene order.
+// One row per (face, light): faces in scene order, lights in scene order. `area` is the
+// face's area (holes removed, shadowgen::area of its parts), `lit_area` that of its lit
+// polygons for the light. Throws std::invalid_argument when `lit` is not shaped
+// [face][light].
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed);
 
 // The spec's CSV: header face_id,light_id,area,lit_area,lit_fraction; numbers with %.17g;
-// ids quoted as RFC 4180 says when they hold a comma, a quote or a line break.
+// ids quoted as RFC 4180 says when they hold a comma, a quote or a line break. Lines end
+// with "\n".
 std::string report_csv(const ShadowedScene& shadowed);
-// The same rows as JSON, with totals per light and for the scene.
+
+// The same rows as JSON, with totals per light and for the scene:
+//
+//   {
+//     "format": "shadowgen-report/1",
+//     "rows": [
+//       {"face_id":"wall","light_id":"sun","area":28.0,"lit_area":17.25,
+//        "lit_fraction":0.6160714285714286},                          one row per line
+//     ],
+//     "lights": [                                                    scene order
+//       {"light_id":"sun","area":A,"lit_area":L,"lit_fraction":L/A}
+//     ],
+//     "totals": {"area":A,"lit_area":L,"lit_fraction":L/A}
+//   }
+//
+// A light's totals sum its rows: `area` is the scene's whole face area, `lit_area` what
+// that light lights of it. The scene's totals sum every row, so `area` counts each face
+// once per light and `lit_fraction` is the area-weighted mean over the lights. Sums are
+// compensated (Neumaier), fractions are 0 where the area is 0, and numbers are the
+// shortest form that reads back to the same double.
 std::string report_json(const ShadowedScene& shadowed);
 
 }  // namespace shadowgen

@@ -1,7 +1,9 @@
 #pragma once
 
 // Reading a `shadowgen-scene/1` file (../shared/spec/scene-format.md): JSON polygons with
-// holes and mesh files through OpenMesh (OBJ, OFF, PLY, STL) with optional transforms.
+// holes and mesh files (OBJ, OFF, PLY, STL) with optional transforms. JSON coordinates
+// keep full double precision; OFF and PLY meshes go through OpenMesh, whose readers pass
+// vertices through single precision (shadowgen/mesh_reader.h).
 // Every problem is an InputError naming the file, the face id and what is wrong; nothing
 // is returned half-read.
 

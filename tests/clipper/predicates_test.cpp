@@ -9,11 +9,13 @@ namespace {
 
 // Exact reference for points on the grid 2^-53 * integer: scaled to integers the
 // determinant fits in 128 bits.
+__extension__ using Int128 = __int128;  // a GCC/Clang extension, fine for a test
+
 int exact_sign_on_grid(const Point2& a, const Point2& b, const Point2& c) {
-  auto scaled = [](double v) { return static_cast<__int128>(std::ldexp(v, 53)); };
-  const __int128 bax = scaled(b.x) - scaled(a.x), bay = scaled(b.y) - scaled(a.y);
-  const __int128 cax = scaled(c.x) - scaled(a.x), cay = scaled(c.y) - scaled(a.y);
-  const __int128 det = bax * cay - bay * cax;
+  auto scaled = [](double v) { return static_cast<Int128>(std::ldexp(v, 53)); };
+  const Int128 bax = scaled(b.x) - scaled(a.x), bay = scaled(b.y) - scaled(a.y);
+  const Int128 cax = scaled(c.x) - scaled(a.x), cay = scaled(c.y) - scaled(a.y);
+  const Int128 det = bax * cay - bay * cax;
   return det > 0 ? 1 : (det < 0 ? -1 : 0);
 }
 

@@ -1,0 +1,51 @@
+#pragma once
+
+// From loops as a file gives them to a scene Face: the checks and normalisations that the
+// scene format (../shared/spec/scene-format.md) asks of JSON polygons and mesh faces
+// alike.
+//
+//   - A loop needs at least 3 vertices (an error otherwise).
+//   - A face without area (fewer than 3 distinct vertices, or all collinear; decided
+//     exactly) is degenerate, not malformed: kept as given, with a warning. In a JSON
+//     polygon, though, a loop with fewer than 3 distinct vertices is an error, like one
+//     with fewer than 3 vertices: the repeats are a mistake of whoever wrote it, not the
+//     collapse of a mesh face. A hole that is collinear is dropped with a warning.
+//   - Planarity: every vertex within kPlanarityTolerance × (the face's largest extent) of
+//     the best-fit plane (Newell's normal through the outer loop's centroid, as
+//     hsr::plane_of). A face that is not planar is an error under ReadOptions::strict;
+//     otherwise it is split into triangles on its original 3D vertices (triangulate.h),
+//     each exactly planar, all keeping the face's id, with a warning.
+//   - Loops must be simple, holes inside the outer loop and apart from each other
+//     (loop_validation.h). A planar face is checked in its plane chart (plane_chart.h),
+//     exactly; a non-planar one in its projection on the best-fit plane (rounded
+//     coordinates, exact predicates on them), the same 2D image its triangulation uses,
+//     since a coordinate chart can fold a strongly bent face onto itself.
+//   - Holes are turned to run opposite to the outer loop, which keeps its orientation:
+//     it defines the front side.
+
+#include <string>
+#include <vector>
+
+#include "hsr/polygon3.h"
+#include "shadowgen/scene.h"
+#include "shadowgen/scene_reader.h"
+
+namespace shadowgen::detail {
+
+enum class FaceKind { kPolygon, kMeshFace };
+
+struct FaceSource {
+  std::string id;
+  std::string file;  // for messages and Face::source_file
+  FaceKind kind = FaceKind::kPolygon;
+};
+
+// Throws InputError naming source.file and source.id; appends warnings to `warnings`.
+Face build_face(hsr::Polygon3 polygon, const FaceSource& source, const ReadOptions& options,
+                std::vector<std::string>& warnings);
+
+// "file: face 'id': what", the form of InputError's messages.
+std::string face_message(const std::string& file, const std::string& face_id,
+                         const std::string& what);
+
+}  // namespace shadowgen::detail

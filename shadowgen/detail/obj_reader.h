@@ -1,0 +1,21 @@
+#pragma once
+
+// Wavefront OBJ geometry: `v` vertices and `f` (or old-style `fo`) face records, in
+// double precision; every other statement (normals, texture coordinates, groups,
+// materials, lines, points, free-form geometry) is skipped. Face indices may be
+// negative (relative to the vertices read so far) and carry /texture/normal parts,
+// which are ignored. A record with fewer than 3 indices is kept (the caller rejects it).
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "shadowgen/mesh_reader.h"
+
+namespace shadowgen::detail {
+
+// `text` is the file's content; `file` and `mesh_id` name it in InputErrors.
+MeshSoup parse_obj(std::string_view text, const std::filesystem::path& file,
+                   const std::string& mesh_id);
+
+}  // namespace shadowgen::detail

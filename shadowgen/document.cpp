@@ -1,0 +1,120 @@
+#include "shadowgen/document.h"
+
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+#include <system_error>
+
+#include "shadowgen/detail/json_text.h"
+#include "shadowgen/input_error.h"
+
+namespace shadowgen {
+namespace {
+
+using Json = nlohmann::json;
+
+// SAX handler that stops at the value of the top-level "format" key. Returning false
+// from any event ends the scan.
+class FormatScanner {
+ public:
+  // The outcome once the scan has stopped: the format, or why there is none.
+  std::optional<std::string> format;
+  std::string problem = "no \"format\" key";
+
+  bool null() { return value("null"); }
+  bool boolean(bool) { return value("a boolean"); }
+  bool number_integer(Json::number_integer_t) { return value("a number"); }
+  bool number_unsigned(Json::number_unsigned_t) { return value("a number"); }
+  bool number_float(Json::number_float_t, const Json::string_t&) { return value("a number"); }
+  bool binary(Json::binary_t&) { return value("binary data"); }
+  bool string(Json::string_t& s) {
+    if (depth_ == 1 && expecting_format_) {
+      format = s;
+      return false;
+    }
+    return value("a string");
+  }
+  bool start_object(std::size_t) {
+    if (!check_format_value("an object")) return false;
+    ++depth_;
+    return true;
+  }
+  bool end_object() {
+    --depth_;
+    return true;
+  }
+  bool start_array(std::size_t) {
+    if (depth_ == 0) {
+      problem = "the top level is an array, not an object";
+      return false;
+    }
+    if (!check_format_value("an array")) return false;
+    ++depth_;
+    return true;
+  }
+  bool end_array() {
+    --depth_;
+    return true;
+  }
+  bool key(Json::string_t& k) {
+    if (depth_ == 1) expecting_format_ = (k == "format");
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) {
+    problem = "not valid JSON: " + detail::json_error_message(e);
+    return false;
+  }
+
+ private:
+  bool value(const char* what) {
+    if (depth_ == 0) {
+      problem = std::string("the top level is ") + what + ", not an object";
+      return false;
+    }
+    return check_format_value(what);
+  }
+  bool check_format_value(const char* what) {
+    if (depth_ == 1 && expecting_format_) {
+      problem = std::string("\"format\" is ") + what + ", not a string";
+      return false;
+    }
+    return true;
+  }
+
+  int depth_ = 0;
+  bool expecting_format_ = false;
+};
+
+}  // namespace
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw InputError(path.string(), "", "is a folder, not a file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path.string(), "", "cannot read the file");
+  return std::move(text).str();
+}
+
+std::string document_format(const std::string& json_text, const std::filesystem::path& path) {
+  FormatScanner scanner;
+  Json::sax_parse(json_text, &scanner);
+  if (!scanner.format) throw InputError(path.string(), "", scanner.problem);
+  return *scanner.format;
+}
+
+Document read_document(const std::filesystem::path& path) {
+  Document document;
+  document.path = path;
+  document.text = read_text_file(path);
+  document.format = document_format(document.text, path);
+  return document;
+}
+
+}  // namespace shadowgen

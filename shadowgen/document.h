@@ -1,0 +1,33 @@
+#pragma once
+
+// A shadowgen JSON file as the command line meets it: a scene (`shadowgen-scene/1`) or a
+// shadowed database (`shadowgen-shadowed/1`), told apart by the top-level "format" key
+// (../shared/spec/scene-format.md).
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace shadowgen {
+
+inline constexpr std::string_view kSceneFormat = "shadowgen-scene/1";
+inline constexpr std::string_view kShadowedFormat = "shadowgen-shadowed/1";
+
+struct Document {
+  std::filesystem::path path;
+  std::string text;
+  std::string format;  // the value of the top-level "format" key
+};
+
+// The whole text of a file; InputError naming the file when it cannot be read.
+std::string read_text_file(const std::filesystem::path& path);
+
+// The value of the top-level "format" key. The text is scanned only up to that key,
+// without building the document, so a large file costs one pass of the tokenizer.
+// InputError (naming `path`) when the text is not a JSON object, has no "format" key
+// before a syntax error, or the key is not a string.
+std::string document_format(const std::string& json_text, const std::filesystem::path& path);
+
+Document read_document(const std::filesystem::path& path);
+
+}  // namespace shadowgen

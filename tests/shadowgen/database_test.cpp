@@ -1,0 +1,439 @@
+// The shadowed database (shadowgen/database.h): lossless round trips, bit for bit, and
+// clear messages for malformed files. Scenes are built by hand so that these tests do
+// not depend on shadow generation.
+
+#include "shadowgen/database.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "shadowgen/input_error.h"
+
+namespace shadowgen {
+namespace {
+
+using hsr::Loop3;
+using hsr::Polygon3;
+
+Polygon3 square(double x0, double y0, double size, double z) {
+  return {{{x0, y0, z}, {x0 + size, y0, z}, {x0 + size, y0 + size, z}, {x0, y0 + size, z}}, {}};
+}
+
+// Two faces (one with a hole, one split into two triangles), a directional and a point
+// light with a range, a view; lit details for some (face, light) pairs only.
+ShadowedScene sample() {
+  ShadowedScene s;
+  Face ground{"ground", {square(0, 0, 10, 0)}, "scenes/room.json"};
+  ground.parts[0].holes.push_back({{2, 2, 0}, {2, 3, 0}, {3, 3, 0}, {3, 2, 0}});
+  Face bent{"mesh/7",
+            {Polygon3{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1.5}}, {}},
+             Polygon3{{{1, 0, 1}, {1, 1, 1}, {0, 1, 1.5}}, {}}},
+            "models/bent.obj"};
+  s.scene.faces = {ground, bent};
+
+  Light sun;
+  sun.id = "sun";
+  sun.type = LightType::kDirectional;
+  sun.direction = {-0.3, 0.2, -1.0};
+  Light lamp;
+  lamp.id = "lamp";
+  lamp.type = LightType::kPoint;
+  lamp.position = {4.0, 5.0, 2.5};
+  lamp.intensity = {0.5, 0.25, 1.0};
+  lamp.range = LightRange{5.0, 20.0, 2.0};
+  s.scene.lights = {sun, lamp};
+  s.scene.views = {ViewSpec{"main", {20, -15, 10}, {5, 5, 0}, {0, 0, 1}, 45.0}};
+
+  Polygon3 lit_ground = square(0, 0, 10, 0);
+  lit_ground.holes.push_back({{0.1, 0.2, 0}, {0.1, 0.7, 0}, {0.6, 0.7, 0}});
+  s.lit = {{{lit_ground, square(5, 5, 1, 0)}, {}},
+           {{}, {Polygon3{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1.5}}, {}}}}};
+  return s;
+}
+
+std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+void expect_same(const glm::dvec3& a, const glm::dvec3& b, const std::string& where) {
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(bits(a[i]), bits(b[i])) << where << "[" << i << "]: " << a[i] << " vs " << b[i];
+  }
+}
+
+void expect_same(const Loop3& a, const Loop3& b, const std::string& where) {
+  ASSERT_EQ(a.size(), b.size()) << where;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    expect_same(a[i], b[i], where + "[" + std::to_string(i) + "]");
+  }
+}
+
+void expect_same(const std::vector<Polygon3>& a, const std::vector<Polygon3>& b,
+                 const std::string& where) {
+  ASSERT_EQ(a.size(), b.size()) << where;
+  for (std::size_t p = 0; p < a.size(); ++p) {
+    const std::string at = where + "[" + std::to_string(p) + "]";
+    expect_same(a[p].outer, b[p].outer, at + ".outer");
+    ASSERT_EQ(a[p].holes.size(), b[p].holes.size()) << at;
+    for (std::size_t h = 0; h < a[p].holes.size(); ++h) {
+      expect_same(a[p].holes[h], b[p].holes[h], at + ".holes[" + std::to_string(h) + "]");
+    }
+  }
+}
+
+// Everything the database stores, bit for bit (a light's unused position or direction
+// is not stored, so it is not compared).
+void expect_same(const ShadowedScene& a, const ShadowedScene& b) {
+  ASSERT_EQ(a.scene.faces.size(), b.scene.faces.size());
+  for (std::size_t f = 0; f < a.scene.faces.size(); ++f) {
+    const Face& x = a.scene.faces[f];
+    const Face& y = b.scene.faces[f];
+    EXPECT_EQ(x.id, y.id);
+    EXPECT_EQ(x.source_file, y.source_file);
+    expect_same(x.parts, y.parts, x.id + ".parts");
+  }
+  ASSERT_EQ(a.scene.lights.size(), b.scene.lights.size());
+  for (std::size_t l = 0; l < a.scene.lights.size(); ++l) {
+    const Light& x = a.scene.lights[l];
+    const Light& y = b.scene.lights[l];
+    EXPECT_EQ(x.id, y.id);
+    EXPECT_EQ(x.type, y.type);
+    if (x.type == LightType::kDirectional) {
+      expect_same(x.direction, y.direction, x.id + ".direction");
+    } else {
+      expect_same(x.position, y.position, x.id + ".position");
+    }
+    expect_same(x.intensity, y.intensity, x.id + ".intensity");
+    ASSERT_EQ(x.range.has_value(), y.range.has_value()) << x.id;
+    if (x.range) {
+      EXPECT_EQ(bits(x.range->falloff_start), bits(y.range->falloff_start));
+      EXPECT_EQ(bits(x.range->end), bits(y.range->end));
+      EXPECT_EQ(bits(x.range->exponent), bits(y.range->exponent));
+    }
+  }
+  ASSERT_EQ(a.scene.views.size(), b.scene.views.size());
+  for (std::size_t v = 0; v < a.scene.views.size(); ++v) {
+    const ViewSpec& x = a.scene.views[v];
+    const ViewSpec& y = b.scene.views[v];
+    EXPECT_EQ(x.id, y.id);
+    expect_same(x.eye, y.eye, x.id + ".eye");
+    expect_same(x.target, y.target, x.id + ".target");
+    expect_same(x.up, y.up, x.id + ".up");
+    EXPECT_EQ(bits(x.fov_deg), bits(y.fov_deg));
+  }
+  ASSERT_EQ(a.lit.size(), b.lit.size());
+  for (std::size_t f = 0; f < a.lit.size(); ++f) {
+    ASSERT_EQ(a.lit[f].size(), b.lit[f].size());
+    for (std::size_t l = 0; l < a.lit[f].size(); ++l) {
+      expect_same(a.lit[f][l], b.lit[f][l],
+                  "lit[" + std::to_string(f) + "][" + std::to_string(l) + "]");
+    }
+  }
+}
+
+ShadowedScene round_trip(const ShadowedScene& s) {
+  return parse_database(database_json(s), "round-trip.json");
+}
+
+class DatabaseFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::path(::testing::TempDir()) /
+           (std::string("shadowgen-db-") + info->name() + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+      names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  static std::string contents(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  std::filesystem::path dir_;
+};
+
+std::string error_of(const std::string& json) {
+  try {
+    parse_database(json, "broken.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(Database, RoundTripKeepsEverythingBitForBit) {
+  const ShadowedScene s = sample();
+  expect_same(s, round_trip(s));
+}
+
+TEST(Database, RoundTripIsAFixedPoint) {
+  const std::string text = database_json(sample());
+  EXPECT_EQ(database_json(parse_database(text, "db.json")), text);
+}
+
+TEST(Database, ExtremeDoublesRoundTrip) {
+  constexpr double kMax = std::numeric_limits<double>::max();
+  constexpr double kMin = std::numeric_limits<double>::min();
+  constexpr double kDenormMin = std::numeric_limits<double>::denorm_min();
+  const std::vector<double> values = {-0.0,
+                                      0.0,
+                                      0.1,
+                                      -0.1,
+                                      1e-300,
+                                      -1e-300,
+                                      kDenormMin,
+                                      -kDenormMin,
+                                      kMin,
+                                      kMin / 3.0,
+                                      kMax,
+                                      -kMax,
+                                      1.0 / 3.0,
+                                      2.0 / 3.0,
+                                      1e21,
+                                      1e22,
+                                      123456789012345678.0,
+                                      9007199254740993.0,
+                                      0.30000000000000004,
+                                      5e-324 * 12345.0,
+                                      1e308,
+                                      std::nextafter(1.0, 2.0),
+                                      std::nextafter(1.0, 0.0),
+                                      1e8 + 0.1};
+  ShadowedScene s;
+  s.scene.faces.push_back(Face{"f", {}, "x.json"});
+  Light light;
+  light.id = "l";
+  s.scene.lights.push_back(light);
+  s.lit.push_back({{}});
+  for (std::size_t i = 0; i + 2 < values.size(); i += 3) {
+    Loop3 loop = {{values[i], values[i + 1], values[i + 2]},
+                  {values[i + 2], values[i], values[i + 1]},
+                  {values[i + 1], values[i + 2], values[i]}};
+    s.scene.faces[0].parts.push_back({loop, {loop}});
+    s.lit[0][0].push_back({loop, {}});
+  }
+  const ShadowedScene back = round_trip(s);
+  expect_same(s, back);
+  EXPECT_TRUE(std::signbit(back.scene.faces[0].parts[0].outer[0].x));  // -0.0 kept its sign
+}
+
+TEST(Database, RandomBitPatternsRoundTrip) {
+  std::mt19937_64 random(20240611);
+  ShadowedScene s;
+  s.scene.faces.push_back(Face{"f", {}, "x.json"});
+  s.lit.push_back({});
+  for (int p = 0; p < 300; ++p) {
+    Loop3 loop;
+    for (int v = 0; v < 4; ++v) {
+      glm::dvec3 point;
+      for (int i = 0; i < 3; ++i) {
+        do {
+          point[i] = std::bit_cast<double>(random());
+        } while (!std::isfinite(point[i]));
+      }
+      loop.push_back(point);
+    }
+    s.scene.faces[0].parts.push_back({loop, {}});
+  }
+  expect_same(s, round_trip(s));
+}
+
+TEST(Database, NumbersAlwaysReadAsFloatingPoint) {
+  ShadowedScene s;
+  s.scene.faces.push_back(Face{"f", {{{{28, -0.0, 1e-300}, {1, 0, 0}, {0, 1, 0}}, {}}}, "x"});
+  s.lit.push_back({});
+  const std::string text = database_json(s);
+  EXPECT_NE(text.find("[28.0,-0.0,1e-300]"), std::string::npos) << text;
+}
+
+TEST(Database, EmptyLitRegionsAreLeftOut) {
+  const ShadowedScene s = sample();
+  const nlohmann::json json = nlohmann::json::parse(database_json(s));
+  EXPECT_EQ(json["format"], "shadowgen-shadowed/1");
+  ASSERT_EQ(json["faces"].size(), 2u);
+  EXPECT_EQ(json["faces"][0]["id"], "ground");
+  EXPECT_TRUE(json["faces"][0]["lit"].contains("sun"));
+  EXPECT_FALSE(json["faces"][0]["lit"].contains("lamp"));
+  EXPECT_FALSE(json["faces"][1]["lit"].contains("sun"));
+  EXPECT_EQ(json["faces"][1]["lit"]["lamp"].size(), 1u);
+  EXPECT_FALSE(json["lights"][0].contains("range"));
+  EXPECT_EQ(json["lights"][1]["range"]["end"], 20.0);
+}
+
+TEST(Database, EmptySceneRoundTrips) {
+  const ShadowedScene empty;
+  const std::string text = database_json(empty);
+  EXPECT_TRUE(nlohmann::json::accept(text)) << text;
+  expect_same(empty, round_trip(empty));
+}
+
+TEST(Database, IdsWithAnyCharactersRoundTrip) {
+  ShadowedScene s = sample();
+  s.scene.faces[0].id = "a \"quoted\", back\\slash\nnew line\ttab \u00e9\u6f22";
+  s.scene.lights[0].id = "sun/\x01control";
+  s.scene.faces[1].source_file = "C:\\models\\bent.obj";
+  expect_same(s, round_trip(s));
+}
+
+TEST(Database, ReadsIntegersAndIgnoresUnknownKeys) {
+  const ShadowedScene s = parse_database(R"({
+    "format": "shadowgen-shadowed/1", "generator": "someone else",
+    "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -1],
+                "intensity": [1, 1, 1], "colour": "warm"}],
+    "views": [],
+    "faces": [{"id": "g", "source_file": "s.json", "note": 1,
+               "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}],
+               "lit": {"sun": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}]}}]
+  })",
+                                         "db.json");
+  ASSERT_EQ(s.scene.faces.size(), 1u);
+  EXPECT_EQ(s.scene.lights[0].direction, glm::dvec3(0, 0, -1));
+  ASSERT_EQ(s.lit[0][0].size(), 1u);
+  EXPECT_EQ(s.lit[0][0][0].outer[1], glm::dvec3(1, 0, 0));
+}
+
+TEST(Database, RefusesToWriteWhatCannotBeReadBack) {
+  ShadowedScene s = sample();
+  s.lit[1][1][0].outer[0].y = std::numeric_limits<double>::quiet_NaN();
+  try {
+    (void)database_json(s);
+    FAIL() << "a NaN was written";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("face 'mesh/7'"), std::string::npos) << e.what();
+  }
+
+  s = sample();
+  s.lit[0][0][0].holes[0].pop_back();
+  EXPECT_THROW((void)database_json(s), std::invalid_argument);
+  s = sample();
+  s.lit[0].pop_back();
+  EXPECT_THROW((void)database_json(s), std::invalid_argument);
+  s = sample();
+  s.scene.lights[1].id = "sun";
+  EXPECT_THROW((void)database_json(s), std::invalid_argument);
+}
+
+TEST(Database, MalformedFilesNameTheFileTheFaceAndTheProblem) {
+  EXPECT_EQ(error_of("{"),
+            "broken.json: not valid JSON: parse error at line 1, column 2: syntax error while "
+            "parsing object key - unexpected end of input; expected string literal");
+  EXPECT_NE(error_of("[]").find("broken.json: the top level is not an object"), std::string::npos);
+  EXPECT_NE(error_of(R"({"format": "shadowgen-scene/1"})")
+                .find(R"("format" is "shadowgen-scene/1", expected "shadowgen-shadowed/1")"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"format": "shadowgen-shadowed/1", "views": [], "faces": []})")
+                .find(R"(missing "lights")"),
+            std::string::npos);
+
+  const std::string head =
+      R"({"format": "shadowgen-shadowed/1", "views": [],
+          "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -1],
+                      "intensity": [1, 1, 1]}],
+          "faces": [)";
+  const std::string good_face =
+      R"({"id": "good", "source_file": "s.json",
+          "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}], "lit": {}})";
+  auto faces = [&](const std::string& face) { return head + good_face + "," + face + "]}"; };
+
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1]], "holes": []}], "lit": {}})")),
+            "broken.json: face 'w': parts[0].outer[2]: expected three numbers [x, y, z]");
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0]], "holes": []}], "lit": {}})")),
+            "broken.json: face 'w': parts[0].outer: a loop needs at least three vertices");
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, "z"]], "holes": []}], "lit": {}})")),
+            "broken.json: face 'w': parts[0].outer[2][2]: expected a number");
+  EXPECT_NE(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 1e400]], "holes": []}], "lit": {}})"))
+                .find("broken.json: not valid JSON: number overflow parsing '1e400'"),
+            std::string::npos);
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json", "parts": [], "lit": {}})")),
+            "broken.json: face 'w': parts: a face needs at least one polygon");
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}]})")),
+            R"(broken.json: face 'w': missing "lit")");
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}],
+      "lit": {"moon": []}})")),
+            "broken.json: face 'w': lit['moon']: no light has this id");
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": {}}], "lit": {}})")),
+            "broken.json: face 'w': parts[0].holes: expected an array");
+  EXPECT_EQ(error_of(faces(R"({"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}],
+      "lit": {"sun": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": [[[0, 0, 0]]]}]}})")),
+            "broken.json: face 'w': lit['sun'][0].holes[0]: a loop needs at least three vertices");
+  EXPECT_EQ(error_of(faces(good_face)), "broken.json: face 'good': duplicate face id");
+  EXPECT_EQ(error_of(faces(R"({"source_file": "s.json"})")),
+            R"(broken.json: faces[1]: missing "id")");
+  EXPECT_EQ(
+      error_of(R"({"format": "shadowgen-shadowed/1", "views": [], "faces": [],
+          "lights": [{"id": "sun", "type": "spot", "direction": [0, 0, -1]}]})"),
+      R"(broken.json: lights[0] ('sun').type: expected "directional" or "point", not "spot")");
+  EXPECT_EQ(error_of(R"({"format": "shadowgen-shadowed/1", "views": [], "faces": [],
+          "lights": [{"id": "lamp", "type": "point", "position": [0, 0, 1],
+                      "intensity": [1, 1, 1], "range": {"falloff_start": 1, "end": 2}}]})"),
+            R"(broken.json: lights[0] ('lamp').range: missing "exponent")");
+}
+
+TEST_F(DatabaseFile, WriteAndReadAFile) {
+  const std::filesystem::path path = dir_ / "db.json";
+  const ShadowedScene s = sample();
+  write_database(s, path);
+  EXPECT_EQ(files(), std::vector<std::string>{"db.json"});
+  expect_same(s, read_database(path));
+  EXPECT_EQ(contents(path), database_json(s));
+}
+
+TEST_F(DatabaseFile, AFailedWriteLeavesTheOldFileAndNoTemporary) {
+  const std::filesystem::path path = dir_ / "db.json";
+  write_database(sample(), path);
+  const std::string before = contents(path);
+
+  ShadowedScene bad = sample();
+  bad.scene.faces[0].parts[0].outer[0].x = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(write_database(bad, path), std::invalid_argument);
+  EXPECT_EQ(contents(path), before);
+  EXPECT_EQ(files(), std::vector<std::string>{"db.json"});
+
+  EXPECT_THROW(write_database(sample(), dir_ / "missing" / "db.json"), std::runtime_error);
+  EXPECT_EQ(files(), std::vector<std::string>{"db.json"});
+}
+
+TEST_F(DatabaseFile, ReadingAMissingFileNamesIt) {
+  try {
+    (void)read_database(dir_ / "nothing.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), (dir_ / "nothing.json").string());
+    EXPECT_TRUE(e.face_id().empty());
+  }
+}
+
+}  // namespace
+}  // namespace shadowgen

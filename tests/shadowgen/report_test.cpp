@@ -1,0 +1,199 @@
+// Reports (shadowgen/report.h): the spec's CSV to the byte, and the JSON totals. Scenes
+// are built by hand so that these tests do not depend on shadow generation.
+
+#include "shadowgen/report.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "shadowgen/area.h"
+
+namespace shadowgen {
+namespace {
+
+using hsr::Polygon3;
+
+Polygon3 rectangle(double x0, double y0, double x1, double y1, double z = 0.0) {
+  return {{{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}}, {}};
+}
+
+// Holes run clockwise, as the scene reader normalises them.
+hsr::Loop3 hole(double x0, double y0, double x1, double y1, double z = 0.0) {
+  return {{x0, y0, z}, {x0, y1, z}, {x1, y1, z}, {x1, y0, z}};
+}
+
+Light directional(std::string id) {
+  Light light;
+  light.id = std::move(id);
+  return light;
+}
+
+std::string g17(double x) {
+  std::array<char, 64> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.17g", x);
+  return buffer.data();
+}
+
+// ground: 10 × 10 with a 1 × 2 hole (area 98); sliver: collinear, area 0;
+// roof: 4 × 4 at z = 3 (area 16). Lights "sun" and "lamp".
+ShadowedScene scene_with_ids(const std::string& ground, const std::string& sun) {
+  ShadowedScene s;
+  Polygon3 ground_polygon = rectangle(0, 0, 10, 10);
+  ground_polygon.holes.push_back(hole(1, 1, 2, 3));
+  s.scene.faces = {Face{ground, {ground_polygon}, "scene.json"},
+                   Face{"sliver", {Polygon3{{{0, 0, 1}, {1, 1, 1}, {2, 2, 1}}, {}}}, "scene.json"},
+                   Face{"roof", {rectangle(0, 0, 4, 4, 3)}, "scene.json"}};
+  s.scene.lights = {directional(sun), directional("lamp")};
+  // ground: the sun lights all but a 4 × 4 shadow (82); the lamp lights a 1 × 1 square.
+  Polygon3 ground_lit = ground_polygon;
+  ground_lit.holes.push_back(hole(4, 4, 8, 8));
+  s.lit = {{{ground_lit}, {rectangle(9, 9, 10, 10)}},
+           {{}, {}},
+           {{rectangle(0, 0, 4, 4, 3)}, {rectangle(0, 0, 2, 4, 3), rectangle(2, 0, 4, 1, 3)}}};
+  return s;
+}
+
+TEST(ReportCsv, MatchesTheSpecToTheByte) {
+  const ShadowedScene s = scene_with_ids("ground", "sun");
+  EXPECT_EQ(report_csv(s),
+            "face_id,light_id,area,lit_area,lit_fraction\n"
+            "ground,sun,98,82,0.83673469387755106\n"
+            "ground,lamp,98,1,0.01020408163265306\n"
+            "sliver,sun,0,0,0\n"
+            "sliver,lamp,0,0,0\n"
+            "roof,sun,16,16,1\n"
+            "roof,lamp,16,10,0.625\n");
+}
+
+TEST(ReportCsv, NumbersArePrintedWithSeventeenDigits) {
+  ShadowedScene s;
+  s.scene.faces = {Face{"thin", {rectangle(0, 0, 0.1, 1.0 / 3.0)}, "scene.json"}};
+  s.scene.lights = {directional("sun")};
+  s.lit = {{{rectangle(0, 0, 0.1, 0.2)}}};
+  const double area_value = area(s.scene.faces[0].parts);
+  const double lit_value = area(s.lit[0][0]);
+  EXPECT_EQ(report_csv(s), "face_id,light_id,area,lit_area,lit_fraction\nthin,sun," +
+                               g17(area_value) + "," + g17(lit_value) + "," +
+                               g17(lit_value / area_value) + "\n");
+  // Every number reads back to the same double.
+  const std::vector<ReportRow> rows = report_rows(s);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(std::strtod(g17(rows[0].lit_fraction).c_str(), nullptr), rows[0].lit_fraction);
+}
+
+TEST(ReportCsv, IdsAreQuotedAsRfc4180Says) {
+  const std::string expected_header = "face_id,light_id,area,lit_area,lit_fraction\n";
+  auto first_row = [](const std::string& csv) {
+    const std::size_t start = csv.find('\n') + 1;
+    return csv.substr(start, csv.find(",98,") - start);
+  };
+  EXPECT_EQ(first_row(report_csv(scene_with_ids("a,b", "sun"))), "\"a,b\",sun");
+  EXPECT_EQ(first_row(report_csv(scene_with_ids("say \"hi\"", "sun"))), "\"say \"\"hi\"\"\",sun");
+  EXPECT_EQ(first_row(report_csv(scene_with_ids("two\nlines", "sun"))), "\"two\nlines\",sun");
+  EXPECT_EQ(first_row(report_csv(scene_with_ids("cr\rhere", "sun"))), "\"cr\rhere\",sun");
+  EXPECT_EQ(first_row(report_csv(scene_with_ids("plain id; 'single' quotes", "sun, noon"))),
+            "plain id; 'single' quotes,\"sun, noon\"");
+  EXPECT_EQ(report_csv(scene_with_ids("a,b", "sun")).substr(0, expected_header.size()),
+            expected_header);
+}
+
+TEST(ReportRows, OrderAndValues) {
+  const std::vector<ReportRow> rows = report_rows(scene_with_ids("ground", "sun"));
+  ASSERT_EQ(rows.size(), 6u);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].face, i / 2);
+    EXPECT_EQ(rows[i].light, i % 2);
+  }
+  EXPECT_EQ(rows[0].area, 98.0);
+  EXPECT_EQ(rows[0].lit_area, 82.0);
+  EXPECT_EQ(rows[0].lit_fraction, 82.0 / 98.0);
+  EXPECT_EQ(rows[2].lit_fraction, 0.0);  // zero-area face
+}
+
+TEST(ReportRows, NoLightsNoRows) {
+  ShadowedScene s = scene_with_ids("ground", "sun");
+  s.scene.lights.clear();
+  for (auto& per_face : s.lit) per_face.clear();
+  EXPECT_TRUE(report_rows(s).empty());
+  EXPECT_EQ(report_csv(s), "face_id,light_id,area,lit_area,lit_fraction\n");
+}
+
+TEST(ReportRows, LitDetailsMustBeShapedFaceByLight) {
+  ShadowedScene s = scene_with_ids("ground", "sun");
+  s.lit[1].pop_back();
+  EXPECT_THROW((void)report_rows(s), std::invalid_argument);
+  s.lit.pop_back();
+  EXPECT_THROW((void)report_csv(s), std::invalid_argument);
+}
+
+TEST(ReportJson, RowsAndTotals) {
+  const ShadowedScene s = scene_with_ids("ground", "sun");
+  const nlohmann::json json = nlohmann::json::parse(report_json(s));
+  EXPECT_EQ(json["format"], "shadowgen-report/1");
+
+  const nlohmann::json& rows = json["rows"];
+  ASSERT_EQ(rows.size(), 6u);
+  EXPECT_EQ(rows[0]["face_id"], "ground");
+  EXPECT_EQ(rows[0]["light_id"], "sun");
+  EXPECT_EQ(rows[0]["area"], 98.0);
+  EXPECT_EQ(rows[0]["lit_area"], 82.0);
+  EXPECT_EQ(rows[0]["lit_fraction"], 82.0 / 98.0);
+  EXPECT_EQ(rows[3]["face_id"], "sliver");
+  EXPECT_EQ(rows[3]["lit_fraction"], 0.0);
+  EXPECT_EQ(rows[5]["lit_area"], 10.0);
+
+  const nlohmann::json& lights = json["lights"];
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(lights[0]["light_id"], "sun");
+  EXPECT_EQ(lights[0]["area"], 114.0);
+  EXPECT_EQ(lights[0]["lit_area"], 98.0);
+  EXPECT_EQ(lights[0]["lit_fraction"], 98.0 / 114.0);
+  EXPECT_EQ(lights[1]["light_id"], "lamp");
+  EXPECT_EQ(lights[1]["area"], 114.0);
+  EXPECT_EQ(lights[1]["lit_area"], 11.0);
+  EXPECT_EQ(lights[1]["lit_fraction"], 11.0 / 114.0);
+
+  EXPECT_EQ(json["totals"]["area"], 228.0);
+  EXPECT_EQ(json["totals"]["lit_area"], 109.0);
+  EXPECT_EQ(json["totals"]["lit_fraction"], 109.0 / 228.0);
+}
+
+TEST(ReportJson, TotalsAreCompensatedSums) {
+  // 1 + 1e-16 × 1000: a naive running sum stays at 1, the compensated one does not.
+  ShadowedScene s;
+  s.scene.lights = {directional("sun")};
+  s.scene.faces.push_back(Face{"big", {rectangle(0, 0, 1, 1)}, "scene.json"});
+  s.lit.push_back({{}});
+  const double side = 1e-8;  // area about 1e-16, below half an ulp of 1
+  for (int i = 0; i < 1000; ++i) {
+    s.scene.faces.push_back(
+        Face{"tiny" + std::to_string(i), {rectangle(0, 0, side, side)}, "scene.json"});
+    s.lit.push_back({{}});
+  }
+  const double tiny = area(s.scene.faces[1].parts);
+  const nlohmann::json json = nlohmann::json::parse(report_json(s));
+  const double total = json["totals"]["area"].get<double>();
+  EXPECT_GT(total, 1.0);
+  EXPECT_NEAR(total, 1.0 + 1000.0 * tiny, 1e-15);
+}
+
+TEST(ReportJson, SpecialIdsAndEmptyScenes) {
+  const nlohmann::json json =
+      nlohmann::json::parse(report_json(scene_with_ids("say \"hi\",\nthere", "s\\un")));
+  EXPECT_EQ(json["rows"][0]["face_id"], "say \"hi\",\nthere");
+  EXPECT_EQ(json["lights"][0]["light_id"], "s\\un");
+
+  const nlohmann::json empty = nlohmann::json::parse(report_json(ShadowedScene{}));
+  EXPECT_TRUE(empty["rows"].empty());
+  EXPECT_TRUE(empty["lights"].empty());
+  EXPECT_EQ(empty["totals"]["area"], 0.0);
+  EXPECT_EQ(empty["totals"]["lit_fraction"], 0.0);
+}
+
+}  // namespace
+}  // namespace shadowgen
