@@ -409,8 +409,13 @@ Side side_against(const Point2& v, const Point2& e0, const Point2& e1, const Pas
     return orient2d(f0, f1, e1) == Orientation::kCounterClockwise ? Side::kInside : Side::kOutside;
   };
   const bool crosses_in = crosses(pass.from, v), crosses_out = crosses(v, pass.to);
-  if (crosses_in && crossing_point(pass.from, v, e0, e1) == v) return side_of(pass.from, v);
-  if (crosses_out && crossing_point(v, pass.to, e0, e1) == v) return side_of(v, pass.to);
+  const bool lands_in = crosses_in && crossing_point(pass.from, v, e0, e1) == v;
+  const bool lands_out = crosses_out && crossing_point(v, pass.to, e0, e1) == v;
+  // Both crossings landed on v: the stretch cut across the corner and is past both, in
+  // the sector its direction points into.
+  if (lands_in && lands_out) return in_sector(v, pass, e1) ? Side::kInside : Side::kOutside;
+  if (lands_in) return side_of(pass.from, v);
+  if (lands_out) return side_of(v, pass.to);
   if (crosses_in) return side_of(pass.from, v);
   if (crosses_out) return side_of(v, pass.to);
   const Point2 ahead{v.x + (e1.x - e0.x), v.y + (e1.y - e0.y)};

@@ -365,3 +365,31 @@ TEST(Clip, SecondOfTwoCrossingsRoundedOntoTheVertexBetween) {
 
 }  // namespace
 }  // namespace shadowgen::clipper
+
+namespace shadowgen::clipper {
+namespace {
+
+// Regression (a grid pair scaled by 1e-4): the subject's edge cuts across the clip's
+// corner so close to the corner vertex that both crossings round onto it. The stretch
+// beyond is past both crossings, in the sector its direction points into.
+TEST(Clip, BothCrossingsOfACornerRoundedOntoIt) {
+  const PolygonWithHoles2 a{{{0.0001, 0.00060000000000000006},
+                             {0.00050000000000000001, 0.001},
+                             {0.001, 0.0011000000000000001}},
+                            {}};
+  const PolygonWithHoles2 b{{{0.00030000000000000003, 0.00090000000000000008},
+                             {0.00030000000000000003, 0.00080000000000000004},
+                             {0.00020000000000000001, 0.00080000000000000004},
+                             {0.00080000000000000004, 0.00069999999999999999}},
+                            {}};
+  // The exact intersection (CGAL) is 1.16058e-08 of the subject's 8e-08.
+  for (int swap = 0; swap < 2; ++swap) {
+    const ClipResult r = swap ? clip(b, a) : clip(a, b);
+    ExpectWellFormed(r.inside);
+    ExpectWellFormed(r.outside);
+    EXPECT_NEAR(area(r.inside), 1.16058e-08, 1e-13);
+  }
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper
