@@ -6,6 +6,8 @@
 #include <unordered_set>
 
 #include "clipper/detail/boundary_graph.h"
+#include "clipper/detail/crossing.h"
+#include "clipper/detail/edge_noding.h"
 #include "clipper/detail/point_location.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
@@ -13,6 +15,7 @@
 namespace shadowgen::clipper {
 namespace {
 
+using detail::crossing_point;
 using detail::DirectedEdge;
 using detail::Location;
 
@@ -63,36 +66,6 @@ struct Insertion {
   int index;
   Point2 point;
 };
-
-// The crossing of the proper intersection of segments a and b. The parameter along the
-// shorter segment is |o0| / (|o0| + |o1|), from two exact orientation determinants of
-// opposite sign rounded once each, so it is accurate to a few ulps whatever the angle
-// (clip.h states the resulting bound). The result is kept inside both segments' boxes.
-Point2 crossing_point(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
-  auto length2 = [](const Point2& p, const Point2& q) {
-    const double dx = q.x - p.x, dy = q.y - p.y;
-    return dx * dx + dy * dy;
-  };
-  // The same answer whichever segment comes first: ties in length go to the segment with
-  // the smaller first endpoint.
-  const double la = length2(a0, a1), lb = length2(b0, b1);
-  const bool along_a = la < lb || (la == lb && (a0 < b0 || (a0 == b0 && a1 < b1)));
-  const Point2& p0 = along_a ? a0 : b0;
-  const Point2& p1 = along_a ? a1 : b1;
-  const Point2& q0 = along_a ? b0 : a0;
-  const Point2& q1 = along_a ? b1 : a1;
-  const double o0 = std::fabs(orient2d_value(q0, q1, p0));
-  const double o1 = std::fabs(orient2d_value(q0, q1, p1));
-  const double t = o0 / (o0 + o1);
-  Point2 p{p0.x + t * (p1.x - p0.x), p0.y + t * (p1.y - p0.y)};
-  const double xlo = std::max(std::min(a0.x, a1.x), std::min(b0.x, b1.x));
-  const double xhi = std::min(std::max(a0.x, a1.x), std::max(b0.x, b1.x));
-  const double ylo = std::max(std::min(a0.y, a1.y), std::min(b0.y, b1.y));
-  const double yhi = std::min(std::max(a0.y, a1.y), std::max(b0.y, b1.y));
-  p.x = std::clamp(p.x, xlo, xhi);
-  p.y = std::clamp(p.y, ylo, yhi);
-  return p;
-}
 
 // Finds every point where the two boundaries meet and records it for insertion into
 // both. Candidate pairs come from a sweep over x; the rest are rejected by y-interval.
@@ -146,6 +119,7 @@ class IntersectionFinder {
 
   std::vector<Insertion> insertions[2];
   std::unordered_set<Point2, Point2Hash> nodes;
+  std::unordered_set<Point2, Point2Hash> crossings;  // the nodes that are rounded points
 
  private:
   const Point2& start(const EdgeRef& e) const { return (*sides_[e.side])[e.loop][e.index]; }
@@ -177,6 +151,7 @@ class IntersectionFinder {
         ob0 != Orientation::kCollinear && ob1 != Orientation::kCollinear) {
       const Point2 p = crossing_point(a0, a1, b0, b1);
       nodes.insert(p);
+      crossings.insert(p);
       insert(a, p);
       insert(b, p);
       return;
@@ -239,9 +214,8 @@ std::vector<Insertion> self_touches(const Boundary& loops) {
 }
 
 // One loop of an operand with the intersection points inserted in order along each edge
-// (a point exactly on a segment is ordered exactly by the coordinate that varies most
-// along it). Each vertex remembers where it came from, because sides are decided on the
-// original edges: exact input, never a rounded crossing point.
+// (detail::AlongSegment). Each vertex remembers where it came from, because sides are decided on
+// the original edges: exact input, never a rounded crossing point.
 struct SplitLoop {
   Loop2 points;
   std::vector<int> original;  // index of the input vertex, or -1 for an inserted point
@@ -273,15 +247,10 @@ SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& ins
       const std::size_t first = k;
       while (k < insertions.size() && insertions[k].loop == l && insertions[k].index == i) ++k;
       if (k == first) continue;
-      const bool by_x = std::fabs(q.x - p.x) >= std::fabs(q.y - p.y);
-      const bool ascending = by_x ? q.x > p.x : q.y > p.y;
+      const detail::AlongSegment along(p, q);
       std::sort(insertions.begin() + static_cast<std::ptrdiff_t>(first),
                 insertions.begin() + static_cast<std::ptrdiff_t>(k),
-                [&](const Insertion& a, const Insertion& b) {
-                  const double u = by_x ? a.point.x : a.point.y;
-                  const double v = by_x ? b.point.x : b.point.y;
-                  return ascending ? u < v : u > v;
-                });
+                [&](const Insertion& a, const Insertion& b) { return along(a.point, b.point); });
       for (std::size_t j = first; j < k; ++j) {
         if (insertions[j].point != q) push(insertions[j].point, -1, i);
       }
@@ -608,8 +577,20 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   append_reversed(outside_edges, b_edges.inside);
   append(outside_edges, a_edges.shared_opposite);
 
-  result.inside = detail::assemble_polygons(inside_edges);
-  result.outside = detail::assemble_polygons(outside_edges);
+  // Rounded crossings may have moved stretches into contact: node them. And a vertex the
+  // operands bring from earlier clips may lie a rounding off an edge it was made on,
+  // folding the traced boundary back along that edge: snap it onto the edge so the fold
+  // cancels. Then trace.
+  auto finish = [&finder](std::vector<DirectedEdge> edges) {
+    edges = detail::node_edges(std::move(edges), finder.crossings);
+    std::unordered_set<Point2, Point2Hash> snapped;
+    edges = detail::snap_vertices_onto_edges(std::move(edges), nullptr, &snapped);
+    // A snapped edge moved by a hair and may now cross a neighbour: node once more.
+    if (!snapped.empty()) edges = detail::node_edges(std::move(edges), snapped);
+    return detail::assemble_polygons(edges);
+  };
+  result.inside = finish(std::move(inside_edges));
+  result.outside = finish(std::move(outside_edges));
   return result;
 }
 

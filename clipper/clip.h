@@ -38,14 +38,22 @@
 // winding number is 1.
 //
 // Exactness and tolerance. Every decision (do two edges cross, does a point lie on an
-// edge, which side is a stretch on) is an exact predicate on the input doubles; there
-// is no epsilon anywhere. Only new intersection points are rounded: each lies within
+// edge, which side is a stretch on) is an exact predicate on the input doubles. Only new
+// intersection points are rounded: each lies within
 //     4u·min(|a1 − a0|, |b1 − b0|) + u·|P|,   u = 2^-53,
 // of the exact crossing P of edges a and b (the parameter is formed from two exact
 // orientation determinants, so the bound does not depend on the crossing angle).
 // Vertices of the inputs are passed through unchanged. Consequently the areas of the
 // pieces differ from the exact ones by at most the sum, over the constructed vertices,
 // of that displacement times the length of the adjacent edges.
+//
+// Rounding repaired before tracing (detail/edge_noding.h). A rounded crossing can land
+// across a nearby edge or past a vertex; the traced stretches are then noded again where
+// they cross, until none do. And a vertex brought in from an earlier clip, a crossing
+// rounded a hair off the edge it was made on, is taken as lying on any edge within twice
+// the bound above (8u·|edge| + 2u·|P|), so the boundary does not fold back along that edge
+// into a sliver. Both move the boundary by at most those bounds; the one tolerance is
+// that derived distance, nothing else.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges

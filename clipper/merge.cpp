@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "clipper/detail/boundary_graph.h"
+#include "clipper/detail/edge_noding.h"
 #include "clipper/normalize.h"
 
 namespace shadowgen::clipper {
@@ -62,7 +63,10 @@ PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons) {
     emit_loop(p.outer);
     for (const Loop2& h : p.holes) emit_loop(h);
   }
-  return detail::assemble_polygons(edges);
+  // What is left may still meet at T-junctions (a vertex of one piece on an edge of
+  // another, or within a rounding of it): split there, the overlapping stretches cancel
+  // too.
+  return detail::assemble_polygons(detail::snap_vertices_onto_edges(std::move(edges)));
 }
 
 }  // namespace shadowgen::clipper

@@ -156,6 +156,30 @@ bool encloses(const Loop2& outer, const Loop2& hole) {
   return false;
 }
 
+// A counter-clockwise loop inside another one overlaps it, which exact arithmetic never
+// gives: it is a hole so thin that rounding its crossing points turned it over (a sliver
+// cut out of a region). Within the rounding bound it is that artefact and is dropped, so
+// the region keeps the sliver's area, an error within the bound; a larger one stays.
+void drop_turned_over_holes(PolygonSet2& polygons) {
+  if (polygons.size() < 2) return;
+  std::vector<std::size_t> drop;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const Loop2& loop = polygons[i].outer;
+    if (std::fabs(signed_area(loop)) > rounding_area_bound(loop)) continue;
+    const Bounds b(loop);
+    for (std::size_t j = 0; j < polygons.size(); ++j) {
+      if (j == i || !Bounds(polygons[j].outer).contains(b)) continue;
+      if (encloses(polygons[j].outer, loop)) {
+        drop.push_back(i);
+        break;
+      }
+    }
+  }
+  for (auto it = drop.rbegin(); it != drop.rend(); ++it) {
+    polygons.erase(polygons.begin() + static_cast<std::ptrdiff_t>(*it));
+  }
+}
+
 }  // namespace
 
 PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
@@ -172,6 +196,7 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
       holes.push_back(std::move(loop));
     }
   }
+  drop_turned_over_holes(polygons);
   if (holes.empty()) return polygons;
 
   std::vector<Bounds> outer_bounds;

@@ -391,5 +391,35 @@ TEST(Clip, BothCrossingsOfACornerRoundedOntoIt) {
   }
 }
 
+// A clip vertex that an earlier clip made as a crossing on the subject's edge lies a
+// rounding off that edge (tests/clipper/regressions/vertex-a-rounding-off-the-subject-
+// edge.wkt). Exactly, the outside piece would run along the whole edge and fold back to
+// that vertex, a sliver of area ~1e-17 whose fold, lifted back into 3D, crosses itself.
+// The vertex is snapped onto the edge (edge_noding.h): the piece turns there instead.
+TEST(Clip, VertexARoundingOffAnEdgeIsTakenAsOnIt) {
+  const Point2 a{-0.86647634128116846, -2.0078308440393733};
+  const Point2 b{0.1956559480312316, -0.24372513135738061};
+  const Point2 x{-0.41926274578121059, -1.2650494913311658};  // a rounding off a -> b
+  ASSERT_NE(orient2d(a, b, x), Orientation::kCollinear);
+  const PolygonWithHoles2 wall{{a,
+                                b,
+                                {0.1956559480312316, 1.3578971604196917},
+                                {-0.86647634128116846, -0.40620855226230101}},
+                               {}};
+  const PolygonWithHoles2 piece{{{0.1956559480312316, 0.75438731134427317},
+                                 {-0.41926274578121059, -0.26693704862951206},
+                                 x,
+                                 b},
+                                {}};
+  const ClipResult r = clip(wall, piece);
+  ASSERT_EQ(r.outside.size(), 1u);
+  ExpectWellFormed(r.outside);
+  const Loop2& loop = r.outside[0].outer;
+  // a, x, the piece's upper-left corner, its top, the wall's two upper corners: b is gone.
+  EXPECT_EQ(loop.size(), 6u);
+  EXPECT_EQ(std::count(loop.begin(), loop.end(), b), 0);
+  EXPECT_EQ(std::count(loop.begin(), loop.end(), x), 1);
+}
+
 }  // namespace
 }  // namespace shadowgen::clipper

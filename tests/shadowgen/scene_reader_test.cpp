@@ -9,7 +9,6 @@
 
 #include <array>
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -913,7 +912,8 @@ std::vector<glm::dvec3> jittered_circle(std::size_t n, double radius, double jit
   return loop;
 }
 
-TEST(SceneReaderScale, TenThousandVerticesAreCheckedQuickly) {
+// How fast validation is on such loops is measured in bench/, never asserted here.
+TEST(SceneReaderScale, TenThousandVertexLoopsAreValidated) {
   const auto outer = jittered_circle(10000, 100, 0.05, 1);
   const auto hole = jittered_circle(2000, 30, 0.05, 2);
   // A comb: 2,500 teeth, long in x, so the sweep's boxes all overlap in x.
@@ -927,25 +927,18 @@ TEST(SceneReaderScale, TenThousandVerticesAreCheckedQuickly) {
   }
   comb.emplace_back(-1, 2 * teeth - 1, 0);
   ASSERT_EQ(comb.size(), 10000u);
-  const auto start = std::chrono::steady_clock::now();
   const ReadResult r =
       parse(polygons(polygon("round", loop_json(outer), "[" + loop_json(hole) + "]") + "," +
                      polygon("comb", loop_json(comb))));
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
   ASSERT_EQ(r.scene.faces.size(), 2u);
-  EXPECT_LT(seconds, 2.0);
 }
 
 TEST(SceneReaderScale, LargeNonPlanarPolygonIsTriangulated) {
   auto loop = jittered_circle(3000, 100, 0.05, 3);
   for (std::size_t i = 0; i < loop.size(); ++i)
     loop[i].z = 0.01 * std::sin(0.37 * static_cast<double>(i));
-  const auto start = std::chrono::steady_clock::now();
   const ReadResult r = parse(polygons(polygon("wavy", loop_json(loop))));
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(r.scene.faces.size(), 1u);
   EXPECT_EQ(r.scene.faces[0].parts.size(), loop.size() - 2);
   double flat = 0.0;  // the shoelace area of the loop's xy shadow
@@ -956,7 +949,6 @@ TEST(SceneReaderScale, LargeNonPlanarPolygonIsTriangulated) {
   }
   EXPECT_GE(total_area(r.scene.faces[0]), flat * (1 - 1e-12));
   EXPECT_NEAR(total_area(r.scene.faces[0]), flat, 1e-3 * flat);
-  EXPECT_LT(seconds, 5.0);
 }
 
 // ---- Triangulation (the non-planar split), in the chart ----------------------------------

@@ -1,0 +1,44 @@
+#pragma once
+
+// The rounded crossing point of two properly crossing segments: the one construction of
+// the clipper (clip.h states its error bound).
+
+#include <cmath>
+
+#include "clipper/point.h"
+
+namespace shadowgen::clipper::detail {
+
+// Segments a0-a1 and b0-b1 must cross properly (each strictly separates the other's
+// endpoints). The parameter along the shorter segment is |o0| / (|o0| + |o1|), from two
+// exact orientation determinants of opposite sign rounded once each, so it is accurate
+// to a few ulps whatever the angle. The result is kept inside both segments' boxes and
+// does not depend on the order of the two segments or of their endpoints (an edge and
+// its reverse give the same point).
+Point2 crossing_point(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1);
+
+// The order of points along the segment p -> q, for points on it or rounded crossings a
+// hair off it (within its box): by the coordinate that varies most along the segment,
+// ties by the other one, each in the segment's own direction. Exact for points on the
+// segment. The tie-break matters: two crossings less than an ulp apart in the main
+// coordinate (a line passing within rounding of a vertex crosses both of its edges)
+// still differ in the other one, and taken the wrong way round they fold the boundary.
+class AlongSegment {
+ public:
+  AlongSegment(const Point2& p, const Point2& q)
+      : by_x_(std::fabs(q.x - p.x) >= std::fabs(q.y - p.y)),
+        main_ascending_(by_x_ ? q.x > p.x : q.y > p.y),
+        other_ascending_(by_x_ ? q.y > p.y : q.x > p.x) {}
+
+  bool operator()(const Point2& a, const Point2& b) const {
+    const double ua = by_x_ ? a.x : a.y, ub = by_x_ ? b.x : b.y;
+    if (ua != ub) return main_ascending_ ? ua < ub : ua > ub;
+    const double va = by_x_ ? a.y : a.x, vb = by_x_ ? b.y : b.x;
+    return other_ascending_ ? va < vb : va > vb;
+  }
+
+ private:
+  bool by_x_, main_ascending_, other_ascending_;
+};
+
+}  // namespace shadowgen::clipper::detail

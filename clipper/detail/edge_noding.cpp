@@ -1,0 +1,253 @@
+#include "clipper/detail/edge_noding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "clipper/detail/crossing.h"
+#include "clipper/predicates.h"
+
+namespace shadowgen::clipper::detail {
+namespace {
+
+// Rounds after which noding stops. Each round works only near the points the previous
+// one constructed; a rounded crossing that makes a new contact is rare, one that makes
+// a contact again in the next round was never seen. The bound keeps the cost finite on
+// adversarial input; the assembly copes with what is left (clip.h's contract).
+constexpr int kMaxRounds = 8;
+
+using PointSet = std::unordered_set<Point2, Point2Hash>;
+
+struct EdgeKey {
+  Point2 from, to;
+  friend bool operator==(const EdgeKey&, const EdgeKey&) = default;
+};
+
+struct EdgeKeyHash {
+  std::size_t operator()(const EdgeKey& k) const noexcept {
+    const Point2Hash h;
+    return h(k.from) * 31 + h(k.to);
+  }
+};
+
+struct Splits {
+  std::vector<std::vector<Point2>> at;  // per edge, the points to split it at
+  PointSet constructed;                 // crossing points made in this round
+  std::size_t count = 0;
+
+  void add(std::size_t edge, const Point2& p, const DirectedEdge& e) {
+    if (p == e.from || p == e.to) return;
+    at[edge].push_back(p);
+    ++count;
+  }
+};
+
+// Every contact of edges i and j other than a shared endpoint.
+void contact(const std::vector<DirectedEdge>& edges, std::size_t i, std::size_t j, Splits& splits) {
+  const DirectedEdge& a = edges[i];
+  const DirectedEdge& b = edges[j];
+  const Orientation oa0 = orient2d(b.from, b.to, a.from);
+  const Orientation oa1 = orient2d(b.from, b.to, a.to);
+  if (oa0 == oa1 && oa0 != Orientation::kCollinear) return;
+  const Orientation ob0 = orient2d(a.from, a.to, b.from);
+  const Orientation ob1 = orient2d(a.from, a.to, b.to);
+  if (ob0 == ob1 && ob0 != Orientation::kCollinear) return;
+  if (oa0 != Orientation::kCollinear && oa1 != Orientation::kCollinear &&
+      ob0 != Orientation::kCollinear && ob1 != Orientation::kCollinear) {
+    const Point2 p = crossing_point(a.from, a.to, b.from, b.to);
+    splits.constructed.insert(p);
+    splits.add(i, p, a);
+    splits.add(j, p, b);
+    return;
+  }
+  // An endpoint of one lying on the other: exact, it splits the other where it is.
+  if (oa0 == Orientation::kCollinear && on_segment(b.from, b.to, a.from)) splits.add(j, a.from, b);
+  if (oa1 == Orientation::kCollinear && on_segment(b.from, b.to, a.to)) splits.add(j, a.to, b);
+  if (ob0 == Orientation::kCollinear && on_segment(a.from, a.to, b.from)) splits.add(i, b.from, a);
+  if (ob1 == Orientation::kCollinear && on_segment(a.from, a.to, b.to)) splits.add(i, b.to, a);
+}
+
+// One sweep over x calling visit(i, j) for every pair of edges whose boxes, each grown
+// by margin(edge) and kept only where select(edge), overlap.
+template <typename Margin, typename Select, typename Visit>
+void for_each_close_pair(const std::vector<DirectedEdge>& edges, Margin margin, Select select,
+                         Visit visit) {
+  struct Item {
+    double xmin, xmax, ymin, ymax;
+    std::size_t edge;
+    bool selected;
+  };
+  std::vector<Item> items;
+  items.reserve(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const DirectedEdge& e = edges[i];
+    const double d = margin(e);
+    items.push_back({std::min(e.from.x, e.to.x) - d, std::max(e.from.x, e.to.x) + d,
+                     std::min(e.from.y, e.to.y) - d, std::max(e.from.y, e.to.y) + d, i, select(e)});
+  }
+  std::sort(items.begin(), items.end(),
+            [](const Item& a, const Item& b) { return a.xmin < b.xmin; });
+  std::vector<const Item*> active;
+  for (const Item& item : items) {
+    std::size_t kept = 0;
+    for (const Item* c : active) {
+      if (c->xmax < item.xmin) continue;  // left behind by the sweep
+      active[kept++] = c;
+      if ((item.selected || c->selected) && c->ymin <= item.ymax && item.ymin <= c->ymax) {
+        visit(c->edge, item.edge);
+      }
+    }
+    active.resize(kept);
+    active.push_back(&item);
+  }
+}
+
+// Every contact between edges of which at least one has an endpoint in `moved`.
+Splits find_contacts(const std::vector<DirectedEdge>& edges, const PointSet& moved) {
+  Splits splits;
+  splits.at.resize(edges.size());
+  for_each_close_pair(
+      edges, [](const DirectedEdge&) { return 0.0; },
+      [&moved](const DirectedEdge& e) { return moved.contains(e.from) || moved.contains(e.to); },
+      [&](std::size_t i, std::size_t j) { contact(edges, i, j, splits); });
+  return splits;
+}
+
+// The edges with every split made, points ordered along each edge (crossing.h).
+std::vector<DirectedEdge> split_edges(const std::vector<DirectedEdge>& edges, Splits& splits) {
+  std::vector<DirectedEdge> out;
+  out.reserve(edges.size() + 2 * splits.count);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const DirectedEdge& e = edges[i];
+    std::vector<Point2>& points = splits.at[i];
+    if (points.empty()) {
+      out.push_back(e);
+      continue;
+    }
+    std::sort(points.begin(), points.end(), AlongSegment(e.from, e.to));
+    Point2 from = e.from;
+    for (const Point2& p : points) {
+      if (p == from) continue;
+      out.push_back({from, p});
+      from = p;
+    }
+    if (from != e.to) out.push_back({from, e.to});
+  }
+  return out;
+}
+
+// Edges running both ways along the same segment bound nothing: a zero-width strip.
+std::vector<DirectedEdge> without_opposite_pairs(const std::vector<DirectedEdge>& edges,
+                                                 std::size_t& cancelled) {
+  std::unordered_map<EdgeKey, std::vector<std::size_t>, EdgeKeyHash> open;
+  std::vector<bool> removed(edges.size(), false);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto reverse = open.find({edges[i].to, edges[i].from});
+    if (reverse != open.end() && !reverse->second.empty()) {
+      removed[reverse->second.back()] = true;
+      removed[i] = true;
+      reverse->second.pop_back();
+      cancelled += 2;
+    } else {
+      open[{edges[i].from, edges[i].to}].push_back(i);
+    }
+  }
+  std::vector<DirectedEdge> out;
+  out.reserve(edges.size() - cancelled);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (!removed[i]) out.push_back(edges[i]);
+  }
+  return out;
+}
+
+// How far a vertex may lie off an edge and still be taken as lying on it when pieces
+// computed apart are joined: the error bound of one rounded crossing (clip.h),
+// 4u·|edge| + u·|P|, doubled for the vertex's own rounding.
+double snap_distance(const DirectedEdge& e) {
+  constexpr double kUnit = 0x1p-53;
+  const double length = std::hypot(e.to.x - e.from.x, e.to.y - e.from.y);
+  const double magnitude =
+      std::max({std::fabs(e.from.x), std::fabs(e.from.y), std::fabs(e.to.x), std::fabs(e.to.y)});
+  return 2.0 * (4.0 * kUnit * length + kUnit * magnitude);
+}
+
+// Whether v lies strictly between e's ends (by projection) within snap_distance of it.
+bool snaps_onto(const Point2& v, const DirectedEdge& e) {
+  if (v == e.from || v == e.to) return false;
+  const double dx = e.to.x - e.from.x, dy = e.to.y - e.from.y;
+  const double length2 = dx * dx + dy * dy;
+  const double t = ((v.x - e.from.x) * dx + (v.y - e.from.y) * dy) / length2;
+  if (!(t > 0.0 && t < 1.0)) return false;
+  if (orient2d(e.from, e.to, v) == Orientation::kCollinear) return true;
+  return std::fabs(orient2d_value(e.from, e.to, v)) <= snap_distance(e) * std::sqrt(length2);
+}
+
+// Rounds of noding: the first over the pairs `first` selects, each later one only near
+// the points the previous round constructed.
+std::vector<DirectedEdge> node(std::vector<DirectedEdge> edges, const PointSet* first,
+                               NodingStats* stats) {
+  NodingStats local;
+  PointSet moved;
+  const PointSet* selection = first;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    Splits splits = find_contacts(edges, *selection);
+    if (splits.count == 0) break;
+    ++local.rounds;
+    local.splits += splits.count;
+    edges = split_edges(edges, splits);
+    if (splits.constructed.empty()) break;  // exact splits only: nothing moved
+    moved = std::move(splits.constructed);
+    selection = &moved;
+  }
+  std::size_t cancelled = 0;
+  edges = without_opposite_pairs(edges, cancelled);
+  local.cancelled = cancelled;
+  if (stats != nullptr) *stats = local;
+  return edges;
+}
+
+}  // namespace
+
+std::vector<DirectedEdge> node_edges(std::vector<DirectedEdge> edges, const PointSet& constructed,
+                                     NodingStats* stats) {
+  if (constructed.empty()) {
+    std::size_t cancelled = 0;
+    edges = without_opposite_pairs(edges, cancelled);
+    if (stats != nullptr) *stats = {0, 0, cancelled};
+    return edges;
+  }
+  return node(std::move(edges), &constructed, stats);
+}
+
+std::vector<DirectedEdge> snap_vertices_onto_edges(std::vector<DirectedEdge> edges,
+                                                   NodingStats* stats, PointSet* snapped) {
+  Splits splits;
+  splits.at.resize(edges.size());
+  auto snap = [&](const Point2& v, std::size_t index) {
+    const DirectedEdge& e = edges[index];
+    if (!snaps_onto(v, e)) return;
+    splits.add(index, v, e);
+    if (snapped != nullptr && orient2d(e.from, e.to, v) != Orientation::kCollinear) {
+      snapped->insert(v);
+    }
+  };
+  for_each_close_pair(
+      edges, snap_distance, [](const DirectedEdge&) { return true; },
+      [&](std::size_t i, std::size_t j) {
+        snap(edges[j].from, i);
+        snap(edges[j].to, i);
+        snap(edges[i].from, j);
+        snap(edges[i].to, j);
+      });
+  NodingStats local;
+  if (splits.count > 0) {
+    local.rounds = 1;
+    local.splits = splits.count;
+    edges = split_edges(edges, splits);
+  }
+  edges = without_opposite_pairs(edges, local.cancelled);
+  if (stats != nullptr) *stats = local;
+  return edges;
+}
+
+}  // namespace shadowgen::clipper::detail
