@@ -580,12 +580,12 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   // Rounded crossings may have moved stretches into contact: node them. And a vertex the
   // operands bring from earlier clips may lie a rounding off an edge it was made on,
   // folding the traced boundary back along that edge: snap it onto the edge so the fold
-  // cancels. Then trace.
+  // cancels (detail/snap.h). A snapped edge moved by a hair and may now cross a
+  // neighbour: node once more. Then trace.
   auto finish = [&finder](std::vector<DirectedEdge> edges) {
     edges = detail::node_edges(std::move(edges), finder.crossings);
     std::unordered_set<Point2, Point2Hash> snapped;
     edges = detail::snap_vertices_onto_edges(std::move(edges), nullptr, &snapped);
-    // A snapped edge moved by a hair and may now cross a neighbour: node once more.
     if (!snapped.empty()) edges = detail::node_edges(std::move(edges), snapped);
     return detail::assemble_polygons(edges);
   };

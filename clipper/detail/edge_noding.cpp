@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "clipper/detail/crossing.h"
+#include "clipper/detail/snap.h"
 #include "clipper/predicates.h"
 
 namespace shadowgen::clipper::detail {
@@ -17,18 +17,6 @@ namespace {
 constexpr int kMaxRounds = 8;
 
 using PointSet = std::unordered_set<Point2, Point2Hash>;
-
-struct EdgeKey {
-  Point2 from, to;
-  friend bool operator==(const EdgeKey&, const EdgeKey&) = default;
-};
-
-struct EdgeKeyHash {
-  std::size_t operator()(const EdgeKey& k) const noexcept {
-    const Point2Hash h;
-    return h(k.from) * 31 + h(k.to);
-  }
-};
 
 struct Splits {
   std::vector<std::vector<Point2>> at;  // per edge, the points to split it at
@@ -46,6 +34,26 @@ struct Splits {
 void contact(const std::vector<DirectedEdge>& edges, std::size_t i, std::size_t j, Splits& splits) {
   const DirectedEdge& a = edges[i];
   const DirectedEdge& b = edges[j];
+  // Edges of one loop share endpoints: they cannot cross, only overlap along a line. Their
+  // shared end is collinear by definition, so it is not asked (an exact zero is the slow
+  // path of orient2d).
+  const bool shares = a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to;
+  if (shares) {
+    const bool a_from_shared = a.from == b.from || a.from == b.to;
+    const bool b_from_shared = b.from == a.from || b.from == a.to;
+    const Point2& a_other = a_from_shared ? a.to : a.from;
+    const Point2& b_other = b_from_shared ? b.to : b.from;
+    if (a_other == b_other) return;  // the same segment: cancellation's business
+    if (orient2d(a.from, a.to, b_other) == Orientation::kCollinear &&
+        on_segment(a.from, a.to, b_other)) {
+      splits.add(i, b_other, a);
+    }
+    if (orient2d(b.from, b.to, a_other) == Orientation::kCollinear &&
+        on_segment(b.from, b.to, a_other)) {
+      splits.add(j, a_other, b);
+    }
+    return;
+  }
   const Orientation oa0 = orient2d(b.from, b.to, a.from);
   const Orientation oa1 = orient2d(b.from, b.to, a.to);
   if (oa0 == oa1 && oa0 != Orientation::kCollinear) return;
@@ -137,49 +145,51 @@ std::vector<DirectedEdge> split_edges(const std::vector<DirectedEdge>& edges, Sp
 }
 
 // Edges running both ways along the same segment bound nothing: a zero-width strip.
-std::vector<DirectedEdge> without_opposite_pairs(const std::vector<DirectedEdge>& edges,
+// Found by sorting on the undirected segment (no hashing, one allocation); pairs are
+// matched in input order so the result does not depend on the sort.
+std::vector<DirectedEdge> without_opposite_pairs(std::vector<DirectedEdge> edges,
                                                  std::size_t& cancelled) {
-  std::unordered_map<EdgeKey, std::vector<std::size_t>, EdgeKeyHash> open;
-  std::vector<bool> removed(edges.size(), false);
+  struct Key {
+    Point2 lo, hi;
+    bool forward;  // from == lo
+    std::size_t index;
+  };
+  std::vector<Key> keys;
+  keys.reserve(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
-    const auto reverse = open.find({edges[i].to, edges[i].from});
-    if (reverse != open.end() && !reverse->second.empty()) {
-      removed[reverse->second.back()] = true;
-      removed[i] = true;
-      reverse->second.pop_back();
-      cancelled += 2;
-    } else {
-      open[{edges[i].from, edges[i].to}].push_back(i);
+    const DirectedEdge& e = edges[i];
+    const bool forward = e.from < e.to;
+    keys.push_back({forward ? e.from : e.to, forward ? e.to : e.from, forward, i});
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    if (a.lo != b.lo) return a.lo < b.lo;
+    if (a.hi != b.hi) return a.hi < b.hi;
+    return a.index < b.index;
+  });
+  std::vector<bool> removed;
+  for (std::size_t g = 0; g < keys.size();) {
+    std::size_t end = g + 1;
+    while (end < keys.size() && keys[end].lo == keys[g].lo && keys[end].hi == keys[g].hi) ++end;
+    if (end - g >= 2) {
+      std::vector<std::size_t> ways[2];
+      for (std::size_t k = g; k < end; ++k) ways[keys[k].forward ? 1 : 0].push_back(keys[k].index);
+      const std::size_t pairs = std::min(ways[0].size(), ways[1].size());
+      if (pairs > 0 && removed.empty()) removed.assign(edges.size(), false);
+      for (std::size_t k = 0; k < pairs; ++k) {
+        removed[ways[0][k]] = true;
+        removed[ways[1][k]] = true;
+      }
+      cancelled += 2 * pairs;
     }
+    g = end;
   }
-  std::vector<DirectedEdge> out;
-  out.reserve(edges.size() - cancelled);
+  if (removed.empty()) return edges;
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < edges.size(); ++i) {
-    if (!removed[i]) out.push_back(edges[i]);
+    if (!removed[i]) edges[kept++] = edges[i];
   }
-  return out;
-}
-
-// How far a vertex may lie off an edge and still be taken as lying on it when pieces
-// computed apart are joined: the error bound of one rounded crossing (clip.h),
-// 4u·|edge| + u·|P|, doubled for the vertex's own rounding.
-double snap_distance(const DirectedEdge& e) {
-  constexpr double kUnit = 0x1p-53;
-  const double length = std::hypot(e.to.x - e.from.x, e.to.y - e.from.y);
-  const double magnitude =
-      std::max({std::fabs(e.from.x), std::fabs(e.from.y), std::fabs(e.to.x), std::fabs(e.to.y)});
-  return 2.0 * (4.0 * kUnit * length + kUnit * magnitude);
-}
-
-// Whether v lies strictly between e's ends (by projection) within snap_distance of it.
-bool snaps_onto(const Point2& v, const DirectedEdge& e) {
-  if (v == e.from || v == e.to) return false;
-  const double dx = e.to.x - e.from.x, dy = e.to.y - e.from.y;
-  const double length2 = dx * dx + dy * dy;
-  const double t = ((v.x - e.from.x) * dx + (v.y - e.from.y) * dy) / length2;
-  if (!(t > 0.0 && t < 1.0)) return false;
-  if (orient2d(e.from, e.to, v) == Orientation::kCollinear) return true;
-  return std::fabs(orient2d_value(e.from, e.to, v)) <= snap_distance(e) * std::sqrt(length2);
+  edges.resize(kept);
+  return edges;
 }
 
 // Rounds of noding: the first over the pairs `first` selects, each later one only near
@@ -199,9 +209,7 @@ std::vector<DirectedEdge> node(std::vector<DirectedEdge> edges, const PointSet* 
     moved = std::move(splits.constructed);
     selection = &moved;
   }
-  std::size_t cancelled = 0;
-  edges = without_opposite_pairs(edges, cancelled);
-  local.cancelled = cancelled;
+  edges = without_opposite_pairs(std::move(edges), local.cancelled);
   if (stats != nullptr) *stats = local;
   return edges;
 }
@@ -211,9 +219,9 @@ std::vector<DirectedEdge> node(std::vector<DirectedEdge> edges, const PointSet* 
 std::vector<DirectedEdge> node_edges(std::vector<DirectedEdge> edges, const PointSet& constructed,
                                      NodingStats* stats) {
   if (constructed.empty()) {
-    std::size_t cancelled = 0;
-    edges = without_opposite_pairs(edges, cancelled);
-    if (stats != nullptr) *stats = {0, 0, cancelled};
+    NodingStats local;
+    edges = without_opposite_pairs(std::move(edges), local.cancelled);
+    if (stats != nullptr) *stats = local;
     return edges;
   }
   return node(std::move(edges), &constructed, stats);
@@ -225,14 +233,15 @@ std::vector<DirectedEdge> snap_vertices_onto_edges(std::vector<DirectedEdge> edg
   splits.at.resize(edges.size());
   auto snap = [&](const Point2& v, std::size_t index) {
     const DirectedEdge& e = edges[index];
-    if (!snaps_onto(v, e)) return;
+    if (!within_snap_distance(v, e.from, e.to)) return;
     splits.add(index, v, e);
     if (snapped != nullptr && orient2d(e.from, e.to, v) != Orientation::kCollinear) {
       snapped->insert(v);
     }
   };
   for_each_close_pair(
-      edges, snap_distance, [](const DirectedEdge&) { return true; },
+      edges, [](const DirectedEdge& e) { return snap_distance(e.from, e.to); },
+      [](const DirectedEdge&) { return true; },
       [&](std::size_t i, std::size_t j) {
         snap(edges[j].from, i);
         snap(edges[j].to, i);
@@ -244,8 +253,8 @@ std::vector<DirectedEdge> snap_vertices_onto_edges(std::vector<DirectedEdge> edg
     local.rounds = 1;
     local.splits = splits.count;
     edges = split_edges(edges, splits);
+    edges = without_opposite_pairs(std::move(edges), local.cancelled);
   }
-  edges = without_opposite_pairs(edges, local.cancelled);
   if (stats != nullptr) *stats = local;
   return edges;
 }

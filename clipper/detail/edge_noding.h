@@ -36,8 +36,8 @@ std::vector<DirectedEdge> node_edges(std::vector<DirectedEdge> edges,
 
 // For edges of pieces computed apart (merge.h), which meet at T-junctions and along
 // seams whose vertices were rounded on either side of the common line: every edge is
-// split at each vertex lying on it or within one rounding of it (twice the crossing
-// error bound of clip.h, 8u·|edge| + 2u·|P|), then opposite edges cancel. No point is
+// split at each vertex lying on it or within snap distance of it (snap.h), then opposite
+// edges cancel. No point is
 // constructed, so nothing new can come into contact; an edge moves by at most that
 // distance. (Noding such a seam at its rounded crossings instead would cut it into a
 // chain of slivers.)
