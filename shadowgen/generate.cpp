@@ -14,6 +14,7 @@
 #include "clipper/merge.h"
 #include "hsr/hidden_surface.h"
 #include "shadowgen/detail/coplanar_groups.h"
+#include "shadowgen/detail/frusta_union.h"
 #include "shadowgen/detail/light_views.h"
 
 namespace shadowgen {
@@ -98,7 +99,8 @@ class BackProjector {
 std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Light& light,
                                                   LightStats& stats) {
   const std::size_t n = parts.polygons.size();
-  std::vector<std::vector<hsr::Polygon3>> lit_by_part(n);
+  // Per part, the lit polygons grouped by the light view that saw them.
+  std::vector<std::vector<std::vector<hsr::Polygon3>>> lit_by_part(n);
 
   // Model only what the light requires: faces wholly beyond range.end are left out.
   std::vector<std::size_t> considered;
@@ -159,9 +161,10 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
       clipper::PolygonSet2 lit = std::move(seen[k]);
       for (auto& q : extra[k]) lit.push_back(std::move(q));
       const BackProjector back(view, polygons[k], planes[k]);
+      std::vector<hsr::Polygon3>& seen_here = lit_by_part[considered[k]].emplace_back();
       for (const clipper::PolygonWithHoles2& p : clipper::merge_adjacent(lit)) {
         hsr::Polygon3 detail = back.lift(p);
-        if (detail.outer.size() >= 3) lit_by_part[considered[k]].push_back(std::move(detail));
+        if (detail.outer.size() >= 3) seen_here.push_back(std::move(detail));
       }
     }
   }
@@ -170,7 +173,14 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t f = parts.face[i];
     if (lit_by_face.size() <= f) lit_by_face.resize(f + 1);
-    for (hsr::Polygon3& p : lit_by_part[i]) {
+    std::vector<hsr::Polygon3> lit;
+    if (lit_by_part[i].size() == 1) {
+      lit = std::move(lit_by_part[i][0]);
+    } else if (lit_by_part[i].size() > 1) {
+      // Lit through several frusta of a point light: one region, not overlapping pieces.
+      lit = detail::unite_views(lit_by_part[i], parts.planes[i]);
+    }
+    for (hsr::Polygon3& p : lit) {
       ++stats.lit_polygons;
       lit_by_face[f].push_back(std::move(p));
     }

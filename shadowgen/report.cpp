@@ -1,10 +1,14 @@
 #include "shadowgen/report.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "shadowgen/area.h"
 #include "shadowgen/detail/json_text.h"
@@ -69,6 +73,96 @@ void append_totals(std::string& out, const Sum& area, const Sum& lit_area) {
   append_json_number(out, fraction(lit_area.value(), area.value()));
 }
 
+// A number for people: `precision` significant digits (general) or decimals (fixed),
+// independent of the C locale.
+std::string readable_number(double value, std::chars_format format, int precision) {
+  std::array<char, 64> buffer{};
+  char* const begin = buffer.data();
+  const char* end = std::to_chars(begin, begin + buffer.size(), value, format, precision).ptr;
+  return std::string(begin, static_cast<std::size_t>(end - begin));
+}
+
+std::string readable_area(double value) {
+  return readable_number(value, std::chars_format::general, 6);
+}
+
+std::string readable_fraction(double value) {
+  return readable_number(value, std::chars_format::fixed, 4);
+}
+
+// An id on one line of a table: control characters escaped (\n, \r, \t, \xHH).
+std::string table_id(std::string_view id) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const char c : id) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// Columns as wide as their widest cell, counted in UTF-8 code points (continuation bytes
+// 10xxxxxx take no room), so ids in any script line up in a monospaced terminal.
+std::size_t display_width(std::string_view text) {
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xc0) != 0x80;
+  }));
+}
+
+class TextTable {
+ public:
+  // One entry per column: true where the column is right-aligned (numbers).
+  explicit TextTable(std::vector<bool> right_aligned) : right_aligned_(std::move(right_aligned)) {}
+
+  void add(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+
+  void append_to(std::string& out) const {
+    std::vector<std::size_t> width(right_aligned_.size(), 0);
+    for (const auto& row : rows_) {
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        width[c] = std::max(width[c], display_width(row[c]));
+      }
+    }
+    for (const auto& row : rows_) {
+      std::string line;
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        const std::string padding(width[c] - display_width(row[c]), ' ');
+        if (c > 0) line += "  ";
+        line += right_aligned_[c] ? padding + row[c] : row[c] + padding;
+      }
+      line.erase(line.find_last_not_of(' ') + 1);
+      out += line;
+      out += '\n';
+    }
+  }
+
+ private:
+  std::vector<bool> right_aligned_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+// The lit polygons are the lit region up to rounding, which can put a fully lit face's
+// polygons a hair over the face's own area (lit fraction 1.0000000000000007). An excess
+// within 2^-40 of the area (far above such rounding, far below any real error) is
+// clamped, so a report never shows more lit than there is; a larger one is left visible.
+double clamped_lit_area(double lit, double face_area) {
+  constexpr double kRoundingExcess = 0x1p-40;
+  if (lit > face_area && lit - face_area <= kRoundingExcess * face_area) return face_area;
+  return lit;
+}
+
 }  // namespace
 
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
@@ -91,7 +185,7 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
       row.face = f;
       row.light = l;
       row.area = face_area;
-      row.lit_area = area(shadowed.lit[f][l]);
+      row.lit_area = clamped_lit_area(area(shadowed.lit[f][l]), face_area);
       row.lit_fraction = fraction(row.lit_area, face_area);
       rows.push_back(row);
     }
@@ -157,6 +251,59 @@ std::string report_json(const ShadowedScene& shadowed) {
   out += scene.lights.empty() ? "],\n  \"totals\": {" : "\n  ],\n  \"totals\": {";
   append_totals(out, total_area, total_lit_area);
   out += "}\n}\n";
+  return out;
+}
+
+std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
+  const std::vector<ReportRow> rows = report_rows(shadowed);
+  const Scene& scene = shadowed.scene;
+  const std::size_t lights = scene.lights.size();
+  std::vector<Sum> light_area(lights);
+  std::vector<Sum> light_lit_area(lights);
+  std::vector<std::size_t> lit_faces(lights, 0);
+  for (const ReportRow& row : rows) {
+    light_area[row.light].add(row.area);
+    light_lit_area[row.light].add(row.lit_area);
+    if (row.lit_area > 0.0) ++lit_faces[row.light];
+  }
+
+  std::string out;
+  TextTable totals({false, true, true, true, true, true});
+  totals.add({"light_id", "faces", "lit_faces", "area", "lit_area", "lit_fraction"});
+  for (std::size_t l = 0; l < lights; ++l) {
+    const double area_value = light_area[l].value();
+    const double lit_value = light_lit_area[l].value();
+    totals.add({table_id(scene.lights[l].id), std::to_string(scene.faces.size()),
+                std::to_string(lit_faces[l]), readable_area(area_value), readable_area(lit_value),
+                readable_fraction(fraction(lit_value, area_value))});
+  }
+  totals.append_to(out);
+  if (lights == 0) out += "(no lights)\n";
+  if (top == 0) return out;
+
+  for (std::size_t l = 0; l < lights; ++l) {
+    // report_rows lists faces in scene order for each light, so a stable sort keeps ties
+    // in scene order.
+    std::vector<const ReportRow*> shadowed_rows;
+    for (const ReportRow& row : rows) {
+      if (row.light == l && row.area > 0.0) shadowed_rows.push_back(&row);
+    }
+    std::stable_sort(
+        shadowed_rows.begin(), shadowed_rows.end(),
+        [](const ReportRow* a, const ReportRow* b) { return a->lit_fraction < b->lit_fraction; });
+    const std::size_t shown = std::min(top, shadowed_rows.size());
+    out += "\nmost shadowed faces under " + table_id(scene.lights[l].id) +
+           " (lowest lit fraction first, " + std::to_string(shown) + " of " +
+           std::to_string(shadowed_rows.size()) + ")\n";
+    TextTable faces({false, true, true, true});
+    faces.add({"face_id", "area", "lit_area", "lit_fraction"});
+    for (std::size_t i = 0; i < shown; ++i) {
+      const ReportRow& row = *shadowed_rows[i];
+      faces.add({table_id(scene.faces[row.face].id), readable_area(row.area),
+                 readable_area(row.lit_area), readable_fraction(row.lit_fraction)});
+    }
+    faces.append_to(out);
+  }
   return out;
 }
 

@@ -3,6 +3,7 @@
 // Shadow area analysis: area, lit area and lit fraction per (face, light), from the
 // shadowed database alone.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,9 @@ struct ReportRow {
 
 // One row per (face, light): faces in scene order, lights in scene order. `area` is the
 // face's area (holes removed, shadowgen::area of its parts), `lit_area` that of its lit
-// polygons for the light. Throws std::invalid_argument when `lit` is not shaped
-// [face][light].
+// polygons for the light, never above `area` by rounding (an excess within 2^-40 of the
+// area is clamped, so 0 <= lit_fraction <= 1; anything larger is left to show). Throws
+// std::invalid_argument when `lit` is not shaped [face][light].
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed);
 
 // The spec's CSV: header face_id,light_id,area,lit_area,lit_fraction; numbers with %.17g;
@@ -49,5 +51,25 @@ std::string report_csv(const ShadowedScene& shadowed);
 // compensated (Neumaier), fractions are 0 where the area is 0, and numbers are the
 // shortest form that reads back to the same double.
 std::string report_json(const ShadowedScene& shadowed);
+
+// A summary for people to read, in aligned columns (ids left, numbers right, two spaces
+// between columns, no trailing blanks):
+//
+//   light_id  faces  lit_faces  area  lit_area  lit_fraction
+//   sun           3          2   114        98        0.8596
+//
+//   most shadowed faces under sun (lowest lit fraction first, 2 of 2)
+//   face_id  area  lit_area  lit_fraction
+//   ground     98        82        0.8367
+//   roof       16        16        1.0000
+//
+// First one row per light (scene order) with the totals of report_json: `faces` counts the
+// scene's faces, `lit_faces` those with some lit area. Then, per light, its `top` faces of
+// lowest lit fraction, ties in scene order; zero-area faces are left out there (they have
+// nothing to shadow), and `top` = 0 leaves these lists out. Areas have 6 significant
+// digits, fractions 4 decimals (this is for reading; report_csv is for reading back).
+// Control characters in ids are shown escaped (\n, \xHH) so rows stay on one line;
+// widths count UTF-8 code points.
+std::string report_table(const ShadowedScene& shadowed, std::size_t top = 10);
 
 }  // namespace shadowgen

@@ -34,8 +34,10 @@ struct LightRange {
 struct Light {
   std::string id;
   LightType type = LightType::kDirectional;
-  glm::dvec3 direction{0.0, 0.0, -1.0};  // directional: the way the light travels
-  glm::dvec3 position{0.0};              // point
+  // directional: the way the light travels; the reader scales it by a power of two
+  // (exact) so that its largest component lies in [0.5, 1).
+  glm::dvec3 direction{0.0, 0.0, -1.0};
+  glm::dvec3 position{0.0};  // point
   glm::dvec3 intensity{1.0, 1.0, 1.0};
   std::optional<LightRange> range;  // point lights only
 };

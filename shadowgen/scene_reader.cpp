@@ -18,6 +18,16 @@ namespace shadowgen {
 
 namespace {
 
+// Only a direction's direction matters (the spec: it need not be unit length). Scaled by
+// a power of two, which is exact, so that its largest component lies in [0.5, 1): then
+// 1e-300 or 1e300 long directions neither underflow nor overflow in dot products.
+glm::dvec3 power_of_two_scaled(const glm::dvec3& v) {
+  const double largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return {std::ldexp(v.x, -exponent), std::ldexp(v.y, -exponent), std::ldexp(v.z, -exponent)};
+}
+
 using nlohmann::json;
 
 constexpr std::string_view kFormat = "shadowgen-scene/1";
@@ -271,6 +281,7 @@ class SceneParser {
       top.key("format").fail("unsupported format '" + format + "'; this reader reads '" +
                              std::string(kFormat) + "'");
     }
+    check_has_faces(root, top);
     if (const json* polygons = optional_member(root, "polygons")) {
       expect_array(*polygons, top.key("polygons"));
       for (std::size_t i = 0; i < polygons->size(); ++i) {
@@ -299,6 +310,22 @@ class SceneParser {
   }
 
  private:
+  // A scene has faces from "polygons", "meshes" or both (either may be empty); a
+  // misspelt key must not pass for an empty scene. Other keys are extensions (the spec
+  // allows new optional keys) and are ignored; they are named when neither is present.
+  static void check_has_faces(const json& root, const Where& top) {
+    if (root.contains("polygons") || root.contains("meshes")) return;
+    static constexpr std::string_view kKnown[] = {"format", "lights", "views"};
+    std::string unknown;
+    for (const auto& [key, value] : root.items()) {
+      if (std::find(std::begin(kKnown), std::end(kKnown), key) != std::end(kKnown)) continue;
+      unknown += (unknown.empty() ? "'" : ", '") + key + "'";
+    }
+    top.fail("a scene needs \"polygons\" or \"meshes\" (either may be empty); neither is " +
+             std::string("present") +
+             (unknown.empty() ? std::string() : "; other keys found: " + unknown));
+  }
+
   json parse_json() const {
     try {
       return json::parse(text_);
@@ -424,6 +451,7 @@ class SceneParser {
       light.type = LightType::kDirectional;
       light.direction = point(member(entry, "direction", at), at.key("direction"));
       if (light.direction == glm::dvec3(0.0)) at.key("direction").fail("must not be zero");
+      light.direction = power_of_two_scaled(light.direction);
       if (optional_member(entry, "range") != nullptr) {
         at.key("range").fail("a range applies to point lights only");
       }

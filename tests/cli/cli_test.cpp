@@ -2,10 +2,12 @@
 // written to a temporary folder, and its exit code, output and files are checked.
 
 #include <gtest/gtest.h>
+#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +35,17 @@ constexpr const char* kTinyScene = R"({
     {"id": "occluder", "outer": [[2,3,1],[6,3,1],[6,7,1],[2,7,1]], "holes": []}
   ],
   "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
+})";
+
+// Two lights on a tilted plate and a post: a second scene that differs from the first.
+constexpr const char* kPlateScene = R"({
+  "format": "shadowgen-scene/1",
+  "polygons": [
+    {"id": "plate", "outer": [[0,0,0],[8,0,0],[8,6,1],[0,6,1]], "holes": []},
+    {"id": "post", "outer": [[3,2,2],[5,2,2],[5,3,2],[3,3,2]], "holes": []}
+  ],
+  "lights": [{"id": "noon", "type": "directional", "direction": [0.1,0.2,-1]},
+             {"id": "bulb", "type": "point", "position": [4,3,6]}]
 })";
 
 constexpr const char* kTinyCsv =
@@ -100,11 +113,47 @@ class Cli : public ::testing::Test {
     return result;
   }
 
-  // The files in the test's folder (not the run/ folder): what the command left behind.
-  std::vector<std::string> files() const {
+  // Runs shadowgen with a pseudo-terminal as its stdin, stdout and stderr, as when a person
+  // runs it; `out` gets all it printed, `err` stays empty.
+  Outcome run_on_terminal(const std::vector<std::string>& args) const {
+    std::vector<std::string> argv_text = {SHADOWGEN_EXECUTABLE};
+    argv_text.insert(argv_text.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& arg : argv_text) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+
+    int terminal = -1;
+    const pid_t child = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+    if (child == 0) {
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    Outcome result;
+    if (child < 0) return result;
+    char buffer[4096];
+    for (;;) {
+      const ssize_t n = ::read(terminal, buffer, sizeof buffer);
+      if (n > 0) {
+        result.out.append(buffer, static_cast<std::size_t>(n));
+      } else if (n < 0 && errno == EINTR) {
+        continue;
+      } else {
+        break;  // EIO once the child has closed its side
+      }
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ::close(terminal);
+    result.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+  }
+
+  // The files in `folder` (default: the test's folder, without its run/ folder): what the
+  // command left behind.
+  std::vector<std::string> files(const fs::path& folder = {}) const {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      if (entry.path().filename() != "run") names.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(folder.empty() ? dir_ : folder)) {
+      if (entry.path() != dir_ / "run") names.push_back(entry.path().filename().string());
     }
     std::sort(names.begin(), names.end());
     return names;
@@ -270,14 +319,166 @@ TEST_F(Cli, HelpForEachSubcommand) {
 
   const Outcome generate = run({"generate", "--help"});
   EXPECT_EQ(generate.code, 0);
-  for (const char* option : {"--output", "--strict", "--threads", "--quiet"}) {
+  for (const char* option : {"--output", "--strict", "--threads", "--quiet", "Several scenes",
+                             "a folder", "NAME.shadowed.json", "progress"}) {
     EXPECT_NE(generate.out.find(option), std::string::npos) << option << "\n" << generate.out;
   }
   const Outcome report = run({"report", "--help"});
   EXPECT_EQ(report.code, 0);
-  for (const char* option : {"--format", "--output", "--strict"}) {
+  for (const char* option : {"--format", "--output", "--strict", "table", "--top"}) {
     EXPECT_NE(report.out.find(option), std::string::npos) << option << "\n" << report.out;
   }
+}
+
+TEST_F(Cli, SeveralScenesGiveTheDatabasesOfEachAlone) {
+  const fs::path tiny = write("tiny.json", kTinyScene);
+  const fs::path plate = write("plate.json", kPlateScene);
+  ASSERT_EQ(run({"generate", tiny.string(), "-o", (dir_ / "tiny-alone.json").string()}).code, 0);
+  ASSERT_EQ(run({"generate", plate.string(), "-o", (dir_ / "plate-alone.json").string()}).code, 0);
+
+  const fs::path out = dir_ / "out" / "databases";  // made, parents included
+  const Outcome both =
+      run({"generate", tiny.string(), plate.string(), "-o", out.string(), "--threads", "2"});
+  ASSERT_EQ(both.code, 0) << both.err;
+  EXPECT_EQ(both.out, "");
+  EXPECT_EQ(both.err, "");  // stderr is a file here: no progress line
+  EXPECT_EQ(files(out), (std::vector<std::string>{"plate.shadowed.json", "tiny.shadowed.json"}));
+  EXPECT_EQ(contents(out / "tiny.shadowed.json"), contents(dir_ / "tiny-alone.json"));
+  EXPECT_EQ(contents(out / "plate.shadowed.json"), contents(dir_ / "plate-alone.json"));
+  EXPECT_NE(contents(out / "tiny.shadowed.json"), contents(out / "plate.shadowed.json"));
+
+  // An existing folder is fine, and the databases in it are replaced whole.
+  const Outcome again = run({"generate", plate.string(), tiny.string(), "-o", out.string()});
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(contents(out / "tiny.shadowed.json"), contents(dir_ / "tiny-alone.json"));
+  EXPECT_EQ(files(out), (std::vector<std::string>{"plate.shadowed.json", "tiny.shadowed.json"}));
+}
+
+TEST_F(Cli, ABadSceneStopsTheRunAndLeavesTheDatabasesBeforeIt) {
+  const fs::path good = write("good.json", kTinyScene);
+  const fs::path bad = write("bad.json", R"({
+    "format": "shadowgen-scene/1",
+    "polygons": [{"id": "stub", "outer": [[0,0,0],[1,0,0]], "holes": []}],
+    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
+  })");
+  const fs::path later = write("later.json", kPlateScene);
+  const fs::path out = dir_ / "out";
+  const Outcome run_out =
+      run({"generate", good.string(), bad.string(), later.string(), "-o", out.string()});
+  EXPECT_EQ(run_out.code, 1);
+  EXPECT_EQ(run_out.err.rfind("shadowgen: " + bad.string() + ": ", 0), 0u) << run_out.err;
+  EXPECT_NE(run_out.err.find("stub"), std::string::npos) << run_out.err;
+  EXPECT_EQ(std::count(run_out.err.begin(), run_out.err.end(), '\n'), 1) << run_out.err;
+  // The first scene's database is whole; nothing for the bad scene (no temporary file
+  // either) nor for the one after it.
+  EXPECT_EQ(files(out), std::vector<std::string>{"good.shadowed.json"});
+  ASSERT_EQ(run({"generate", good.string(), "-o", (dir_ / "alone.json").string()}).code, 0);
+  EXPECT_EQ(contents(out / "good.shadowed.json"), contents(dir_ / "alone.json"));
+
+  // A bad first scene: nothing is written, not even the folder.
+  const Outcome first =
+      run({"generate", bad.string(), good.string(), "-o", (dir_ / "other").string()});
+  EXPECT_EQ(first.code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "other"));
+}
+
+TEST_F(Cli, SeveralScenesNeedDistinctNamesAndAFolder) {
+  const fs::path a = write("a.json", kTinyScene);
+  fs::create_directories(dir_ / "sub");
+  const fs::path other_a = write("sub/a.json", kPlateScene);
+  const fs::path b = write("b.json", kPlateScene);
+
+  const Outcome clash =
+      run({"generate", a.string(), other_a.string(), "-o", (dir_ / "out").string()});
+  EXPECT_EQ(clash.code, 2);
+  EXPECT_NE(clash.err.find("a.shadowed.json"), std::string::npos) << clash.err;
+  const Outcome twice = run({"generate", a.string(), a.string(), "-o", (dir_ / "out").string()});
+  EXPECT_EQ(twice.code, 2);
+
+  const fs::path file = write("file.json", "not a folder");
+  const Outcome not_folder = run({"generate", a.string(), b.string(), "-o", file.string()});
+  EXPECT_EQ(not_folder.code, 2);
+  EXPECT_NE(not_folder.err.find("folder"), std::string::npos) << not_folder.err;
+  EXPECT_EQ(contents(file), "not a folder");
+
+  // A database named like an input scene would replace it.
+  const fs::path shadowed_name = write("a.shadowed.json", kPlateScene);
+  const Outcome replace =
+      run({"generate", a.string(), shadowed_name.string(), "-o", dir_.string()});
+  EXPECT_EQ(replace.code, 2);
+  EXPECT_EQ(contents(shadowed_name), kPlateScene);
+
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  EXPECT_EQ(files(),
+            (std::vector<std::string>{"a.json", "a.shadowed.json", "b.json", "file.json", "sub"}));
+}
+
+TEST_F(Cli, ProgressOnATerminalOnlyAndNotWhenQuiet) {
+  const fs::path scene = write("scene.json", kPlateScene);
+  // Not a terminal (stderr is a file): nothing, with or without --quiet.
+  const Outcome piped = run({"generate", scene.string(), "-o", (dir_ / "a.json").string()});
+  ASSERT_EQ(piped.code, 0) << piped.err;
+  EXPECT_EQ(piped.err, "");
+  const Outcome quiet_piped =
+      run({"generate", scene.string(), "-o", (dir_ / "b.json").string(), "--quiet"});
+  ASSERT_EQ(quiet_piped.code, 0) << quiet_piped.err;
+  EXPECT_EQ(quiet_piped.err, "");
+
+  // A terminal: one line redrawn in place, ending with both lights done.
+  const Outcome shown =
+      run_on_terminal({"generate", scene.string(), "-o", (dir_ / "c.json").string()});
+  ASSERT_EQ(shown.code, 0) << shown.out;
+  std::string line_start = scene.string();  // "\r<scene>: lights ", built up piece by
+  line_start.insert(0, 1, '\r');            // piece for GCC 12's false -Wrestrict
+  line_start += ": lights ";
+  EXPECT_EQ(shown.out.rfind(line_start + "0/2, ", 0), 0u) << shown.out;
+  EXPECT_NE(shown.out.find(line_start + "2/2, last light "), std::string::npos) << shown.out;
+  EXPECT_NE(shown.out.find(" faces, "), std::string::npos) << shown.out;
+  EXPECT_EQ(std::count(shown.out.begin(), shown.out.end(), '\n'), 1) << shown.out;
+  EXPECT_EQ(contents(dir_ / "c.json"), contents(dir_ / "a.json"));
+
+  // --quiet on a terminal: nothing.
+  const Outcome quiet =
+      run_on_terminal({"generate", scene.string(), "-o", (dir_ / "d.json").string(), "--quiet"});
+  ASSERT_EQ(quiet.code, 0) << quiet.out;
+  EXPECT_EQ(quiet.out, "");
+  EXPECT_EQ(contents(dir_ / "d.json"), contents(dir_ / "a.json"));
+}
+
+TEST_F(Cli, ReportAsATable) {
+  const fs::path scene = write("scene.json", kPlateScene);
+  const Outcome table = run({"report", scene.string(), "--format", "table"});
+  ASSERT_EQ(table.code, 0) << table.err;
+  EXPECT_EQ(table.err, "");
+  const std::string header = table.out.substr(0, table.out.find('\n'));
+  EXPECT_EQ(header.rfind("light_id  faces  lit_faces  ", 0), 0u) << table.out;
+  EXPECT_NE(header.find("  area  lit_area  lit_fraction"), std::string::npos) << table.out;
+  for (const char* id : {"noon", "bulb", "plate", "post"}) {
+    EXPECT_NE(table.out.find(id), std::string::npos) << id << "\n" << table.out;
+  }
+  EXPECT_NE(table.out.find("most shadowed faces under noon (lowest lit fraction first, 2 of 2)"),
+            std::string::npos)
+      << table.out;
+
+  // From the database the same; --top 1 lists one face per light; to a file as the others.
+  const fs::path db = dir_ / "db.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  EXPECT_EQ(run({"report", db.string(), "--format", "table"}).out, table.out);
+  const Outcome top = run({"report", db.string(), "--format", "table", "--top", "1", "-o",
+                           (dir_ / "table.txt").string()});
+  ASSERT_EQ(top.code, 0) << top.err;
+  EXPECT_EQ(top.out, "");
+  EXPECT_NE(contents(dir_ / "table.txt").find("(lowest lit fraction first, 1 of 2)"),
+            std::string::npos);
+
+  // csv stays the default, and --top belongs to the table.
+  EXPECT_EQ(
+      run({"report", db.string()}).out.rfind("face_id,light_id,area,lit_area,lit_fraction\n", 0),
+      0u);
+  const Outcome misplaced = run({"report", db.string(), "--top", "3"});
+  EXPECT_EQ(misplaced.code, 2);
+  EXPECT_NE(misplaced.err.find("--top"), std::string::npos) << misplaced.err;
+  EXPECT_EQ(run({"report", db.string(), "--format", "table", "--top", "-1"}).code, 2);
 }
 
 }  // namespace

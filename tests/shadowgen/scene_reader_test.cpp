@@ -83,8 +83,15 @@ void write_table_meshes() {
   write_file(d / "bowtie.obj", "v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n");
 }
 
+// A scene with `members`; "polygons": [] is added when neither polygons nor meshes are
+// given, since a scene needs one of them.
 std::string scene(const std::string& members) {
-  return R"({"format": "shadowgen-scene/1")" + (members.empty() ? "" : ", " + members) + "}";
+  std::string all = members;
+  if (all.find("\"polygons\"") == std::string::npos &&
+      all.find("\"meshes\"") == std::string::npos) {
+    all = R"("polygons": [])" + (all.empty() ? "" : ", " + all);
+  }
+  return R"({"format": "shadowgen-scene/1", )" + all + "}";
 }
 
 const char* const kSquare = "[[0,0,0],[10,0,0],[10,10,0],[0,10,0]]";
@@ -422,7 +429,8 @@ TEST(SceneReader, ReadsTheSpecExample) {
   ASSERT_EQ(r.scene.lights.size(), 3u);
   const Light& sun = r.scene.lights[0];
   EXPECT_EQ(sun.type, LightType::kDirectional);
-  EXPECT_EQ(sun.direction, glm::dvec3(-0.3, 0.2, -1.0));
+  // Scaled by 2^-1 (exactly) so that the largest component lies in [0.5, 1).
+  EXPECT_EQ(sun.direction, glm::dvec3(-0.15, 0.1, -0.5));
   EXPECT_FALSE(sun.range);
   const Light& lamp = r.scene.lights[1];
   EXPECT_EQ(lamp.type, LightType::kPoint);
@@ -441,6 +449,23 @@ TEST(SceneReader, ReadsTheSpecExample) {
   EXPECT_EQ(r.scene.views[1].fov_deg, 45.0);
 }
 
+TEST(SceneReader, DirectionsOfAnyLengthKeepTheirDirectionExactly) {
+  for (const char* d :
+       {"[0, 0, -1e-300]", "[1e-200, 0, -1e-200]", "[1e300, 1e300, -1e300]", "[3, -4, 12]"}) {
+    SCOPED_TRACE(d);
+    const ReadResult r = parse(
+        scene(std::string(R"("lights": [{"id": "sun", "type": "directional", "direction": )") + d +
+              "}]"));
+    const glm::dvec3 v = r.scene.lights[0].direction;
+    const double largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    EXPECT_GE(largest, 0.5);
+    EXPECT_LT(largest, 1.0);
+  }
+  const ReadResult r =
+      parse(scene(R"("lights": [{"id": "sun", "type": "directional", "direction": [3, -4, 12]}])"));
+  EXPECT_EQ(r.scene.lights[0].direction, glm::dvec3(3.0 / 16, -4.0 / 16, 12.0 / 16));
+}
+
 TEST(SceneReader, RangeDefaults) {
   const ReadResult r = parse(scene(
       R"("lights": [{"id": "l", "type": "point", "position": [0,0,0], "range": {"end": 3}}])"));
@@ -455,6 +480,19 @@ TEST(SceneReader, EmptySceneIsValid) {
   EXPECT_TRUE(r.scene.faces.empty());
   EXPECT_TRUE(r.scene.lights.empty());
   EXPECT_TRUE(r.scene.views.empty());
+}
+
+TEST(SceneReader, ASceneWithoutPolygonsOrMeshesIsAnErrorNamingWhatItHas) {
+  // "polygon" for "polygons": not an empty scene but a mistake.
+  try {
+    parse(R"({"format": "shadowgen-scene/1", "polygon": [], "lights": []})");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs \"polygons\" or \"meshes\""), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("'polygon'"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(parse(R"({"format": "shadowgen-scene/1", "meshes": []})").scene.faces.empty());
 }
 
 TEST(SceneReader, FacesComePolygonsFirstThenMeshesInFileOrder) {

@@ -1,0 +1,25 @@
+#pragma once
+
+// Joining what several light views saw of one face part. A point light looks through up
+// to six frusta; a part that spans a seam between two of them is lit in pieces, one per
+// view, each cut at the seam in its own view's image. The two cuts are rounded apart, so
+// the pieces may overlap or leave a gap a rounding wide, and summing their areas can give
+// a lit area above the part's own (a lit fraction of 1.0000000000000029). Here the
+// pieces are united in the part's plane chart (plane_chart.h), exactly as regions: each
+// view's pieces minus what earlier views already lit, then merged along shared edges.
+
+#include <span>
+#include <vector>
+
+#include "hsr/polygon3.h"
+
+namespace shadowgen::detail {
+
+// `per_view`: the lit polygons of one part, grouped by the view that saw them. Returns the
+// union as polygons with holes in the part's plane, outer loops counter-clockwise seen
+// from the side `plane.normal` points to. Vertices that came in are passed through
+// unchanged; new ones (where pieces of different views cross) are put on the plane.
+std::vector<hsr::Polygon3> unite_views(std::span<const std::vector<hsr::Polygon3>> per_view,
+                                       const hsr::Plane3& plane);
+
+}  // namespace shadowgen::detail

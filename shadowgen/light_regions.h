@@ -1,0 +1,50 @@
+#pragma once
+
+// The partition of a face by the set of lights that reach it: where several lights shine,
+// the paper's lit details of each light overlap, and a renderer or an OBJ file wants the
+// pieces lit by exactly one combination. Computed from the shadowed database alone.
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "hsr/polygon3.h"
+#include "shadowgen/scene.h"
+#include "shadowgen/shadowed_scene.h"
+
+namespace shadowgen {
+
+// One region of a face lit by exactly the lights in `lights` (indices into scene.lights,
+// ascending; empty: in shadow from every light). Polygons in the face's plane(s), scene
+// coordinates, like the lit detail polygons: outer loops counter-clockwise seen from the
+// face's front side, holes the other way.
+struct LightRegion {
+  std::vector<std::size_t> lights;
+  std::vector<hsr::Polygon3> polygons;
+};
+
+// Partition of face `face` of `shadowed` into regions by the set of lights reaching them:
+// disjoint, covering the face exactly, no region with an empty polygon list, sets in a
+// deterministic order (empty set first, then by size, then lexicographically).
+//
+// Method: each part of the face (one, or the triangles of a non-planar polygon) is taken
+// to its exact plane chart (shadowgen/detail/plane_chart.h); the part's region is split
+// by each light's lit polygons in turn with the Weiler–Atherton clipper, every piece
+// going to "inside" (the light joins its set) or "outside". A lit polygon belongs to the
+// part whose plane it lies nearest (to every part tied with that one, for coplanar
+// parts); each part keeps only what lies within it. Chart points that are vertices of
+// the part are lifted back to those exact 3D points; every other point (lit polygons'
+// vertices, which generation leaves within rounding of the plane, and new crossings)
+// gets the part's plane's coordinate along the dropped axis. So the regions' areas
+// sum to the face's area, and the regions containing a light to its lit area, up to the
+// clipper's rounding of crossing points (clipper/clip.h). Faces or parts without area
+// give no regions. Throws std::invalid_argument when `face` is out of range or `lit` is
+// not shaped [face][light].
+std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_t face);
+
+// "sun+lamp" style name of a light set from the lights' ids, in the set's order; "shadow"
+// for the empty set. Ids are used as they are (an id holding '+' makes names ambiguous).
+std::string light_set_name(const Scene& scene, std::span<const std::size_t> lights);
+
+}  // namespace shadowgen

@@ -1,0 +1,259 @@
+#include "shadowgen/obj_export.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <glm/geometric.hpp>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+#include "clipper/predicates.h"
+#include "shadowgen/area.h"
+#include "shadowgen/detail/plane_chart.h"
+#include "shadowgen/detail/triangulate.h"
+#include "shadowgen/light_regions.h"
+
+namespace shadowgen {
+namespace {
+
+using LightSet = std::vector<std::size_t>;
+
+struct LightSetLess {
+  bool operator()(const LightSet& a, const LightSet& b) const {
+    if (a.size() != b.size()) return a.size() < b.size();
+    return a < b;
+  }
+};
+
+// Shortest form that reads back to the same double (std::to_chars); OBJ readers take
+// plain integers and exponents alike.
+void append_number(std::string& out, double value) {
+  std::array<char, 32> buffer{};  // 24 characters suffice for any double
+  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
+  out.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+}
+
+void append_vector(std::string& out, std::string_view tag, const glm::dvec3& v) {
+  out += tag;
+  for (int i = 0; i < 3; ++i) {
+    out += ' ';
+    append_number(out, v[i]);
+  }
+  out += '\n';
+}
+
+// Exact-value keys: vertices and normals are shared within a face only when bit-equal
+// (up to the sign of zero).
+using Key = std::tuple<double, double, double>;
+Key key_of(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+// One face's vertices and normals, numbered globally from `first_vertex` and
+// `first_normal` (0-based here, printed 1-based).
+class FaceBlock {
+ public:
+  FaceBlock(std::size_t first_vertex, std::size_t first_normal)
+      : first_vertex_(first_vertex), first_normal_(first_normal) {}
+
+  std::size_t vertex(const glm::dvec3& p) {
+    const auto [it, added] = vertices_.emplace(key_of(p), first_vertex_ + vertex_list_.size());
+    if (added) vertex_list_.push_back(p);
+    return it->second;
+  }
+  std::size_t normal(const glm::dvec3& n) {
+    const auto [it, added] = normals_.emplace(key_of(n), first_normal_ + normal_list_.size());
+    if (added) normal_list_.push_back(n);
+    return it->second;
+  }
+
+  const std::vector<glm::dvec3>& vertex_list() const { return vertex_list_; }
+  const std::vector<glm::dvec3>& normal_list() const { return normal_list_; }
+
+ private:
+  std::size_t first_vertex_, first_normal_;
+  std::map<Key, std::size_t> vertices_, normals_;
+  std::vector<glm::dvec3> vertex_list_, normal_list_;
+};
+
+struct Part {
+  hsr::Plane3 plane;
+  detail::PlaneChart chart;
+};
+
+// The part whose plane the region polygon lies in: the one whose normal its own normal
+// is nearest (light_regions gives each polygon the plane and orientation of its part).
+const Part& part_of(const std::vector<Part>& parts, const hsr::Polygon3& polygon) {
+  const glm::dvec3 own = hsr::plane_of(polygon).normal;
+  std::size_t best = 0;
+  double best_dot = -2.0;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const double d = glm::dot(own, parts[k].plane.normal);
+    if (d > best_dot) {
+      best_dot = d;
+      best = k;
+    }
+  }
+  return parts[best];
+}
+
+// Material names, one per light set, unique.
+std::map<LightSet, std::string, LightSetLess> material_names(
+    const Scene& scene, const std::set<LightSet, LightSetLess>& sets) {
+  std::map<LightSet, std::string, LightSetLess> names;
+  std::set<std::string> taken;
+  for (const LightSet& s : sets) {
+    const std::string base = obj_name(light_set_name(scene, s));
+    std::string name = base;
+    for (int k = 2; taken.count(name) != 0; ++k) name = base + "~" + std::to_string(k);
+    taken.insert(name);
+    names.emplace(s, name);
+  }
+  return names;
+}
+
+std::string lights_comment(const Scene& scene, const LightSet& set) {
+  if (set.empty()) return "# lights: none (shadow)\n";
+  std::string out = "# lights:";
+  for (const std::size_t l : set) {
+    out += ' ';
+    out += obj_name(scene.lights[l].id);
+  }
+  return out + '\n';
+}
+
+}  // namespace
+
+std::string obj_name(std::string_view name) {
+  if (name.empty()) return "_";
+  std::string out(name);
+  for (char& c : out) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte <= 0x20 || byte >= 0x7f || c == '#') c = '_';
+  }
+  return out;
+}
+
+glm::dvec3 light_set_colour(const Scene& scene, std::span<const std::size_t> lights) {
+  glm::dvec3 total(0.0), in_set(0.0);
+  for (const Light& light : scene.lights) total += glm::max(light.intensity, glm::dvec3(0.0));
+  for (const std::size_t l : lights) {
+    in_set += glm::max(scene.lights.at(l).intensity, glm::dvec3(0.0));
+  }
+  glm::dvec3 colour(kAmbientGrey);
+  for (int c = 0; c < 3; ++c) {
+    if (total[c] > 0.0) colour[c] += (1.0 - kAmbientGrey) * in_set[c] / total[c];
+    colour[c] = std::clamp(colour[c], 0.0, 1.0);
+  }
+  return colour;
+}
+
+ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
+  const Scene& scene = shadowed.scene;
+  if (shadowed.lit.size() != scene.faces.size()) {
+    throw std::invalid_argument("obj_export: lit detail polygons not shaped [face][light]");
+  }
+  std::vector<std::vector<LightRegion>> regions(scene.faces.size());
+  std::set<LightSet, LightSetLess> sets;
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    regions[f] = light_regions(shadowed, f);
+    for (const LightRegion& r : regions[f]) sets.insert(r.lights);
+  }
+  const std::map<LightSet, std::string, LightSetLess> names = material_names(scene, sets);
+
+  ObjFiles files;
+  std::string& obj = files.obj;
+  obj += "# shadowgen OBJ export: faces split by the set of lights reaching them\n";
+  obj += "mtllib ";
+  obj += mtl_file_name;
+  obj += '\n';
+
+  std::size_t vertex_count = 0, normal_count = 0;
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    const Face& face = scene.faces[f];
+    obj += "g ";
+    obj += obj_name(face.id);
+    obj += '\n';
+    if (regions[f].empty()) continue;
+
+    std::vector<Part> parts;
+    for (const hsr::Polygon3& p : face.parts) {
+      const hsr::Plane3 plane = hsr::plane_of(p);
+      if (plane.normal != glm::dvec3(0.0))
+        parts.push_back({plane, detail::chart_facing(plane.normal)});
+    }
+
+    FaceBlock block(vertex_count, normal_count);
+    std::string faces;  // the usemtl and f lines, after the face's v and vn lines
+    for (const LightRegion& region : regions[f]) {
+      faces += "usemtl ";
+      faces += names.at(region.lights);
+      faces += '\n';
+      for (const hsr::Polygon3& polygon : region.polygons) {
+        const Part& part = part_of(parts, polygon);
+        std::vector<glm::dvec3> corners(polygon.outer);
+        std::vector<clipper::Loop2> loops(1);
+        for (const glm::dvec3& p : polygon.outer) loops[0].push_back(part.chart(p));
+        for (const hsr::Loop3& h : polygon.holes) {
+          loops.emplace_back();
+          for (const glm::dvec3& p : h) {
+            loops.back().push_back(part.chart(p));
+            corners.push_back(p);
+          }
+        }
+        std::vector<clipper::Point2> flat;
+        for (const clipper::Loop2& loop : loops) flat.insert(flat.end(), loop.begin(), loop.end());
+        const std::optional<std::vector<detail::Triangle>> triangles = detail::triangulate(loops);
+        if (!triangles) {
+          throw std::runtime_error("face '" + face.id + "': a region of light set '" +
+                                   light_set_name(scene, region.lights) +
+                                   "' could not be split into triangles");
+        }
+        const std::size_t n = block.normal(part.plane.normal);
+        for (const detail::Triangle& t : *triangles) {
+          if (clipper::orient2d(flat[t[0]], flat[t[1]], flat[t[2]]) ==
+              clipper::Orientation::kCollinear) {
+            continue;  // no area
+          }
+          faces += 'f';
+          for (const std::size_t corner : t) {
+            faces += ' ';
+            faces += std::to_string(block.vertex(corners[corner]) + 1);
+            faces += "//";
+            faces += std::to_string(n + 1);
+          }
+          faces += '\n';
+        }
+      }
+    }
+    for (const glm::dvec3& v : block.vertex_list()) append_vector(obj, "v", v);
+    for (const glm::dvec3& v : block.normal_list()) append_vector(obj, "vn", v);
+    obj += faces;
+    vertex_count += block.vertex_list().size();
+    normal_count += block.normal_list().size();
+  }
+
+  std::string& mtl = files.mtl;
+  mtl += "# shadowgen MTL: one material per set of lights reaching a region.\n# Kd = ";
+  append_number(mtl, kAmbientGrey);
+  mtl += " + ";
+  append_number(mtl, 1.0 - kAmbientGrey);
+  mtl += " * (intensity of the set's lights) / (intensity of all lights), per channel,\n";
+  mtl += "# clamped to [0, 1]: the shadow is grey, a region every light reaches white.\n";
+  for (const auto& [set, name] : names) {
+    const glm::dvec3 colour = light_set_colour(scene, set);
+    mtl += '\n';
+    mtl += lights_comment(scene, set);
+    mtl += "newmtl ";
+    mtl += name;
+    mtl += '\n';
+    append_vector(mtl, "Ka", colour);
+    append_vector(mtl, "Kd", colour);
+    mtl += "Ks 0 0 0\nd 1\nillum 1\n";
+  }
+  return files;
+}
+
+}  // namespace shadowgen

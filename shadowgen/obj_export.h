@@ -1,0 +1,70 @@
+#pragma once
+
+// Wavefront OBJ + MTL output of the shadowed database: every face split into the regions
+// lit by the same set of lights (shadowgen/light_regions.h), one material per set, so any
+// OBJ viewer shows the shadows. Made from the shadowed database alone.
+//
+// OBJ layout, faces in scene order (polygons, then mesh faces):
+//
+//   # shadowgen OBJ export: faces split by the set of lights reaching them
+//   mtllib scene.mtl
+//   g <face id>                  one group per face, also for faces without area (empty)
+//   v x y z                      the face's vertices, scene coordinates
+//   vn x y z                     unit normal of each of the face's planes, front side
+//   usemtl <light set name>      each region of the face, sets in light_regions' order
+//   f a//n b//n c//n             its triangles, counter-clockwise seen from the front
+//
+// Numbers are the shortest decimal form that reads back to the same double, so the
+// vertices are the regions' vertices bit for bit. Regions are triangulated in their
+// part's plane chart by ear clipping (shadowgen/detail/triangulate.h) on their own
+// vertices: no point is added, and the triangles of a region cover exactly its polygons
+// (triangles whose corners are exactly collinear, which add no area, are left out). Vertex
+// and normal numbers are global and 1-based, as OBJ counts them; a face's vertices and
+// normals come right after its `g` line and are not shared with other faces.
+//
+// Names: group and material names are obj_name() of the face id and of light_set_name()
+// ("sun+lamp", "shadow"). Should two light sets' names come out equal after that, the
+// later set's gets "~2", "~3", ... appended, so every material name stands for one set;
+// each material's lights are also listed in a comment line above it in the MTL.
+//
+// Colour rule (MTL Kd, and Ka the same), per channel c, for a set S of lights with
+// intensities I:
+//     Kd_c = kAmbientGrey + (1 − kAmbientGrey) · Σ_{l∈S} max(I_l,c, 0) / Σ_{all l} max(I_l,c, 0)
+// clamped to [0, 1]; a channel whose total is 0 gets kAmbientGrey. So the shadow (S
+// empty) is grey 0.2, the region every light reaches is white, and a region reached by
+// some light of positive intensity is lighter than the shadow. Fall-off with distance is
+// not modelled (a material is one colour). Ks is 0 0 0, d is 1, illum is 1.
+
+#include <cstddef>
+#include <glm/vec3.hpp>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "shadowgen/scene.h"
+#include "shadowgen/shadowed_scene.h"
+
+namespace shadowgen {
+
+inline constexpr double kAmbientGrey = 0.2;
+
+// A name as OBJ and MTL statements can hold it: bytes that are whitespace, control
+// characters, '#' (a comment) or outside printable ASCII become '_'; an empty name
+// becomes "_".
+std::string obj_name(std::string_view name);
+
+// The MTL Kd of a light set (the colour rule above); `lights` as in LightRegion.
+glm::dvec3 light_set_colour(const Scene& scene, std::span<const std::size_t> lights);
+
+struct ObjFiles {
+  std::string obj;
+  std::string mtl;
+};
+
+// Both texts; `mtl_file_name` is what the OBJ's `mtllib` line names (the MTL's file name,
+// next to the OBJ). Throws std::invalid_argument when `lit` is not shaped [face][light],
+// and std::runtime_error naming the face should a region fail to triangulate (valid
+// regions do not).
+ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name);
+
+}  // namespace shadowgen

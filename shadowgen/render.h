@@ -1,0 +1,112 @@
+#pragma once
+
+// A picture of the shadowed database from any camera, as data: flat-shaded 2D pieces in
+// pixel coordinates. No shadow is computed here; this is the paper's second half
+// (Atherton, Weiler and Greenberg 1978, section IV): the lit details found once are
+// "surface details on their parent polygons", and a view needs only hidden-surface removal
+// of the parents.
+//
+// Method:
+//   1. hidden-surface removal from the camera (hsr::remove_hidden_surfaces) on the parent
+//      faces' parts only, never on the lit details (an orthographic camera's parts are
+//      first cut in 3D at the plane through its eye; perspective ones are cut at the near
+//      plane by hsr);
+//   2. every visible fragment of a face seen from its front side is split by the face's
+//      light-set regions (shadowgen/light_regions.h), each projected into the image by
+//      hsr::project_polygon (cut at the near plane in 3D): the fragment is clipped by the
+//      regions of non-empty sets in turn with the Weiler–Atherton clipper, the inside
+//      going to that set, and what is left at the end is in shadow. So the pieces of one
+//      fragment never overlap and cover it, whatever rounding did to the regions;
+//   3. each piece is shaded flat and mapped to pixels.
+//
+// Shading (linear RGB in [0, 1], clamped per channel, written as 8-bit round(255·v)):
+//
+//   colour = albedo ⊙ (ambient + (1 − ambient) · (1/N) · Σ_{L in the piece's set}
+//                                                   intensity_L · max(0, n·l_L) · f_L)
+//
+// with N the number of lights in the scene (so a face lit head-on by every light at full
+// intensity 1 gets the albedo, and no sum of lights saturates), evaluated at the piece's
+// 3D centroid c (its image unprojected onto the face's plane), where n is the face part's
+// unit front normal, l_L the unit vector from c toward L (−direction/|direction| for a
+// directional light) and f_L the fall-off: 1 for directional lights and point lights
+// without a range; for a range (s = falloff_start, e = end, k = exponent) and
+// d = |position − c|:
+//
+//   f_L = 1 for d <= s,   0 for d >= e,   (1 − (d − s)/(e − s))^k  between.
+//
+// Shadow (the empty set) is albedo · ambient: dark, but visible.
+//
+// Back sides: a face part seen from its back is drawn in the ambient colour, one piece
+// per visible fragment, with an empty light set and `back_side` set: the spec's lit region
+// lies on the front side only, so nothing reaches the back (a wall lit from the other
+// side does not show its lit pattern through itself).
+//
+// Pieces are in pixel coordinates (x right, y down, (0, 0) the top-left corner); their
+// loops are oriented so that clipper::area is positive (outer loops have positive signed
+// area in these numbers). The picture's pieces never overlap and cover exactly the image
+// of the visible faces within the picture's rectangle (up to the clipper's rounding).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "clipper/polygon.h"
+#include "hsr/hidden_surface.h"
+#include "shadowgen/camera.h"
+#include "shadowgen/shadowed_scene.h"
+
+namespace shadowgen {
+
+struct Rgb {
+  double r = 0.0;
+  double g = 0.0;
+  double b = 0.0;
+};
+
+struct RenderOptions {
+  int width = 800;
+  int height = 600;
+  Rgb albedo{0.8, 0.8, 0.8};
+  double ambient = 0.2;
+  Rgb background{1.0, 1.0, 1.0};
+};
+
+struct Piece {
+  std::size_t face = 0;  // index into scene.faces
+  std::size_t part = 0;  // index into the face's parts
+  std::string face_id;
+  std::vector<std::size_t> lights;  // ascending indices into scene.lights; empty: shadow
+  std::string light_set;            // light_set_name(scene, lights): "sun+lamp", "shadow"
+  bool back_side = false;
+  clipper::PolygonWithHoles2 shape;  // pixels
+  Rgb colour;
+};
+
+struct RenderStats {
+  hsr::HsrStats hsr;                // the one hidden-surface pass, from the camera
+  std::size_t parent_polygons = 0;  // face parts given to it
+  std::size_t fragments = 0;        // visible fragments within the picture
+  std::size_t region_clips = 0;     // fragment × light-set region clips
+  std::size_t pieces = 0;
+  std::size_t back_side_pieces = 0;
+};
+
+struct Picture {
+  int width = 0;
+  int height = 0;
+  double pixels_per_unit = 0.0;  // orthographic views; 0 for perspective ones
+  Rgb background;
+  std::vector<Piece> pieces;
+  RenderStats stats;
+};
+
+// Throws std::invalid_argument for a bad camera or size (see CameraView) and when `lit`
+// is not shaped [face][light].
+Picture render(const ShadowedScene& shadowed, const Camera& camera,
+               const RenderOptions& options = {});
+
+// The shading formula above for one point of a face's front side lit by `lights`.
+Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm::dvec3& point,
+          const glm::dvec3& normal, const RenderOptions& options);
+
+}  // namespace shadowgen

@@ -1,0 +1,160 @@
+#include "shadowgen/svg_writer.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+#include "shadowgen/atomic_file.h"
+
+namespace shadowgen {
+namespace {
+
+// Shortest round-trip form; SVG's number grammar takes the exponent form too.
+void append_number(std::string& out, double value) {
+  std::array<char, 32> buffer{};
+  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
+  out.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+}
+
+void append_colour(std::string& out, const Rgb& colour) {
+  constexpr std::string_view kHex = "0123456789abcdef";
+  out += '#';
+  for (const double v : {colour.r, colour.g, colour.b}) {
+    const double clamped = std::isfinite(v) ? std::fmin(std::fmax(v, 0.0), 1.0) : 0.0;
+    const auto byte = static_cast<unsigned>(std::lround(255.0 * clamped));
+    out += kHex[byte >> 4];
+    out += kHex[byte & 15];
+  }
+}
+
+// Length of the valid UTF-8 sequence starting at text[i] that XML 1.0 allows, or 0.
+std::size_t valid_xml_char(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char b0 = byte(i);
+  if (b0 < 0x80) return b0 >= 0x20 || b0 == '\t' || b0 == '\n' || b0 == '\r' ? 1 : 0;
+  std::size_t length = 0;
+  char32_t code = 0;
+  if ((b0 & 0xE0) == 0xC0) {
+    length = 2;
+    code = b0 & 0x1F;
+  } else if ((b0 & 0xF0) == 0xE0) {
+    length = 3;
+    code = b0 & 0x0F;
+  } else if ((b0 & 0xF8) == 0xF0) {
+    length = 4;
+    code = b0 & 0x07;
+  } else {
+    return 0;
+  }
+  if (i + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+    code = (code << 6) | (byte(i + k) & 0x3F);
+  }
+  constexpr std::array<char32_t, 5> kMinimum{0, 0, 0x80, 0x800, 0x10000};
+  if (code < kMinimum[length] || code > 0x10FFFF) return 0;  // overlong or out of range
+  if (code >= 0xD800 && code <= 0xDFFF) return 0;            // surrogates
+  if (code == 0xFFFE || code == 0xFFFF) return 0;            // not XML characters
+  return length;
+}
+
+void append_attribute_value(std::string& out, std::string_view text) {
+  out += '"';
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = valid_xml_char(text, i);
+    if (length == 0) {
+      out += "\xEF\xBF\xBD";  // U+FFFD
+      ++i;
+      continue;
+    }
+    switch (text[i]) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      case '\t':
+        out += "&#9;";
+        break;  // attribute normalisation would turn them to spaces
+      case '\n':
+        out += "&#10;";
+        break;
+      case '\r':
+        out += "&#13;";
+        break;
+      default:
+        out.append(text.substr(i, length));
+    }
+    i += length;
+  }
+  out += '"';
+}
+
+void append_loop(std::string& out, const clipper::Loop2& loop) {
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    out += i == 0 ? (out.back() == '"' ? "M" : " M") : (i == 1 ? " L" : " ");
+    append_number(out, loop[i].x);
+    out += ',';
+    append_number(out, loop[i].y);
+  }
+  out += " Z";
+}
+
+}  // namespace
+
+std::string svg_document(const Picture& picture) {
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"";
+  out += std::to_string(picture.width);
+  out += "\" height=\"";
+  out += std::to_string(picture.height);
+  out += "\" viewBox=\"0 0 ";
+  out += std::to_string(picture.width);
+  out += ' ';
+  out += std::to_string(picture.height);
+  out += '"';
+  if (picture.pixels_per_unit > 0.0) {
+    out += " data-pixels-per-unit=\"";
+    append_number(out, picture.pixels_per_unit);
+    out += '"';
+  }
+  out += ">\n<rect x=\"0\" y=\"0\" width=\"";
+  out += std::to_string(picture.width);
+  out += "\" height=\"";
+  out += std::to_string(picture.height);
+  out += "\" fill=\"";
+  append_colour(out, picture.background);
+  out += "\"/>\n";
+  for (const Piece& piece : picture.pieces) {
+    out += "<path d=\"";
+    append_loop(out, piece.shape.outer);
+    for (const clipper::Loop2& hole : piece.shape.holes) append_loop(out, hole);
+    out += "\" fill=\"";
+    append_colour(out, piece.colour);
+    out += "\" fill-rule=\"evenodd\" data-face=";
+    append_attribute_value(out, piece.face_id);
+    out += " data-lights=";
+    append_attribute_value(out, piece.light_set);
+    if (piece.back_side) out += " data-side=\"back\"";
+    out += "/>\n";
+  }
+  out += "</svg>\n";
+  return out;
+}
+
+void write_svg(const Picture& picture, const std::filesystem::path& path) {
+  write_file_atomically(path, svg_document(picture));
+}
+
+}  // namespace shadowgen

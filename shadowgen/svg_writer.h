@@ -1,0 +1,32 @@
+#pragma once
+
+// A Picture (shadowgen/render.h) as an SVG 1.1 document.
+//
+//   <?xml version="1.0" encoding="UTF-8"?>
+//   <svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="W" height="H"
+//        viewBox="0 0 W H" data-pixels-per-unit="S">       the last for orthographic views
+//   <rect x="0" y="0" width="W" height="H" fill="#rrggbb"/>  the background
+//   <path d="M x,y L x,y ... Z M ... Z" fill="#rrggbb" fill-rule="evenodd"
+//         data-face="wall" data-lights="sun+lamp"/>         one per piece, in picture order
+//   </svg>
+//
+// A path holds the piece's outer loop and its holes as closed subpaths; even-odd filling
+// makes the holes. Coordinates are pixels, y down, printed in the shortest form that reads
+// back to the same double (std::to_chars), so the picture is exact at any zoom. A piece
+// seen from its face's back side also carries data-side="back". Attribute values are
+// XML-escaped; bytes that are not valid UTF-8 or not allowed in XML become U+FFFD.
+
+#include <filesystem>
+#include <string>
+
+#include "shadowgen/render.h"
+
+namespace shadowgen {
+
+std::string svg_document(const Picture& picture);
+
+// Writes through a temporary file and a rename (shadowgen/atomic_file.h): never a
+// partial file.
+void write_svg(const Picture& picture, const std::filesystem::path& path);
+
+}  // namespace shadowgen

@@ -1,0 +1,362 @@
+// End-to-end tests over every example scene: each scene in examples/scenes (found by listing
+// the folder, so a new example is covered without touching this file) is generated,
+// reported from the scene and from its database (byte-identical CSV, one row per face and
+// light in scene order, lit fractions in [0, 1]), exported as OBJ and MTL (one group per
+// face, its triangles adding up to the report's areas) and drawn from its `main` view
+// (well-formed SVG per xmllint, naming only faces and lights of the scene).
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tests/support/obj_text.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kExamples = fs::path(SHADOWGEN_EXAMPLES_DIR);
+
+struct Outcome {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string quoted(const std::string& arg) {
+  std::string q = "'";
+  for (const char c : arg) {
+    if (c == '\'') {
+      q += "'\\''";
+    } else {
+      q += c;
+    }
+  }
+  return q + "'";
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The example names (scene file stems), sorted.
+std::vector<std::string> example_names() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(kExamples / "scenes", error)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".json") {
+      names.push_back(entry.path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// One CSV record split into fields, with RFC 4180 quoting undone.
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool in_quotes = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_quotes) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        in_quotes = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      in_quotes = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+struct Row {
+  std::string face, light;
+  double area = 0.0, lit_area = 0.0, lit_fraction = 0.0;
+};
+
+std::vector<Row> parse_report(const std::string& csv) {
+  std::vector<Row> rows;
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "face_id,light_id,area,lit_area,lit_fraction");
+  while (std::getline(in, line)) {
+    const std::vector<std::string> f = csv_fields(line);
+    EXPECT_GE(f.size(), 5u) << line;
+    if (f.size() < 5) continue;
+    rows.push_back({f[0], f[1], std::stod(f[2]), std::stod(f[3]), std::stod(f[4])});
+  }
+  return rows;
+}
+
+// Faces of an OBJ file: its `f` records.
+std::size_t obj_face_count(const fs::path& path) {
+  std::istringstream in(contents(path));
+  std::size_t count = 0;
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start != std::string::npos && line.compare(start, 2, "f ") == 0) ++count;
+  }
+  return count;
+}
+
+// The face ids of a scene in scene order (polygons, then mesh faces "<mesh id>/<k>"), and
+// its light ids.
+struct SceneIds {
+  std::vector<std::string> faces;
+  std::vector<std::string> lights;
+};
+
+SceneIds scene_ids(const fs::path& scene_path) {
+  const nlohmann::json scene = nlohmann::json::parse(contents(scene_path));
+  SceneIds ids;
+  for (const auto& polygon : scene.value("polygons", nlohmann::json::array())) {
+    ids.faces.push_back(polygon.at("id").get<std::string>());
+  }
+  for (const auto& mesh : scene.value("meshes", nlohmann::json::array())) {
+    const fs::path file = scene_path.parent_path() / mesh.at("file").get<std::string>();
+    EXPECT_EQ(file.extension(), ".obj") << "count the faces of " << file << " here";
+    const std::size_t faces = obj_face_count(file);
+    EXPECT_GT(faces, 0u) << file;
+    for (std::size_t k = 0; k < faces; ++k) {
+      ids.faces.push_back(mesh.at("id").get<std::string>() + "/" + std::to_string(k));
+    }
+  }
+  for (const auto& light : scene.value("lights", nlohmann::json::array())) {
+    ids.lights.push_back(light.at("id").get<std::string>());
+  }
+  return ids;
+}
+
+double relative_error(double actual, double expected) {
+  if (expected == 0.0) return std::abs(actual);
+  return std::abs(actual - expected) / std::abs(expected);
+}
+
+class ExampleCli : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = info->name();
+    std::replace(name.begin(), name.end(), '/', '-');
+    dir_ = fs::path(::testing::TempDir()) /
+           ("shadowgen-examples-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "run");
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  Outcome run(const std::vector<std::string>& args) const {
+    std::string command = quoted(SHADOWGEN_EXECUTABLE);
+    for (const std::string& arg : args) {
+      command += ' ';
+      command += quoted(arg);
+    }
+    command += " >";
+    command += quoted((dir_ / "run" / "out").string());
+    command += " 2>";
+    command += quoted((dir_ / "run" / "err").string());
+    command += " </dev/null";
+    Outcome result;
+    result.code = shell(command);
+    result.out = contents(dir_ / "run" / "out");
+    result.err = contents(dir_ / "run" / "err");
+    return result;
+  }
+
+  void ExpectWellFormedXml(const fs::path& file) const {
+    EXPECT_EQ(shell("xmllint --noout " + quoted(file.string()) + " 2>" +
+                    quoted((dir_ / "run" / "xmllint").string())),
+              0)
+        << file << ": " << contents(dir_ / "run" / "xmllint");
+  }
+
+  fs::path dir_;
+};
+
+TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
+  const std::vector<std::string> names = example_names();
+  for (const char* expected : {"chairs", "courtyard", "house", "pergola", "room"}) {
+    EXPECT_TRUE(std::find(names.begin(), names.end(), expected) != names.end()) << expected;
+  }
+  for (const std::string& name : names) {
+    const nlohmann::json scene =
+        nlohmann::json::parse(contents(kExamples / "scenes" / (name + ".json")));
+    EXPECT_EQ(scene.at("format"), "shadowgen-scene/1") << name;
+    bool has_main = false;
+    for (const auto& view : scene.value("views", nlohmann::json::array())) {
+      has_main = has_main || view.at("id") == "main";
+    }
+    EXPECT_TRUE(has_main) << name << " has no view 'main'";
+    // The picture examples/render_examples.sh makes from that view is checked in.
+    const fs::path picture = kExamples / (name + ".svg");
+    ASSERT_TRUE(fs::is_regular_file(picture)) << picture << ": run examples/render_examples.sh";
+    EXPECT_NE(contents(picture).find("data-face="), std::string::npos) << picture;
+    EXPECT_EQ(shell("xmllint --noout " + quoted(picture.string()) + " 2>/dev/null"), 0) << picture;
+  }
+}
+
+TEST_P(ExampleCli, GenerateReportExportRender) {
+  const std::string name = GetParam();
+  const fs::path scene = kExamples / "scenes" / (name + ".json");
+  const SceneIds ids = scene_ids(scene);
+  ASSERT_FALSE(ids.faces.empty());
+  ASSERT_FALSE(ids.lights.empty());
+
+  // generate: a clean example reads without warnings.
+  const fs::path db = dir_ / (name + ".shadowed.json");
+  const Outcome generated = run({"generate", scene.string(), "-o", db.string()});
+  ASSERT_EQ(generated.code, 0) << generated.err;
+  EXPECT_EQ(generated.out, "");
+  EXPECT_EQ(generated.err, "");
+  ASSERT_TRUE(fs::is_regular_file(db));
+  EXPECT_EQ(nlohmann::json::parse(contents(db)).at("format"), "shadowgen-shadowed/1");
+
+  // report: the same CSV, byte for byte, from the scene and from the database.
+  const Outcome from_db = run({"report", db.string(), "--format", "csv"});
+  const Outcome from_scene = run({"report", scene.string()});
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  ASSERT_EQ(from_scene.code, 0) << from_scene.err;
+  EXPECT_EQ(from_db.err, "");
+  EXPECT_EQ(from_scene.out, from_db.out);
+
+  // One row per (face, light), faces in scene order, lights in scene order.
+  const std::vector<Row> rows = parse_report(from_db.out);
+  ASSERT_EQ(rows.size(), ids.faces.size() * ids.lights.size());
+  std::map<std::string, bool> partly_shadowed;  // by light: some face is lit in part only
+  for (std::size_t f = 0; f < ids.faces.size(); ++f) {
+    for (std::size_t l = 0; l < ids.lights.size(); ++l) {
+      const Row& row = rows[f * ids.lights.size() + l];
+      EXPECT_EQ(row.face, ids.faces[f]);
+      EXPECT_EQ(row.light, ids.lights[l]);
+      EXPECT_GT(row.area, 0.0) << row.face;
+      EXPECT_GE(row.lit_area, 0.0) << row.face << ", " << row.light;
+      EXPECT_LE(row.lit_area, row.area * (1.0 + 1e-12)) << row.face << ", " << row.light;
+      EXPECT_GE(row.lit_fraction, 0.0) << row.face << ", " << row.light;
+      EXPECT_LE(row.lit_fraction, 1.0) << row.face << ", " << row.light;
+      if (row.area > 0.0) {
+        EXPECT_DOUBLE_EQ(row.lit_fraction, row.lit_area / row.area) << row.face;
+      }
+      if (row.lit_fraction > 0.0 && row.lit_fraction < 1.0) partly_shadowed[row.light] = true;
+    }
+  }
+  // An example shows shadows: every light leaves some face partly in shadow.
+  for (const std::string& light : ids.lights) {
+    EXPECT_TRUE(partly_shadowed[light]) << light << " casts no shadow on any face";
+  }
+
+  // export: OBJ and MTL, a group per face in scene order, every material defined, and
+  // each group's triangles adding up to the report's area and lit areas.
+  const fs::path obj_path = dir_ / (name + ".obj");
+  const fs::path mtl_path = dir_ / (name + ".mtl");
+  const Outcome exported = run({"export", db.string(), "--obj", obj_path.string()});
+  ASSERT_EQ(exported.code, 0) << exported.err;
+  EXPECT_EQ(exported.err, "");
+  ASSERT_TRUE(fs::is_regular_file(obj_path));
+  ASSERT_TRUE(fs::is_regular_file(mtl_path));
+  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(contents(obj_path));
+  EXPECT_TRUE(obj.errors.empty()) << obj.errors.front();
+  EXPECT_EQ(obj.mtllib, mtl_path.filename().string());
+  std::vector<std::string> groups;
+  for (const auto& group : obj.groups) groups.push_back(group.name);
+  EXPECT_EQ(groups, ids.faces);
+  const shadowgen::test::MtlText mtl = shadowgen::test::parse_mtl(contents(mtl_path));
+  EXPECT_TRUE(mtl.errors.empty()) << mtl.errors.front();
+  double worst = 0.0;
+  for (const auto& group : obj.groups) {
+    const std::map<std::string, double> areas = shadowgen::test::material_areas(group);
+    double total = 0.0;
+    std::map<std::string, double> lit;  // by light
+    for (const auto& [material, area] : areas) {
+      EXPECT_EQ(mtl.kd.count(material), 1u) << material;
+      total += area;
+      if (material == "shadow") continue;
+      std::istringstream lights(material);
+      for (std::string light; std::getline(lights, light, '+');) lit[light] += area;
+    }
+    for (const Row& row : rows) {
+      if (row.face != group.name) continue;
+      const double area_error = relative_error(total, row.area);
+      const double lit_error = relative_error(lit[row.light], row.lit_area);
+      EXPECT_LE(area_error, 1e-9) << row.face << ": " << total << " vs " << row.area;
+      EXPECT_LE(lit_error, 1e-9) << row.face << ", " << row.light << ": " << lit[row.light]
+                                 << " vs " << row.lit_area;
+      worst = std::max({worst, area_error, lit_error});
+    }
+  }
+  std::printf("%s: %zu faces, %zu lights, OBJ areas within %.3g of the report\n", name.c_str(),
+              ids.faces.size(), ids.lights.size(), worst);
+
+  // render: the `main` view, a well-formed SVG that names only the scene's faces and lights.
+  const fs::path svg = dir_ / (name + ".svg");
+  const Outcome rendered = run({"render", db.string(), "--view", "main", "--svg", svg.string()});
+  ASSERT_EQ(rendered.code, 0) << rendered.err;
+  EXPECT_EQ(rendered.out, "");
+  EXPECT_EQ(rendered.err, "");
+  ASSERT_TRUE(fs::is_regular_file(svg));
+  ExpectWellFormedXml(svg);
+  const std::string picture = contents(svg);
+  const std::set<std::string> faces(ids.faces.begin(), ids.faces.end());
+  std::set<std::string> light_sets(ids.lights.begin(), ids.lights.end());
+  light_sets.insert("shadow");
+  const std::regex piece(R"re(data-face="([^"]*)" data-lights="([^"]*)")re");
+  std::size_t pieces = 0;
+  std::set<std::string> seen;
+  for (auto it = std::sregex_iterator(picture.begin(), picture.end(), piece);
+       it != std::sregex_iterator(); ++it) {
+    ++pieces;
+    EXPECT_EQ(faces.count((*it)[1]), 1u) << (*it)[1];
+    seen.insert((*it)[1]);
+    std::istringstream lights((*it)[2]);
+    for (std::string light; std::getline(lights, light, '+');) {
+      EXPECT_EQ(light_sets.count(light), 1u) << light;
+    }
+  }
+  EXPECT_GT(pieces, 0u);
+  EXPECT_GE(seen.size(), 2u);  // the view shows more than one face
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, ExampleCli, ::testing::ValuesIn(example_names()),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           std::string name = param.param;
+                           for (char& c : name) {
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           }
+                           return name;
+                         });
+
+}  // namespace

@@ -1,0 +1,378 @@
+// End-to-end tests of `shadowgen export --obj`: the built executable is run on the
+// courtyard example, from a database and from the scene, and the OBJ it writes is read back
+// (tests/support/obj_text.h) and compared with `shadowgen report`'s CSV; failures must exit
+// 1 with one message and leave neither the OBJ nor the MTL behind.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/obj_text.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kCourtyard = fs::path(SHADOWGEN_EXAMPLES_DIR) / "scenes" / "courtyard.json";
+
+struct Outcome {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string quoted(const std::string& arg) {
+  std::string q = "'";
+  for (const char c : arg) {
+    if (c == '\'') {
+      q += "'\\''";
+    } else {
+      q += c;
+    }
+  }
+  return q + "'";
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class ExportCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(::testing::TempDir()) /
+           (std::string("shadowgen-export-") + info->name() + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "run");
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  Outcome run(const std::vector<std::string>& args) const {
+    std::string command = quoted(SHADOWGEN_EXECUTABLE);
+    for (const std::string& arg : args) {
+      command += ' ';
+      command += quoted(arg);
+    }
+    command += " >";
+    command += quoted((dir_ / "run" / "out").string());
+    command += " 2>";
+    command += quoted((dir_ / "run" / "err").string());
+    command += " </dev/null";
+    const int status = std::system(command.c_str());
+    Outcome result;
+    result.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = contents(dir_ / "run" / "out");
+    result.err = contents(dir_ / "run" / "err");
+    return result;
+  }
+
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      if (entry.path().filename() != "run") names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  fs::path dir_;
+};
+
+struct CsvRow {
+  std::string face, light;
+  double area = 0.0, lit_area = 0.0;
+};
+
+// The report's CSV (ids here hold no comma or quote).
+std::vector<CsvRow> parse_csv(const std::string& text) {
+  std::vector<CsvRow> rows;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "face_id,light_id,area,lit_area,lit_fraction");
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) fields.push_back(cell);
+    EXPECT_EQ(fields.size(), 5u) << line;
+    if (fields.size() != 5) continue;
+    rows.push_back({fields[0], fields[1], std::stod(fields[2]), std::stod(fields[3])});
+  }
+  return rows;
+}
+
+// The lights of a material, from its name ("shadow", "sun", "sun+lamp").
+std::vector<std::string> lights_of(const std::string& material) {
+  std::vector<std::string> lights;
+  if (material == "shadow") return lights;
+  std::istringstream in(material);
+  std::string id;
+  while (std::getline(in, id, '+')) lights.push_back(id);
+  return lights;
+}
+
+double relative_error(double actual, double expected) {
+  if (expected == 0.0) return std::abs(actual);
+  return std::abs(actual - expected) / std::abs(expected);
+}
+
+// Per face group: all triangles add up to the report's area, and the materials holding a
+// light to its lit_area, within `tolerance` relative. Returns the worst error seen.
+double ExpectObjMatchesReport(const std::string& obj_text, const std::string& csv,
+                              double tolerance) {
+  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(obj_text);
+  EXPECT_TRUE(obj.errors.empty()) << obj.errors.front();
+  const std::vector<CsvRow> rows = parse_csv(csv);
+  double worst = 0.0;
+  std::size_t checked = 0;
+  for (const CsvRow& row : rows) {
+    const auto group = std::find_if(obj.groups.begin(), obj.groups.end(),
+                                    [&row](const auto& g) { return g.name == row.face; });
+    if (group == obj.groups.end()) {
+      ADD_FAILURE() << "no group " << row.face;
+      continue;
+    }
+    const std::map<std::string, double> areas = shadowgen::test::material_areas(*group);
+    double total = 0.0, lit = 0.0;
+    for (const auto& [material, a] : areas) {
+      total += a;
+      const std::vector<std::string> lights = lights_of(material);
+      if (std::find(lights.begin(), lights.end(), row.light) != lights.end()) lit += a;
+    }
+    const double area_error = relative_error(total, row.area);
+    const double lit_error =
+        row.lit_area > 0.0 ? relative_error(lit, row.lit_area) : lit / std::max(row.area, 1.0);
+    EXPECT_LE(area_error, tolerance) << row.face << ": " << total << " vs " << row.area;
+    EXPECT_LE(lit_error, tolerance)
+        << row.face << ", " << row.light << ": " << lit << " vs " << row.lit_area;
+    worst = std::max({worst, area_error, lit_error});
+    ++checked;
+  }
+  EXPECT_GT(checked, 0u);
+  return worst;
+}
+
+// The OBJ without its mtllib line, which names the MTL file.
+std::string without_mtllib(const std::string& obj) {
+  std::istringstream in(obj);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    if (line.rfind("mtllib ", 0) != 0) out += line + '\n';
+  }
+  return out;
+}
+
+TEST_F(ExportCli, CourtyardFromDatabaseAndFromSceneMatchTheReport) {
+  const fs::path db = dir_ / "courtyard.shadowed.json";
+  ASSERT_EQ(run({"generate", kCourtyard.string(), "-o", db.string()}).code, 0);
+
+  const Outcome from_db = run({"export", db.string(), "--obj", (dir_ / "db.obj").string()});
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  EXPECT_EQ(from_db.out, "");
+  EXPECT_EQ(from_db.err, "");
+  const Outcome from_scene = run(
+      {"export", kCourtyard.string(), "--obj", (dir_ / "scene.obj").string(), "--threads", "2"});
+  ASSERT_EQ(from_scene.code, 0) << from_scene.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"courtyard.shadowed.json", "db.mtl", "db.obj",
+                                               "scene.mtl", "scene.obj"}));
+
+  const std::string obj = contents(dir_ / "db.obj");
+  EXPECT_EQ(shadowgen::test::parse_obj(obj).mtllib, "db.mtl");
+  EXPECT_EQ(shadowgen::test::parse_obj(contents(dir_ / "scene.obj")).mtllib, "scene.mtl");
+  EXPECT_EQ(without_mtllib(obj), without_mtllib(contents(dir_ / "scene.obj")));
+  EXPECT_EQ(contents(dir_ / "db.mtl"), contents(dir_ / "scene.mtl"));
+
+  // Every face is a group, in scene order.
+  std::vector<std::string> groups;
+  for (const auto& g : shadowgen::test::parse_obj(obj).groups) groups.push_back(g.name);
+  EXPECT_EQ(groups, (std::vector<std::string>{"ground", "wall-south", "canopy"}));
+
+  // Every material the OBJ uses is defined in the MTL, shadow darker than any lit set.
+  const shadowgen::test::MtlText mtl = shadowgen::test::parse_mtl(contents(dir_ / "db.mtl"));
+  EXPECT_TRUE(mtl.errors.empty());
+  ASSERT_EQ(mtl.kd.count("shadow"), 1u);
+  for (const auto& g : shadowgen::test::parse_obj(obj).groups) {
+    for (const auto& t : g.triangles) EXPECT_EQ(mtl.kd.count(t.material), 1u) << t.material;
+  }
+  for (const auto& [name, kd] : mtl.kd) {
+    if (name != "shadow") {
+      EXPECT_GT(kd[0], mtl.kd.at("shadow")[0]) << name;
+    }
+  }
+
+  const Outcome report = run({"report", db.string()});
+  ASSERT_EQ(report.code, 0) << report.err;
+  const double worst = ExpectObjMatchesReport(obj, report.out, 1e-9);
+  std::printf("courtyard, two lights: worst relative area error %.3g\n", worst);
+}
+
+TEST_F(ExportCli, SingleLightLitMaterialAreaIsTheReportsLitArea) {
+  nlohmann::json scene = nlohmann::json::parse(contents(kCourtyard));
+  scene["lights"].erase(1);  // keep the sun only
+  ASSERT_EQ(scene["lights"].size(), 1u);
+  const fs::path path = write("sun.json", scene.dump(2));
+  const Outcome exported = run({"export", path.string(), "--obj", (dir_ / "sun.obj").string()});
+  ASSERT_EQ(exported.code, 0) << exported.err;
+  const Outcome report = run({"report", path.string()});
+  ASSERT_EQ(report.code, 0) << report.err;
+
+  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(contents(dir_ / "sun.obj"));
+  const std::vector<CsvRow> rows = parse_csv(report.out);
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(obj.groups.size(), 3u);
+  double worst = 0.0;
+  for (std::size_t f = 0; f < rows.size(); ++f) {
+    EXPECT_EQ(obj.groups[f].name, rows[f].face);
+    std::map<std::string, double> areas = shadowgen::test::material_areas(obj.groups[f]);
+    for (const auto& [material, a] : areas) {
+      EXPECT_TRUE(material == "sun" || material == "shadow") << material;
+    }
+    const double lit_error = relative_error(areas["sun"], rows[f].lit_area);
+    const double area_error = relative_error(areas["sun"] + areas["shadow"], rows[f].area);
+    EXPECT_LE(lit_error, 1e-9) << rows[f].face;
+    EXPECT_LE(area_error, 1e-9) << rows[f].face;
+    worst = std::max({worst, lit_error, area_error});
+  }
+  // The sun lights part of the ground and not all of it: both materials there.
+  EXPECT_GT(shadowgen::test::material_areas(obj.groups[0])["shadow"], 0.0);
+  EXPECT_GT(shadowgen::test::material_areas(obj.groups[0])["sun"], 0.0);
+  std::printf("courtyard, sun only: worst relative area error %.3g\n", worst);
+}
+
+TEST_F(ExportCli, BadInputExitsOneWithAMessageAndLeavesNothing) {
+  const Outcome missing =
+      run({"export", (dir_ / "missing.json").string(), "--obj", (dir_ / "out.obj").string()});
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_EQ(missing.err.rfind("shadowgen: ", 0), 0u) << missing.err;
+  EXPECT_NE(missing.err.find("missing.json"), std::string::npos) << missing.err;
+  EXPECT_EQ(files(), std::vector<std::string>{});
+
+  const fs::path broken = write("broken.json", R"({
+    "format": "shadowgen-scene/1",
+    "polygons": [{"id": "stub", "outer": [[0,0,0],[1,0,0]], "holes": []}],
+    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
+  })");
+  const Outcome bad = run({"export", broken.string(), "--obj", (dir_ / "out.obj").string()});
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_EQ(bad.err.rfind("shadowgen: ", 0), 0u) << bad.err;
+  EXPECT_NE(bad.err.find("broken.json"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("stub"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_EQ(bad.out, "");
+
+  const fs::path bad_db = write("bad-db.json", R"({"format": "shadowgen-shadowed/1"})");
+  const Outcome db = run({"export", bad_db.string(), "--obj", (dir_ / "out.obj").string()});
+  EXPECT_EQ(db.code, 1);
+  EXPECT_EQ(db.err.rfind("shadowgen: " + bad_db.string() + ": ", 0), 0u) << db.err;
+
+  const fs::path other = write("other.json", R"({"format": "something-else/3"})");
+  const Outcome unknown = run({"export", other.string(), "--obj", (dir_ / "out.obj").string()});
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.err.find("something-else/3"), std::string::npos) << unknown.err;
+
+  EXPECT_EQ(files(), (std::vector<std::string>{"bad-db.json", "broken.json", "other.json"}));
+}
+
+TEST_F(ExportCli, UnwritableOutputLeavesNeitherFile) {
+  // No such folder: the MTL cannot be written.
+  const Outcome nowhere =
+      run({"export", kCourtyard.string(), "--obj", (dir_ / "no" / "such" / "out.obj").string()});
+  EXPECT_EQ(nowhere.code, 1);
+  EXPECT_NE(nowhere.err.find("out.mtl"), std::string::npos) << nowhere.err;
+
+  // The OBJ's path is a folder: the MTL is written first, then removed when the OBJ fails.
+  fs::create_directories(dir_ / "out.obj");
+  const Outcome blocked =
+      run({"export", kCourtyard.string(), "--obj", (dir_ / "out.obj").string()});
+  EXPECT_EQ(blocked.code, 1);
+  EXPECT_NE(blocked.err.find("out.obj"), std::string::npos) << blocked.err;
+  EXPECT_EQ(files(), std::vector<std::string>{"out.obj"});
+  EXPECT_TRUE(fs::is_directory(dir_ / "out.obj"));
+  EXPECT_TRUE(fs::is_empty(dir_ / "out.obj"));
+
+  // An OBJ name whose MTL would be the OBJ itself.
+  const Outcome same = run({"export", kCourtyard.string(), "--obj", (dir_ / "x.mtl").string()});
+  EXPECT_EQ(same.code, 1);
+  EXPECT_NE(same.err.find("x.mtl"), std::string::npos) << same.err;
+  EXPECT_EQ(files(), std::vector<std::string>{"out.obj"});
+}
+
+TEST_F(ExportCli, AFailedRunLeavesExistingOutputsAlone) {
+  const fs::path obj = write("out.obj", "old obj");
+  const fs::path mtl = write("out.mtl", "old mtl");
+  const fs::path broken = write("broken.json", R"({"format": "shadowgen-scene/1", "polygons": [)");
+  EXPECT_EQ(run({"export", broken.string(), "--obj", obj.string()}).code, 1);
+  EXPECT_EQ(contents(obj), "old obj");
+  EXPECT_EQ(contents(mtl), "old mtl");
+}
+
+TEST_F(ExportCli, WarningsAndStrict) {
+  const fs::path scene = write("bent.json", R"({
+    "format": "shadowgen-scene/1",
+    "polygons": [{"id": "bent", "outer": [[0,0,0],[1,0,0],[1,1,0.5],[0,1,0]], "holes": []}],
+    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
+  })");
+  const Outcome loud = run({"export", scene.string(), "--obj", (dir_ / "a.obj").string()});
+  EXPECT_EQ(loud.code, 0) << loud.err;
+  EXPECT_NE(loud.err.find("warning"), std::string::npos) << loud.err;
+  const Outcome quiet =
+      run({"export", scene.string(), "--obj", (dir_ / "b.obj").string(), "--quiet"});
+  EXPECT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+  EXPECT_EQ(without_mtllib(contents(dir_ / "a.obj")), without_mtllib(contents(dir_ / "b.obj")));
+  // The bent square is two triangles, each with its own normal, all lit.
+  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(contents(dir_ / "a.obj"));
+  EXPECT_EQ(obj.normals.size(), 2u);
+  ASSERT_EQ(obj.groups.size(), 1u);
+  EXPECT_EQ(shadowgen::test::material_areas(obj.groups[0]).count("sun"), 1u);
+
+  const Outcome strict =
+      run({"export", scene.string(), "--obj", (dir_ / "c.obj").string(), "--strict"});
+  EXPECT_EQ(strict.code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "c.obj"));
+  EXPECT_FALSE(fs::exists(dir_ / "c.mtl"));
+}
+
+TEST_F(ExportCli, HelpAndUsage) {
+  const Outcome top = run({"--help"});
+  EXPECT_EQ(top.code, 0);
+  EXPECT_NE(top.out.find("export"), std::string::npos) << top.out;
+  const Outcome help = run({"export", "--help"});
+  EXPECT_EQ(help.code, 0);
+  for (const char* option : {"--obj", "--strict", "--threads", "--quiet"}) {
+    EXPECT_NE(help.out.find(option), std::string::npos) << option << "\n" << help.out;
+  }
+  EXPECT_EQ(run({"export", kCourtyard.string()}).code, 2);                 // no --obj
+  EXPECT_EQ(run({"export", "--obj", (dir_ / "x.obj").string()}).code, 2);  // no input
+  EXPECT_EQ(
+      run({"export", kCourtyard.string(), "--obj", (dir_ / "x.obj").string(), "--threads", "many"})
+          .code,
+      2);
+  EXPECT_EQ(files(), std::vector<std::string>{});
+}
+
+}  // namespace

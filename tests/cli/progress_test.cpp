@@ -1,0 +1,119 @@
+// The progress line of `shadowgen generate` (cli/progress.h): its text, and the in-place
+// redrawing, written to a string stream instead of a terminal.
+
+#include "cli/progress.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+namespace shadowgen::cli {
+namespace {
+
+TEST(FormatProgress, OneScene) {
+  ProgressLine line;
+  line.scene = "scenes/courtyard.json";
+  line.lights_total = 8;
+  line.seconds = 0.04;
+  EXPECT_EQ(format_progress(line), "scenes/courtyard.json: lights 0/8, 0.0 s");
+
+  line.lights_done = 3;
+  line.faces = 1204;
+  line.any_light_done = true;
+  line.seconds = 2.36;
+  EXPECT_EQ(format_progress(line),
+            "scenes/courtyard.json: lights 3/8, last light 1204 faces, 2.4 s");
+}
+
+TEST(FormatProgress, SeveralScenesShowWhichOne) {
+  ProgressLine line;
+  line.scene = "b.json";
+  line.scene_index = 1;
+  line.scene_count = 3;
+  line.lights_done = 2;
+  line.lights_total = 2;
+  line.faces = 0;
+  line.any_light_done = true;
+  line.seconds = 125.0;
+  EXPECT_EQ(format_progress(line), "[2/3] b.json: lights 2/2, last light 0 faces, 125.0 s");
+}
+
+TEST(FormatProgress, NonsenseSecondsShowAsZero) {
+  ProgressLine line;
+  line.scene = "a.json";
+  line.seconds = -1.0;
+  EXPECT_EQ(format_progress(line), "a.json: lights 0/0, 0.0 s");
+}
+
+// Elapsed seconds vary from run to run, so the drawn text is checked up to them.
+TEST(ProgressDisplay, RedrawsInPlaceAndEndsTheLine) {
+  std::ostringstream out;
+  ProgressLine line;
+  line.scene = "scene.json";
+  line.lights_total = 2;
+  {
+    ProgressDisplay display(&out, line);
+    const auto callback = display.callback();
+    ASSERT_TRUE(callback);
+    LightStats stats;
+    stats.faces_considered = 5;
+    callback(1, stats);
+    stats.faces_considered = 7;
+    callback(0, stats);
+    display.finish();
+    display.finish();  // once only
+  }
+  const std::string text = out.str();
+  EXPECT_EQ(text.rfind("\rscene.json: lights 0/2, ", 0), 0u) << text;
+  const std::size_t first = text.find("\rscene.json: lights 1/2, last light 5 faces, ");
+  const std::size_t second = text.find("\rscene.json: lights 2/2, last light 7 faces, ");
+  EXPECT_NE(first, std::string::npos) << text;
+  EXPECT_NE(second, std::string::npos) << text;
+  EXPECT_LT(first, second);
+  EXPECT_EQ(text.back(), '\n');
+  EXPECT_EQ(text.find('\n'), text.size() - 1) << text;  // one line, redrawn in place
+}
+
+TEST(ProgressDisplay, ALongerLineIsBlankedWhenAShorterOneFollows) {
+  std::ostringstream out;
+  ProgressLine line;
+  line.scene = "s.json";
+  line.lights_total = 10;
+  ProgressDisplay display(&out, line);
+  LightStats stats;
+  stats.faces_considered = 123456789;
+  display.light_done(stats);  // "..., last light 123456789 faces, ..."
+  stats.faces_considered = 1;
+  display.light_done(stats);  // nine characters shorter
+  const std::string text = out.str();
+  const std::size_t last = text.rfind('\r');
+  const std::size_t before = text.rfind('\r', last - 1);
+  EXPECT_EQ(text.size() - last, last - before) << text;  // same width, padded with blanks
+  EXPECT_EQ(text.back(), ' ');
+}
+
+TEST(ProgressDisplay, SilentWithoutAStream) {
+  ProgressLine line;
+  line.scene = "scene.json";
+  line.lights_total = 1;
+  ProgressDisplay display(nullptr, line);
+  EXPECT_FALSE(display.callback());
+  display.light_done(LightStats{});
+  display.finish();
+}
+
+TEST(ProgressDisplay, TheDestructorEndsAnOpenLine) {
+  std::ostringstream out;
+  {
+    ProgressLine line;
+    line.scene = "scene.json";
+    line.lights_total = 3;
+    ProgressDisplay display(&out, line);
+    display.light_done(LightStats{});
+  }  // as when generation throws
+  EXPECT_EQ(out.str().back(), '\n');
+}
+
+}  // namespace
+}  // namespace shadowgen::cli

@@ -1,0 +1,343 @@
+// End-to-end tests of `shadowgen render`: the courtyard example's database drawn from two
+// viewpoints after its scene file is gone (so no shadow pass can run), checked by
+// xmllint (well-formed XML), rsvg-convert (a PNG comes out) and by measuring the SVG's
+// own paths against the report's lit areas; usage and input errors.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const std::string& arg) {
+  std::string q = "'";
+  for (const char c : arg) {
+    if (c == '\'') {
+      q += "'\\''";
+    } else {
+      q += c;
+    }
+  }
+  return q + "'";
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+struct Outcome {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Area of one <path>'s region: its first subpath is the outer loop, the others holes.
+double path_area(const std::string& d) {
+  std::vector<std::vector<std::pair<double, double>>> loops;
+  std::vector<double> numbers;
+  auto flush = [&] {
+    if (numbers.empty()) return;
+    loops.emplace_back();
+    for (std::size_t i = 0; i + 1 < numbers.size(); i += 2) {
+      loops.back().emplace_back(numbers[i], numbers[i + 1]);
+    }
+    numbers.clear();
+  };
+  const char* p = d.data();
+  const char* end = p + d.size();
+  while (p < end) {
+    if (*p == 'M') flush();
+    if (*p == 'M' || *p == 'L' || *p == 'Z' || *p == ' ' || *p == ',') {
+      ++p;
+      continue;
+    }
+    double v = 0.0;
+    const auto [next, error] = std::from_chars(p, end, v);
+    if (error != std::errc()) {
+      ADD_FAILURE() << "not a number at: " << std::string(p, std::min<std::size_t>(20, end - p));
+      return NAN;
+    }
+    numbers.push_back(v);
+    p = next;
+  }
+  flush();
+  double area = 0.0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    double twice = 0.0;
+    const auto& loop = loops[l];
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const auto& [x0, y0] = loop[i];
+      const auto& [x1, y1] = loop[(i + 1) % loop.size()];
+      twice += (x0 - loop[0].first) * (y1 - loop[0].second) -
+               (x1 - loop[0].first) * (y0 - loop[0].second);
+    }
+    area += (l == 0 ? 0.5 : -0.5) * std::abs(twice);
+  }
+  return area;
+}
+
+struct SvgAreas {
+  double pixels_per_unit = 0.0;
+  std::size_t paths = 0;
+  // By (face id, light id or "shadow"), in square pixels.
+  std::map<std::pair<std::string, std::string>, double> by_face_and_light;
+  std::map<std::string, double> by_face;
+};
+
+SvgAreas measure(const std::string& svg) {
+  SvgAreas result;
+  const std::regex scale(R"re(data-pixels-per-unit="([^"]+)")re");
+  std::smatch m;
+  if (std::regex_search(svg, m, scale)) result.pixels_per_unit = std::stod(m[1]);
+  const std::regex path(
+      R"re(<path d="([^"]*)" fill="#[0-9a-f]{6}" fill-rule="evenodd" data-face="([^"]*)" data-lights="([^"]*)")re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator();
+       ++it) {
+    ++result.paths;
+    const double area = path_area((*it)[1]);
+    const std::string face = (*it)[2], lights = (*it)[3];
+    result.by_face[face] += area;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t plus = lights.find('+', start);
+      result.by_face_and_light[{face, lights.substr(start, plus - start)}] += area;
+      if (plus == std::string::npos) break;
+      start = plus + 1;
+    }
+  }
+  return result;
+}
+
+double relative_error(double actual, double expected) {
+  return std::abs(actual - expected) / std::max(std::abs(expected), 1e-300);
+}
+
+class RenderCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(::testing::TempDir()) /
+           (std::string("shadowgen-render-") + info->name() + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "run");
+    // The courtyard's database, made from a copy of the example that is then deleted.
+    const fs::path scene = dir_ / "courtyard.json";
+    fs::copy_file(fs::path(SHADOWGEN_EXAMPLES_DIR) / "scenes" / "courtyard.json", scene);
+    db_ = dir_ / "courtyard.shadowed.json";
+    const Outcome generated = run({"generate", scene.string(), "-o", db_.string()});
+    ASSERT_EQ(generated.code, 0) << generated.err;
+    const Outcome report = run({"report", db_.string()});
+    ASSERT_EQ(report.code, 0) << report.err;
+    std::istringstream rows(report.out);
+    std::string line;
+    std::getline(rows, line);  // header
+    while (std::getline(rows, line)) {
+      std::vector<std::string> cells;
+      std::stringstream cell_stream(line);
+      for (std::string cell; std::getline(cell_stream, cell, ',');) cells.push_back(cell);
+      ASSERT_EQ(cells.size(), 5u) << line;
+      areas_[cells[0]] = std::stod(cells[2]);
+      lit_[{cells[0], cells[1]}] = std::stod(cells[3]);
+    }
+    fs::remove(scene);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  Outcome run(const std::vector<std::string>& args) const {
+    std::string command = quoted(SHADOWGEN_EXECUTABLE);
+    for (const std::string& arg : args) {
+      command += ' ';
+      command += quoted(arg);
+    }
+    command += " >";
+    command += quoted((dir_ / "run" / "out").string());
+    command += " 2>";
+    command += quoted((dir_ / "run" / "err").string());
+    command += " </dev/null";
+    Outcome result;
+    result.code = shell(command);
+    result.out = contents(dir_ / "run" / "out");
+    result.err = contents(dir_ / "run" / "err");
+    return result;
+  }
+
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      if (entry.path().filename() != "run") names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  // xmllint finds the file well-formed and rsvg-convert draws it into a non-empty PNG.
+  void ExpectValidSvg(const fs::path& svg) const {
+    EXPECT_EQ(shell("xmllint --noout " + quoted(svg.string()) + " 2>" +
+                    quoted((dir_ / "run" / "xmllint").string())),
+              0)
+        << contents(dir_ / "run" / "xmllint");
+    const fs::path png = fs::path(svg).replace_extension(".png");
+    EXPECT_EQ(shell("rsvg-convert " + quoted(svg.string()) + " -o " + quoted(png.string())), 0);
+    ASSERT_TRUE(fs::exists(png));
+    const std::string bytes = contents(png);
+    EXPECT_GT(bytes.size(), 100u);
+    EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  }
+
+  fs::path dir_;
+  fs::path db_;
+  std::map<std::string, double> areas_;
+  std::map<std::pair<std::string, std::string>, double> lit_;
+};
+
+TEST_F(RenderCli, TwoViewpointsFromTheDatabaseAlone) {
+  ASSERT_FALSE(fs::exists(dir_ / "courtyard.json"));
+
+  // The database's own view, in perspective.
+  const fs::path main_svg = dir_ / "main.svg";
+  const Outcome main_view = run({"render", db_.string(), "--view", "main", "--svg",
+                                 main_svg.string(), "--width", "640", "--height", "480"});
+  ASSERT_EQ(main_view.code, 0) << main_view.err;
+  EXPECT_EQ(main_view.out, "");
+  EXPECT_EQ(main_view.err, "");
+  ExpectValidSvg(main_svg);
+  const SvgAreas main_areas = measure(contents(main_svg));
+  EXPECT_GT(main_areas.paths, 10u);
+  for (const char* face : {"ground", "wall-south", "canopy"}) {
+    EXPECT_GT(main_areas.by_face.count(face), 0u) << face;
+  }
+  EXPECT_NE(contents(main_svg).find("viewBox=\"0 0 640 480\""), std::string::npos);
+
+  // Straight down from between the canopy (z = 2.5) and the ground: the orthographic
+  // camera's near plane through its eye cuts the canopy away, the wall is edge-on, so the
+  // whole ground is seen and its lit pieces must add up to the report's lit areas.
+  const fs::path top_svg = dir_ / "top.svg";
+  const Outcome top = run({"render", db_.string(), "--eye", "10,10,2", "--target", "10,10,0",
+                           "--up", "0,1,0", "--ortho", "--scale", "20", "--width", "440",
+                           "--height", "440", "--svg", top_svg.string()});
+  ASSERT_EQ(top.code, 0) << top.err;
+  ExpectValidSvg(top_svg);
+  const SvgAreas top_areas = measure(contents(top_svg));
+  ASSERT_EQ(top_areas.pixels_per_unit, 20.0);
+  const double s2 = 400.0;
+  EXPECT_EQ(top_areas.by_face.size(), 1u);  // only the ground
+  EXPECT_LE(relative_error(top_areas.by_face.at("ground") / s2, areas_.at("ground")), 1e-9);
+  for (const char* light : {"sun", "lamp"}) {
+    const double expected = lit_.at({"ground", light});
+    ASSERT_GT(expected, 0.0);
+    const double measured = top_areas.by_face_and_light.at({"ground", light}) / s2;
+    // Holds to 1e-15 here; the contract is 1e-6.
+    EXPECT_LE(relative_error(measured, expected), 1e-9)
+        << light << ": " << measured << " vs " << expected;
+  }
+  EXPECT_EQ(files(), (std::vector<std::string>{"courtyard.shadowed.json", "main.png", "main.svg",
+                                               "top.png", "top.svg"}));
+}
+
+TEST_F(RenderCli, PerspectiveFromEyeAndFittedOrthographic) {
+  const fs::path inside = dir_ / "inside.svg";
+  // From inside the courtyard, under the canopy, looking at the wall's windows.
+  const Outcome perspective = run({"render", db_.string(), "--eye", "10,9,1.5", "--target",
+                                   "10,4,1.5", "--fov", "100", "--svg", inside.string()});
+  ASSERT_EQ(perspective.code, 0) << perspective.err;
+  ExpectValidSvg(inside);
+  const SvgAreas areas = measure(contents(inside));
+  EXPECT_GT(areas.by_face.count("wall-south"), 0u);
+  EXPECT_GT(areas.by_face.count("canopy"), 0u);  // overhead, seen from below: its back
+
+  const fs::path fitted = dir_ / "fitted.svg";
+  const Outcome ortho = run({"render", db_.string(), "--view", "main", "--ortho", "--svg",
+                             fitted.string(), "--width", "300", "--height", "300"});
+  ASSERT_EQ(ortho.code, 0) << ortho.err;
+  ExpectValidSvg(fitted);
+  EXPECT_GT(measure(contents(fitted)).pixels_per_unit, 0.0);
+}
+
+TEST_F(RenderCli, UsageErrorsExitTwoAndLeaveNoSvg) {
+  const std::string db = db_.string(), svg = (dir_ / "out.svg").string();
+  EXPECT_EQ(run({"render", db, "--svg", svg}).code, 2);  // no camera
+  EXPECT_EQ(
+      run({"render", db, "--view", "main", "--eye", "1,2,3", "--target", "0,0,0", "--svg", svg})
+          .code,
+      2);                                                                     // both
+  EXPECT_EQ(run({"render", db, "--eye", "1,2,3", "--svg", svg}).code, 2);     // no target
+  EXPECT_EQ(run({"render", db, "--target", "1,2,3", "--svg", svg}).code, 2);  // no eye
+  EXPECT_EQ(run({"render", db, "--eye", "1,2", "--target", "0,0,0", "--svg", svg}).code, 2);
+  EXPECT_EQ(run({"render", db, "--eye", "1,2,x", "--target", "0,0,0", "--svg", svg}).code, 2);
+  EXPECT_EQ(run({"render", db, "--view", "main"}).code, 2);  // no --svg
+  EXPECT_EQ(run({"render", db, "--view", "main", "--scale", "3", "--svg", svg}).code, 2);
+  EXPECT_EQ(run({"render", db, "--view", "main", "--width", "0", "--svg", svg}).code, 2);
+  EXPECT_EQ(run({"render", "--view", "main", "--svg", svg}).code, 2);  // no database
+  const Outcome usage = run({"render", db, "--svg", svg});
+  EXPECT_NE(usage.err.find("--view"), std::string::npos) << usage.err;
+  EXPECT_EQ(files(), std::vector<std::string>{"courtyard.shadowed.json"});
+
+  const Outcome help = run({"render", "--help"});
+  EXPECT_EQ(help.code, 0);
+  for (const char* option : {"--view", "--eye", "--target", "--up", "--fov", "--ortho", "--scale",
+                             "--svg", "--width", "--height"}) {
+    EXPECT_NE(help.out.find(option), std::string::npos) << option << "\n" << help.out;
+  }
+}
+
+TEST_F(RenderCli, BadInputExitsOneAndLeavesNoSvg) {
+  const std::string svg = (dir_ / "out.svg").string();
+  const Outcome unknown = run({"render", db_.string(), "--view", "balcony", "--svg", svg});
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_EQ(unknown.err.rfind("shadowgen: ", 0), 0u) << unknown.err;
+  EXPECT_NE(unknown.err.find("balcony"), std::string::npos) << unknown.err;
+  EXPECT_EQ(std::count(unknown.err.begin(), unknown.err.end(), '\n'), 1) << unknown.err;
+
+  const Outcome same =
+      run({"render", db_.string(), "--eye", "1,2,3", "--target", "1,2,3", "--svg", svg});
+  EXPECT_EQ(same.code, 1);
+
+  // A scene is not a database: render never runs a shadow pass.
+  std::ofstream(dir_ / "scene.json")
+      << R"({"format": "shadowgen-scene/1", "polygons": [], "lights": []})";
+  const Outcome scene =
+      run({"render", (dir_ / "scene.json").string(), "--view", "main", "--svg", svg});
+  EXPECT_EQ(scene.code, 1);
+  EXPECT_NE(scene.err.find("scene.json"), std::string::npos) << scene.err;
+  fs::remove(dir_ / "scene.json");
+
+  const Outcome missing =
+      run({"render", (dir_ / "none.json").string(), "--view", "main", "--svg", svg});
+  EXPECT_EQ(missing.code, 1);
+  const Outcome unwritable =
+      run({"render", db_.string(), "--view", "main", "--svg", (dir_ / "no" / "out.svg").string()});
+  EXPECT_EQ(unwritable.code, 1);
+  EXPECT_NE(unwritable.err.find("out.svg"), std::string::npos) << unwritable.err;
+  EXPECT_EQ(files(), std::vector<std::string>{"courtyard.shadowed.json"});
+
+  // A failed run leaves an existing picture alone.
+  std::ofstream(svg) << "old picture";
+  EXPECT_EQ(run({"render", db_.string(), "--view", "balcony", "--svg", svg}).code, 1);
+  EXPECT_EQ(contents(svg), "old picture");
+}
+
+}  // namespace

@@ -1,0 +1,391 @@
+// Pictures of the shadowed database (shadowgen/render.h): the pieces' areas against the
+// database's lit areas in top-down orthographic views, pieces that never overlap and
+// cover the image of the visible faces, cameras inside a closed box and next to a face
+// crossing the near plane, back sides, and the shading formula.
+
+#include "shadowgen/render.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <glm/geometric.hpp>
+#include <string>
+#include <vector>
+
+#include "clipper/clip.h"
+#include "shadowgen/camera.h"
+#include "shadowgen/generate.h"
+#include "shadowgen/report.h"
+#include "shadowgen/scene_reader.h"
+
+namespace shadowgen {
+namespace {
+
+ShadowedScene generated(const std::string& json) {
+  return generate_shadows(parse_scene(json, "test.json").scene).shadowed;
+}
+
+double relative_error(double actual, double expected) {
+  return std::abs(actual - expected) / std::max(std::abs(expected), 1e-300);
+}
+
+bool contains(const std::vector<std::size_t>& set, std::size_t light) {
+  return std::find(set.begin(), set.end(), light) != set.end();
+}
+
+double pieces_area(const Picture& picture) {
+  double sum = 0.0;
+  for (const Piece& piece : picture.pieces) sum += clipper::area(piece.shape);
+  return sum;
+}
+
+// Every pair of pieces overlaps by no more than `tolerance` square pixels.
+void ExpectNoOverlap(const Picture& picture, double tolerance) {
+  const std::vector<Piece>& pieces = picture.pieces;
+  for (std::size_t a = 0; a < pieces.size(); ++a) {
+    for (std::size_t b = a + 1; b < pieces.size(); ++b) {
+      const double overlap =
+          clipper::area(clipper::intersection({pieces[a].shape}, {pieces[b].shape}));
+      EXPECT_LE(overlap, tolerance)
+          << "pieces " << a << " (" << pieces[a].face_id << ", " << pieces[a].light_set << ") and "
+          << b << " (" << pieces[b].face_id << ", " << pieces[b].light_set << ")";
+    }
+  }
+}
+
+// Every piece vertex lies within the picture.
+void ExpectInsidePicture(const Picture& picture) {
+  const double slack = 1e-9 * std::max(picture.width, picture.height);
+  for (const Piece& piece : picture.pieces) {
+    for (const clipper::Point2& p : piece.shape.outer) {
+      EXPECT_GE(p.x, -slack);
+      EXPECT_GE(p.y, -slack);
+      EXPECT_LE(p.x, picture.width + slack);
+      EXPECT_LE(p.y, picture.height + slack);
+    }
+  }
+}
+
+// A 10 × 10 ground, a horizontal 4 × 4 occluder at z = 1 and a tilted one, a slanting sun
+// and a lamp with a range: shadows of both lights overlap on the ground.
+constexpr const char* kGroundScene = R"({
+  "format": "shadowgen-scene/1",
+  "polygons": [
+    {"id": "ground", "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
+    {"id": "roof", "outer": [[2,3,1],[6,3,1],[6,7,1],[2,7,1]],
+     "holes": [[[3,4,1],[3,5,1],[4,5,1],[4,4,1]]]},
+    {"id": "slab", "outer": [[6,6,0.5],[9,6,0.8],[9,9,1.4],[6,9,0.9]]}
+  ],
+  "lights": [
+    {"id": "sun", "type": "directional", "direction": [0.3, 0.2, -1]},
+    {"id": "lamp", "type": "point", "position": [7, 2, 3],
+     "range": {"falloff_start": 2, "end": 30, "exponent": 2}}
+  ]
+})";
+
+TEST(Render, TopDownOrthographicLitAreasEqualTheDatabase) {
+  const ShadowedScene shadowed = generated(kGroundScene);
+  const std::vector<ReportRow> rows = report_rows(shadowed);
+  // Below the occluders (z = 0.25), so that nothing hides the ground: its visible image is
+  // all of it, and the lit pieces must add up to its lit area.
+  Camera camera;
+  camera.eye = {5, 5, 0.25};
+  camera.target = {5, 5, 0};
+  camera.up = {0, 1, 0};
+  camera.orthographic = true;
+  camera.pixels_per_unit = 37.5;
+  RenderOptions options;
+  options.width = 400;
+  options.height = 400;
+  const Picture picture = render(shadowed, camera, options);
+  const double s2 = camera.pixels_per_unit * camera.pixels_per_unit;
+  ASSERT_FALSE(picture.pieces.empty());
+  EXPECT_EQ(picture.stats.hsr.input_polygons, 1u);  // the occluders are cut away
+
+  double ground = 0.0;
+  for (const Piece& piece : picture.pieces) {
+    EXPECT_EQ(piece.face_id, "ground");
+    EXPECT_FALSE(piece.back_side);
+    ground += clipper::area(piece.shape);
+  }
+  EXPECT_LE(relative_error(ground / s2, 100.0), 1e-12);
+  for (const ReportRow& row : rows) {
+    if (shadowed.scene.faces[row.face].id != "ground") continue;
+    double lit = 0.0;
+    for (const Piece& piece : picture.pieces) {
+      if (contains(piece.lights, row.light)) lit += clipper::area(piece.shape);
+    }
+    ASSERT_GT(row.lit_area, 0.0);
+    ASSERT_LT(row.lit_area, 100.0);
+    EXPECT_LE(relative_error(lit / s2, row.lit_area), 1e-9)
+        << shadowed.scene.lights[row.light].id << ": " << lit / s2 << " vs " << row.lit_area;
+  }
+  ExpectNoOverlap(picture, 1e-9 * options.width * options.height);
+  ExpectInsidePicture(picture);
+}
+
+TEST(Render, OrthographicUpAndFittedScale) {
+  const ShadowedScene shadowed = generated(kGroundScene);
+  Camera camera;
+  camera.eye = {5, 5, 0.25};
+  camera.target = {5, 5, 0};
+  camera.up = {0, 1, 0};
+  camera.orthographic = true;  // pixels_per_unit 0: fit
+  RenderOptions options;
+  options.width = 300;
+  options.height = 200;
+  const Picture picture = render(shadowed, camera, options);
+  // The scene spans 10 × 10 around the target: the height is the tighter side.
+  EXPECT_DOUBLE_EQ(picture.pixels_per_unit, 0.95 * 200.0 / 10.0);
+  // World +x is right, world +y is up (pixel y down): the ground's corner (0, 0) is at the
+  // bottom left.
+  const double s = picture.pixels_per_unit;
+  double min_x = INFINITY, max_y = -INFINITY;
+  for (const Piece& piece : picture.pieces) {
+    for (const clipper::Point2& p : piece.shape.outer) {
+      min_x = std::min(min_x, p.x);
+      max_y = std::max(max_y, p.y);
+    }
+  }
+  EXPECT_NEAR(min_x, 150.0 - 5.0 * s, 1e-9);
+  EXPECT_NEAR(max_y, 100.0 + 5.0 * s, 1e-9);
+}
+
+// The picture's pieces cover exactly the union of the faces' images within the window.
+TEST(Render, PerspectivePiecesNeverOverlapAndCoverTheVisibleImage) {
+  const ShadowedScene shadowed = generated(kGroundScene);
+  Camera camera;
+  camera.eye = {14, -9, 8};
+  camera.target = {5, 5, 0};
+  camera.fov_deg = 40;
+  RenderOptions options;
+  options.width = 320;
+  options.height = 240;
+  const Picture picture = render(shadowed, camera, options);
+  ASSERT_FALSE(picture.pieces.empty());
+  ExpectNoOverlap(picture, 1e-9 * options.width * options.height);
+  ExpectInsidePicture(picture);
+
+  const CameraView camera_view(camera, shadowed.scene, options.width, options.height);
+  clipper::PolygonSet2 uncovered{*camera_view.view().window()};
+  for (const Face& face : shadowed.scene.faces) {
+    for (const hsr::Polygon3& part : face.parts) {
+      uncovered = clipper::difference(uncovered, hsr::project_polygon(part, camera_view.view()));
+    }
+  }
+  const double window_area = clipper::area(*camera_view.view().window());
+  const double image_to_pixels = options.width * options.height / window_area;
+  const double covered = (window_area - clipper::area(uncovered)) * image_to_pixels;
+  EXPECT_LE(relative_error(pieces_area(picture), covered), 1e-9)
+      << pieces_area(picture) << " vs " << covered;
+
+  // Every face shows.
+  std::vector<std::string> seen;
+  for (const Piece& piece : picture.pieces) seen.push_back(piece.face_id);
+  for (const char* id : {"ground", "roof", "slab"}) {
+    EXPECT_NE(std::find(seen.begin(), seen.end(), id), seen.end()) << id;
+  }
+}
+
+// A closed 10-unit box, faces turned inward, a lamp inside and a small table under it.
+constexpr const char* kBoxScene = R"({
+  "format": "shadowgen-scene/1",
+  "polygons": [
+    {"id": "floor",   "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
+    {"id": "ceiling", "outer": [[0,0,10],[0,10,10],[10,10,10],[10,0,10]]},
+    {"id": "west",    "outer": [[0,0,0],[0,10,0],[0,10,10],[0,0,10]]},
+    {"id": "east",    "outer": [[10,0,0],[10,0,10],[10,10,10],[10,10,0]]},
+    {"id": "south",   "outer": [[0,0,0],[0,0,10],[10,0,10],[10,0,0]]},
+    {"id": "north",   "outer": [[0,10,0],[10,10,0],[10,10,10],[0,10,10]]},
+    {"id": "table",   "outer": [[4,4,3],[6,4,3],[6,6,3],[4,6,3]]}
+  ],
+  "lights": [{"id": "lamp", "type": "point", "position": [5, 5, 8]}]
+})";
+
+TEST(Render, ViewFromInsideAClosedBox) {
+  const ShadowedScene shadowed = generated(kBoxScene);
+  Camera camera;
+  camera.eye = {2, 2, 5};
+  camera.target = {8, 7, 2};
+  camera.fov_deg = 90;
+  RenderOptions options;
+  options.width = 200;
+  options.height = 150;
+  const Picture picture = render(shadowed, camera, options);
+  // Walls all round: the pieces cover the whole picture.
+  EXPECT_LE(relative_error(pieces_area(picture), 200.0 * 150.0), 1e-9);
+  ExpectNoOverlap(picture, 1e-9 * 200 * 150);
+  ExpectInsidePicture(picture);
+  bool shadow_on_floor = false, lit_floor = false;
+  for (const Piece& piece : picture.pieces) {
+    EXPECT_FALSE(piece.back_side) << piece.face_id;
+    if (piece.face_id == "floor") {
+      (piece.lights.empty() ? shadow_on_floor : lit_floor) = true;
+    }
+    if (piece.lights.empty()) {
+      EXPECT_EQ(piece.light_set, "shadow");
+      EXPECT_NEAR(piece.colour.r, options.albedo.r * options.ambient, 1e-15);
+    } else {
+      EXPECT_EQ(piece.light_set, "lamp");
+      EXPECT_GT(piece.colour.r, options.albedo.r * options.ambient);
+    }
+  }
+  EXPECT_TRUE(shadow_on_floor);  // the table's shadow
+  EXPECT_TRUE(lit_floor);
+}
+
+// A wall at y = 1, x in [-10, 10], z in [-10, 10], beside an eye at the origin looking
+// along +x with a 90-degree field of view: the wall reaches behind the eye, through the
+// near plane. Its image is u in [-1, -0.1] (x from the near plane to 10), v in [-1, 1]:
+// 0.45 of the square picture.
+std::string wall_scene(bool facing_the_eye) {
+  const std::string outer = facing_the_eye ? "[[-10,1,-10],[10,1,-10],[10,1,10],[-10,1,10]]"
+                                           : "[[-10,1,-10],[-10,1,10],[10,1,10],[10,1,-10]]";
+  return R"({"format": "shadowgen-scene/1",
+    "polygons": [{"id": "wall", "outer": )" +
+         outer + R"(}],
+    "lights": [{"id": "sun", "type": "directional", "direction": [0.2, 1, -0.1]}]})";
+}
+
+Camera beside_the_wall() {
+  Camera camera;
+  camera.eye = {0, 0, 0};
+  camera.target = {1, 0, 0};
+  camera.fov_deg = 90;
+  return camera;
+}
+
+TEST(Render, FaceCrossingTheNearPlane) {
+  const ShadowedScene shadowed = generated(wall_scene(true));
+  ASSERT_EQ(shadowed.lit[0][0].size(), 1u);
+  RenderOptions options;
+  options.width = 200;
+  options.height = 200;
+  const Picture picture = render(shadowed, beside_the_wall(), options);
+  ASSERT_FALSE(picture.pieces.empty());
+  EXPECT_LE(relative_error(pieces_area(picture), 0.45 * 200 * 200), 1e-9);
+  ExpectInsidePicture(picture);
+  double min_x = INFINITY, max_x = -INFINITY;
+  for (const Piece& piece : picture.pieces) {
+    EXPECT_EQ(piece.light_set, "sun");
+    EXPECT_FALSE(piece.back_side);
+    for (const clipper::Point2& p : piece.shape.outer) {
+      min_x = std::min(min_x, p.x);
+      max_x = std::max(max_x, p.x);
+    }
+  }
+  // The wall is on the eye's left (right = forward × up = −y).
+  EXPECT_NEAR(min_x, 0.0, 1e-9);
+  EXPECT_NEAR(max_x, 90.0, 1e-9);
+}
+
+TEST(Render, BackSidesGetTheAmbientColourAndNoLight) {
+  const ShadowedScene front = generated(wall_scene(true));
+  const ShadowedScene back = generated(wall_scene(false));
+  EXPECT_TRUE(back.lit[0][0].empty());  // turned away from the sun
+  RenderOptions options;
+  options.width = 200;
+  options.height = 200;
+  const Picture picture = render(back, beside_the_wall(), options);
+  ASSERT_FALSE(picture.pieces.empty());
+  EXPECT_LE(relative_error(pieces_area(picture), 0.45 * 200 * 200), 1e-9);
+  for (const Piece& piece : picture.pieces) {
+    EXPECT_TRUE(piece.back_side);
+    EXPECT_TRUE(piece.lights.empty());
+    EXPECT_EQ(piece.light_set, "shadow");
+    EXPECT_DOUBLE_EQ(piece.colour.g, options.albedo.g * options.ambient);
+  }
+  EXPECT_EQ(picture.stats.back_side_pieces, picture.pieces.size());
+
+  // A face lit on its front side shows nothing of it from behind: from y = 2 the lit wall
+  // is seen from its back.
+  Camera behind = beside_the_wall();
+  behind.eye = {0, 2, 0};
+  behind.target = {1, 2, 0};
+  const Picture from_behind = render(front, behind, options);
+  ASSERT_FALSE(from_behind.pieces.empty());
+  for (const Piece& piece : from_behind.pieces) EXPECT_TRUE(piece.back_side);
+}
+
+// Render reads the lit polygons from the database, whatever they are: a database whose
+// sun lights only the ground's left half (no occluder) is drawn so.
+TEST(Render, DrawsTheDatabaseNotAShadowPass) {
+  ShadowedScene shadowed;
+  shadowed.scene.faces = {
+      Face{"ground", {hsr::Polygon3{{{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}}, {}}}, "x"}};
+  Light sun;
+  sun.id = "sun";
+  shadowed.scene.lights = {sun};
+  shadowed.lit = {{{hsr::Polygon3{{{0, 0, 0}, {5, 0, 0}, {5, 10, 0}, {0, 10, 0}}, {}}}}};
+  Camera camera;
+  camera.eye = {5, 5, 10};
+  camera.target = {5, 5, 0};
+  camera.up = {0, 1, 0};
+  camera.orthographic = true;
+  camera.pixels_per_unit = 10;
+  RenderOptions options;
+  options.width = 120;
+  options.height = 120;
+  const Picture picture = render(shadowed, camera, options);
+  double lit = 0.0, shadow = 0.0;
+  for (const Piece& piece : picture.pieces) {
+    (piece.lights.empty() ? shadow : lit) += clipper::area(piece.shape);
+  }
+  EXPECT_DOUBLE_EQ(lit, 5000.0);
+  EXPECT_DOUBLE_EQ(shadow, 5000.0);
+}
+
+TEST(Render, ShadingFormula) {
+  Scene scene;
+  Light sun;
+  sun.id = "sun";
+  sun.direction = {0, 0, -2};
+  Light lamp;
+  lamp.id = "lamp";
+  lamp.type = LightType::kPoint;
+  lamp.position = {0, 0, 4};
+  lamp.intensity = {1, 0.5, 0};
+  lamp.range = LightRange{1.0, 7.0, 2.0};
+  scene.lights = {sun, lamp};
+  RenderOptions options;
+  options.albedo = {0.5, 0.5, 0.5};
+  options.ambient = 0.2;
+  const glm::dvec3 up(0, 0, 1);
+  // Sun head-on: 0.5 · (0.2 + 0.8 · 1/2 · 1).
+  EXPECT_DOUBLE_EQ(shade(scene, {0}, {3, 3, 0}, up, options).r, 0.5 * (0.2 + 0.4));
+  // Shadow: albedo · ambient.
+  EXPECT_DOUBLE_EQ(shade(scene, {}, {3, 3, 0}, up, options).b, 0.1);
+  // Lamp straight above at d = 4: f = (1 − 3/6)² = 1/4; green intensity 0.5.
+  const Rgb lamp_only = shade(scene, {1}, {0, 0, 0}, up, options);
+  EXPECT_DOUBLE_EQ(lamp_only.r, 0.5 * (0.2 + 0.4 * 0.25));
+  EXPECT_DOUBLE_EQ(lamp_only.g, 0.5 * (0.2 + 0.4 * 0.5 * 0.25));
+  EXPECT_DOUBLE_EQ(lamp_only.b, 0.1);
+  // Inside falloff_start full, beyond end nothing, tilted by the cosine.
+  EXPECT_DOUBLE_EQ(shade(scene, {1}, {0, 0, 3.5}, up, options).r, 0.5 * (0.2 + 0.4));
+  EXPECT_DOUBLE_EQ(shade(scene, {1}, {0, 8, -4}, up, options).r, 0.1);
+  const Rgb tilted = shade(scene, {1}, {0, 0, 3}, glm::normalize(glm::dvec3(1, 0, 1)), options);
+  EXPECT_NEAR(tilted.r, 0.5 * (0.2 + 0.4 * std::sqrt(0.5)), 1e-15);
+  // A light behind the face gives nothing.
+  EXPECT_DOUBLE_EQ(shade(scene, {0}, {0, 0, 0}, -up, options).r, 0.1);
+}
+
+TEST(Render, BadCamerasAreRejected) {
+  const ShadowedScene shadowed = generated(kGroundScene);
+  Camera same;
+  same.eye = same.target = {1, 2, 3};
+  EXPECT_THROW(render(shadowed, same), std::invalid_argument);
+  Camera wide;
+  wide.fov_deg = 180;
+  EXPECT_THROW(render(shadowed, wide), std::invalid_argument);
+  RenderOptions empty;
+  empty.width = 0;
+  EXPECT_THROW(render(shadowed, Camera{}, empty), std::invalid_argument);
+  ShadowedScene misshapen = shadowed;
+  misshapen.lit.pop_back();
+  EXPECT_THROW(render(misshapen, Camera{}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace shadowgen

@@ -1,0 +1,126 @@
+// SVG text of a picture (shadowgen/svg_writer.h): the document's frame, one path per
+// piece with its holes, coordinates that read back to the same doubles, escaped ids.
+
+#include "shadowgen/svg_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace shadowgen {
+namespace {
+
+Picture two_pieces() {
+  Picture picture;
+  picture.width = 64;
+  picture.height = 48;
+  picture.background = {1.0, 1.0, 1.0};
+  Piece square;
+  square.face_id = "wall";
+  square.light_set = "sun+lamp";
+  square.lights = {0, 1};
+  square.colour = {0.5, 0.25, 1.0};
+  square.shape.outer = {{1.0 / 3.0, 2}, {20, 2}, {20, 0.1 + 0.2}, {1.0 / 3.0, 30}};
+  square.shape.holes = {{{5, 5}, {5, 6}, {6, 6}, {6, 5}}};
+  Piece odd;
+  odd.face_id = "a&b<\"c\">'d";
+  odd.light_set = "shadow";
+  odd.back_side = true;
+  odd.shape.outer = {{30, 30}, {31, 30}, {30, 1e-300}};
+  picture.pieces = {square, odd};
+  return picture;
+}
+
+std::vector<double> numbers_of(const std::string& path_data) {
+  std::vector<double> out;
+  const char* p = path_data.data();
+  const char* end = p + path_data.size();
+  while (p < end) {
+    if (*p == 'M' || *p == 'L' || *p == 'Z' || *p == ' ' || *p == ',') {
+      ++p;
+      continue;
+    }
+    double v = 0.0;
+    const auto [next, error] = std::from_chars(p, end, v);
+    EXPECT_EQ(error, std::errc()) << path_data;
+    if (error != std::errc()) break;
+    out.push_back(v);
+    p = next;
+  }
+  return out;
+}
+
+TEST(SvgWriter, FrameBackgroundAndOnePathPerPiece) {
+  const std::string svg = svg_document(two_pieces());
+  EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg ", 0), 0u) << svg;
+  EXPECT_NE(svg.find("width=\"64\" height=\"48\" viewBox=\"0 0 64 48\""), std::string::npos);
+  EXPECT_NE(svg.find("<rect x=\"0\" y=\"0\" width=\"64\" height=\"48\" fill=\"#ffffff\"/>"),
+            std::string::npos);
+  EXPECT_EQ(svg.find("data-pixels-per-unit"), std::string::npos);  // perspective
+  std::size_t paths = 0;
+  for (std::size_t at = svg.find("<path "); at != std::string::npos;
+       at = svg.find("<path ", at + 1)) {
+    ++paths;
+  }
+  EXPECT_EQ(paths, 2u);
+  EXPECT_NE(svg.find("fill=\"#8040ff\" fill-rule=\"evenodd\" data-face=\"wall\" "
+                     "data-lights=\"sun+lamp\"/>"),
+            std::string::npos)
+      << svg;
+  EXPECT_TRUE(svg.ends_with("</svg>\n"));
+}
+
+TEST(SvgWriter, CoordinatesReadBackExactly) {
+  const Picture picture = two_pieces();
+  const std::string svg = svg_document(picture);
+  const std::size_t start = svg.find("<path d=\"") + 9;
+  const std::string d = svg.substr(start, svg.find('"', start) - start);
+  // Outer loop, then the hole, each a closed subpath.
+  EXPECT_EQ(d.rfind("M0.3333333333333333,2 L20,2 20,0.30000000000000004 ", 0), 0u) << d;
+  EXPECT_NE(d.find(" Z M5,5 L"), std::string::npos) << d;
+  std::vector<double> expected;
+  for (const clipper::Point2& p : picture.pieces[0].shape.outer) {
+    expected.insert(expected.end(), {p.x, p.y});
+  }
+  for (const clipper::Point2& p : picture.pieces[0].shape.holes[0]) {
+    expected.insert(expected.end(), {p.x, p.y});
+  }
+  EXPECT_EQ(numbers_of(d), expected);
+  EXPECT_NE(svg.find("30,1e-300 Z"), std::string::npos) << svg;
+}
+
+TEST(SvgWriter, AttributesAreEscaped) {
+  const std::string svg = svg_document(two_pieces());
+  EXPECT_NE(svg.find("data-face=\"a&amp;b&lt;&quot;c&quot;&gt;&apos;d\" data-lights=\"shadow\" "
+                     "data-side=\"back\"/>"),
+            std::string::npos)
+      << svg;
+  Picture bad = two_pieces();
+  bad.pieces[0].face_id = std::string("x\x01y\xff") + "\xc3\xa9";  // control, bad byte, é
+  const std::string text = svg_document(bad);
+  EXPECT_NE(text.find("data-face=\"x\xEF\xBF\xBDy\xEF\xBF\xBD\xc3\xa9\""), std::string::npos);
+}
+
+TEST(SvgWriter, OrthographicScaleIsRecordedAndFilesAreWholeOrAbsent) {
+  Picture picture = two_pieces();
+  picture.pixels_per_unit = 37.5;
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "svg-writer";
+  std::filesystem::create_directories(dir);
+  write_svg(picture, dir / "p.svg");
+  std::ifstream in(dir / "p.svg", std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), svg_document(picture));
+  EXPECT_NE(text.str().find("data-pixels-per-unit=\"37.5\""), std::string::npos);
+  EXPECT_THROW(write_svg(picture, dir / "missing" / "p.svg"), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace shadowgen
