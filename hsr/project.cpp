@@ -83,21 +83,33 @@ clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view) 
     for (const Loop3& h : polygon.holes) p.holes.push_back(project_loop3(h));
     image = clipper::normalized({p});
   } else {
-    const PlaneChart chart = chart_for(plane);
-    clipper::PolygonWithHoles2 flat{to_chart(polygon.outer, chart), {}};
-    for (const Loop3& h : polygon.holes) flat.holes.push_back(to_chart(h, chart));
+    // Everything here is relative to the eye: far from the origin (a scene at 1e8) the
+    // offsets of nearby points are exact and small, so the cut keeps their precision
+    // instead of rounding at the scale of the absolute coordinates.
+    auto relative = [&view](const Loop3& loop) {
+      Loop3 out;
+      out.reserve(loop.size());
+      for (const glm::dvec3& p : loop) out.push_back(p - view.eye());
+      return out;
+    };
+    Polygon3 near_eye{relative(polygon.outer), {}};
+    for (const Loop3& h : polygon.holes) near_eye.holes.push_back(relative(h));
+    const PlaneChart chart = chart_for(plane_of(near_eye));
+    clipper::PolygonWithHoles2 flat{to_chart(near_eye.outer, chart), {}};
+    for (const Loop3& h : near_eye.holes) flat.holes.push_back(to_chart(h, chart));
     // Original vertices are lifted back exactly; only the new ones come from the plane.
     std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original;
-    for (const Loop3* l : loops) {
-      for (const glm::dvec3& p : *l) original.emplace(chart.to_chart(p), p);
+    for (const glm::dvec3& p : near_eye.outer) original.emplace(chart.to_chart(p), p);
+    for (const Loop3& h : near_eye.holes) {
+      for (const glm::dvec3& p : h) original.emplace(chart.to_chart(p), p);
     }
-    // z(p) = forward · (p − eye) is affine on the chart: z = fx·u + fy·v + f0.
+    // z(d) = forward · d is affine on the chart: z = fx·u + fy·v + f0.
     const int i = (chart.drop + 1) % 3, j = (chart.drop + 2) % 3, k = chart.drop;
     const glm::dvec3& f = view.forward();
-    const glm::dvec3& n = plane.normal;
+    const glm::dvec3& n = chart.plane.normal;
     const double fx = f[i] - f[k] * n[i] / n[k];
     const double fy = f[j] - f[k] * n[j] / n[k];
-    const double f0 = f[k] * plane.offset / n[k] - glm::dot(f, view.eye()) - view.near();
+    const double f0 = f[k] * chart.plane.offset / n[k] - view.near();
     detail::Box2 box;
     for (const clipper::Point2& q : flat.outer) box.add(q);
     const clipper::PolygonWithHoles2 keep = detail::half_plane_in_box(fx, fy, f0, box);
@@ -107,11 +119,11 @@ clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view) 
       out.reserve(loop.size());
       for (const clipper::Point2& q : loop) {
         const auto it = original.find(q);
-        glm::dvec3 p = it != original.end() ? it->second : chart.lift(q);
+        glm::dvec3 d = it != original.end() ? it->second : chart.lift(q);
         // A new vertex on the near plane may round a hair behind it: keep it in front.
-        const double z = glm::dot(p - view.eye(), view.forward());
-        if (z < view.near()) p += (view.near() - z) * view.forward();
-        out.push_back(view.project(p));
+        const double z = glm::dot(d, view.forward());
+        if (z < view.near()) d += (view.near() - z) * view.forward();
+        out.push_back(view.project_offset(d));
       }
       return out;
     };

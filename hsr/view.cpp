@@ -65,8 +65,10 @@ glm::dvec3 View::to_eye_frame(const glm::dvec3& p) const {
   return {glm::dot(d, right_), glm::dot(d, up_), glm::dot(d, forward_)};
 }
 
-clipper::Point2 View::project(const glm::dvec3& p) const {
-  const glm::dvec3 e = to_eye_frame(p);
+clipper::Point2 View::project(const glm::dvec3& p) const { return project_offset(p - eye_); }
+
+clipper::Point2 View::project_offset(const glm::dvec3& d) const {
+  const glm::dvec3 e{glm::dot(d, right_), glm::dot(d, up_), glm::dot(d, forward_)};
   if (perspective_) return {e.x / e.z, e.y / e.z};
   return {e.x, e.y};
 }

@@ -54,6 +54,9 @@ class View {
   glm::dvec3 to_eye_frame(const glm::dvec3& p) const;
   // Image point of p; for perspective views p must lie in front of the eye.
   clipper::Point2 project(const glm::dvec3& p) const;
+  // Image point of eye() + offset, from the offset itself: for points constructed
+  // relative to the eye, which a scene far from the origin keeps precise.
+  clipper::Point2 project_offset(const glm::dvec3& offset) const;
   // The ray of points that project to `image`, from the eye (perspective) or from the
   // plane through the centre perpendicular to the direction (orthographic).
   Ray3 ray_through(const clipper::Point2& image) const;
