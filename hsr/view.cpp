@@ -86,6 +86,21 @@ std::optional<glm::dvec3> View::unproject(const clipper::Point2& image, const Pl
   return ray.origin + t * ray.direction;
 }
 
+std::optional<glm::dvec3> View::unproject_offset(const clipper::Point2& image,
+                                                 const glm::dvec3& normal,
+                                                 double offset_from_eye) const {
+  if (perspective_) {
+    const glm::dvec3 d = right_ * image.x + up_ * image.y + forward_;
+    const double denom = glm::dot(normal, d);
+    if (denom == 0.0) return std::nullopt;
+    return (offset_from_eye / denom) * d;
+  }
+  const glm::dvec3 across = right_ * image.x + up_ * image.y;
+  const double denom = glm::dot(normal, forward_);
+  if (denom == 0.0) return std::nullopt;
+  return across + ((offset_from_eye - glm::dot(normal, across)) / denom) * forward_;
+}
+
 std::optional<Nearness> View::nearness_on(const Plane3& plane) const {
   const double nr = glm::dot(plane.normal, right_);
   const double nu = glm::dot(plane.normal, up_);

@@ -62,6 +62,12 @@ class View {
   Ray3 ray_through(const clipper::Point2& image) const;
   // The point of `plane` seen at `image`; nullopt when the ray is parallel to the plane.
   std::optional<glm::dvec3> unproject(const clipper::Point2& image, const Plane3& plane) const;
+  // The same, for points given relative to the eye (the centre, for orthographic views):
+  // the plane normal · d = offset_from_eye, and the result is d, the point's offset from
+  // the eye. Far from the origin this keeps the precision the absolute form loses in
+  // normal · origin.
+  std::optional<glm::dvec3> unproject_offset(const clipper::Point2& image, const glm::dvec3& normal,
+                                             double offset_from_eye) const;
   // Nearness on `plane`, or nullopt when the plane is seen edge-on (it contains the
   // view direction, or the eye).
   std::optional<Nearness> nearness_on(const Plane3& plane) const;

@@ -61,12 +61,17 @@ bool faces_light(const hsr::Plane3& plane, const Light& light) {
 class BackProjector {
  public:
   BackProjector(const hsr::View& view, const hsr::Polygon3& polygon, const hsr::Plane3& plane)
-      : view_(view), plane_(plane) {
+      : view_(view), normal_(plane.normal) {
     auto add = [this](const hsr::Loop3& loop) {
       for (const glm::dvec3& v : loop) original_.emplace(view_.project(v), v);
     };
     add(polygon.outer);
     for (const hsr::Loop3& h : polygon.holes) add(h);
+    // The plane relative to the eye, through the outer loop's mean offset from it: the
+    // offsets of nearby vertices are exact, so a scene far from the origin keeps them.
+    glm::dvec3 mean(0.0);
+    for (const glm::dvec3& v : polygon.outer) mean += v - view_.eye();
+    offset_from_eye_ = glm::dot(normal_, mean / static_cast<double>(polygon.outer.size()));
   }
 
   hsr::Loop3 lift(const clipper::Loop2& loop) const {
@@ -76,8 +81,8 @@ class BackProjector {
       const auto it = original_.find(q);
       if (it != original_.end()) {
         out.push_back(it->second);
-      } else if (const auto p = view_.unproject(q, plane_)) {
-        out.push_back(*p);
+      } else if (const auto d = view_.unproject_offset(q, normal_, offset_from_eye_)) {
+        out.push_back(view_.eye() + *d);
       }
     }
     return out;
@@ -91,7 +96,8 @@ class BackProjector {
 
  private:
   const hsr::View& view_;
-  const hsr::Plane3& plane_;
+  glm::dvec3 normal_;
+  double offset_from_eye_ = 0.0;
   std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original_;
 };
 
@@ -134,11 +140,13 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     for (hsr::Fragment& f : visible.fragments) seen[f.parent].push_back(std::move(f.shape));
 
     // Coplanar faces do not shadow each other: a front-facing face is lit wherever the
-    // plane it shares with others is visible within its own image.
+    // plane it shares with others is visible within its own image. Every member counts as
+    // a receiver, also one that got no fragment at all (a rug lying on the ground, whose
+    // overlap hidden-surface removal gave to the ground).
     std::unordered_map<int, std::vector<std::size_t>> groups;
     for (std::size_t k = 0; k < polygons.size(); ++k) {
       const int g = parts.coplanar[considered[k]];
-      if (g >= 0 && !seen[k].empty()) groups[g].push_back(k);
+      if (g >= 0) groups[g].push_back(k);
     }
     std::vector<clipper::PolygonSet2> extra(polygons.size());
     for (const auto& [g, members] : groups) {
@@ -179,6 +187,11 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     } else if (lit_by_part[i].size() > 1) {
       // Lit through several frusta of a point light: one region, not overlapping pieces.
       lit = detail::unite_views(lit_by_part[i], parts.planes[i]);
+    }
+    // A part seen almost edge-on by the light: cast back onto its plane, a rounded image
+    // point can land far off the part. Its lit region is the part's at most.
+    if (!lit.empty() && !detail::inside_box_of(lit, parts.polygons[i])) {
+      lit = detail::within_part(lit, parts.polygons[i], parts.planes[i]);
     }
     for (hsr::Polygon3& p : lit) {
       ++stats.lit_polygons;

@@ -1,5 +1,7 @@
 #pragma once
 
+// Lit polygons of one face part, set right in the part's own plane chart.
+//
 // Joining what several light views saw of one face part. A point light looks through up
 // to six frusta; a part that spans a seam between two of them is lit in pieces, one per
 // view, each cut at the seam in its own view's image. The two cuts are rounded apart, so
@@ -21,5 +23,15 @@ namespace shadowgen::detail {
 // unchanged; new ones (where pieces of different views cross) are put on the plane.
 std::vector<hsr::Polygon3> unite_views(std::span<const std::vector<hsr::Polygon3>> per_view,
                                        const hsr::Plane3& plane);
+
+// `lit` ∩ `part`, in the part's plane chart. For a part seen almost edge-on by the light,
+// where casting image points back onto the plane divides by the sine of a tiny angle and
+// a rounded point can land far outside the part: the lit region is the part's at most.
+std::vector<hsr::Polygon3> within_part(std::span<const hsr::Polygon3> lit,
+                                       const hsr::Polygon3& part, const hsr::Plane3& plane);
+
+// Whether every vertex of `lit` lies within the part's bounding box, grown by 2^-40 of
+// its size and position (then within_part has nothing to cut but roundings).
+bool inside_box_of(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part);
 
 }  // namespace shadowgen::detail
