@@ -2,29 +2,18 @@
 // written to a temporary folder, and its exit code, output and files are checked.
 
 #include <gtest/gtest.h>
-#include <pty.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "tests/cli/cli_harness.h"
+#include "tests/cli/cli_scenes.h"
+
+namespace shadowgen::test {
 namespace {
-
-namespace fs = std::filesystem;
-
-struct Outcome {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
 
 // A square ground (10 × 10 at z = 0) and a smaller square (4 × 4 at z = 1) above it, lit
 // straight down: the ground's lit area is exactly 100 - 16.
@@ -53,113 +42,9 @@ constexpr const char* kTinyCsv =
     "ground,sun,100,84,0.83999999999999997\n"
     "occluder,sun,16,16,1\n";
 
-std::string quoted(const std::string& arg) {
-  std::string q = "'";
-  for (const char c : arg) {
-    if (c == '\'') {
-      q += "'\\''";
-    } else {
-      q += c;
-    }
-  }
-  return q + "'";
-}
-
-std::string contents(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public CliFolderTest<> {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) /
-           (std::string("shadowgen-cli-") + info->name() + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "run");
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
-
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  // Runs shadowgen with `args`; its stdout and stderr are kept apart from the files the
-  // tests look at, in dir_/run.
-  Outcome run(const std::vector<std::string>& args) const {
-    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `" " + std::string`.
-    std::string command = quoted(SHADOWGEN_EXECUTABLE);
-    for (const std::string& arg : args) {
-      command += ' ';
-      command += quoted(arg);
-    }
-    command += " >";
-    command += quoted((dir_ / "run" / "out").string());
-    command += " 2>";
-    command += quoted((dir_ / "run" / "err").string());
-    command += " </dev/null";
-    const int status = std::system(command.c_str());
-    Outcome result;
-    result.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = contents(dir_ / "run" / "out");
-    result.err = contents(dir_ / "run" / "err");
-    return result;
-  }
-
-  // Runs shadowgen with a pseudo-terminal as its stdin, stdout and stderr, as when a person
-  // runs it; `out` gets all it printed, `err` stays empty.
-  Outcome run_on_terminal(const std::vector<std::string>& args) const {
-    std::vector<std::string> argv_text = {SHADOWGEN_EXECUTABLE};
-    argv_text.insert(argv_text.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& arg : argv_text) argv.push_back(arg.data());
-    argv.push_back(nullptr);
-
-    int terminal = -1;
-    const pid_t child = ::forkpty(&terminal, nullptr, nullptr, nullptr);
-    if (child == 0) {
-      ::execv(argv[0], argv.data());
-      ::_exit(127);
-    }
-    Outcome result;
-    if (child < 0) return result;
-    char buffer[4096];
-    for (;;) {
-      const ssize_t n = ::read(terminal, buffer, sizeof buffer);
-      if (n > 0) {
-        result.out.append(buffer, static_cast<std::size_t>(n));
-      } else if (n < 0 && errno == EINTR) {
-        continue;
-      } else {
-        break;  // EIO once the child has closed its side
-      }
-    }
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    ::close(terminal);
-    result.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-  }
-
-  // The files in `folder` (default: the test's folder, without its run/ folder): what the
-  // command left behind.
-  std::vector<std::string> files(const fs::path& folder = {}) const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(folder.empty() ? dir_ : folder)) {
-      if (entry.path() != dir_ / "run") names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  fs::path dir_;
+  Cli() : CliFolderTest("shadowgen-cli") {}
 };
 
 TEST_F(Cli, GenerateThenReport) {
@@ -217,11 +102,7 @@ TEST_F(Cli, ReportToAFile) {
 }
 
 TEST_F(Cli, BrokenSceneExitsOneWithAMessageAndNoOutput) {
-  const fs::path scene = write("broken.json", R"({
-    "format": "shadowgen-scene/1",
-    "polygons": [{"id": "stub", "outer": [[0,0,0],[1,0,0]], "holes": []}],
-    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
-  })");
+  const fs::path scene = write("broken.json", kStubScene);
   const Outcome generated = run({"generate", scene.string(), "-o", (dir_ / "db.json").string()});
   EXPECT_EQ(generated.code, 1);
   EXPECT_EQ(generated.err.rfind("shadowgen: ", 0), 0u) << generated.err;
@@ -267,11 +148,7 @@ TEST_F(Cli, UnreadableInputsExitOne) {
 }
 
 TEST_F(Cli, WarningsGoToStderrUnlessQuietAndAreErrorsWhenStrict) {
-  const fs::path scene = write("bent.json", R"({
-    "format": "shadowgen-scene/1",
-    "polygons": [{"id": "bent", "outer": [[0,0,0],[1,0,0],[1,1,0.5],[0,1,0]], "holes": []}],
-    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
-  })");
+  const fs::path scene = write("bent.json", kBentScene);
   const Outcome loud = run({"generate", scene.string(), "-o", (dir_ / "a.json").string()});
   EXPECT_EQ(loud.code, 0) << loud.err;
   EXPECT_NE(loud.err.find("warning"), std::string::npos) << loud.err;
@@ -356,11 +233,7 @@ TEST_F(Cli, SeveralScenesGiveTheDatabasesOfEachAlone) {
 
 TEST_F(Cli, ABadSceneStopsTheRunAndLeavesTheDatabasesBeforeIt) {
   const fs::path good = write("good.json", kTinyScene);
-  const fs::path bad = write("bad.json", R"({
-    "format": "shadowgen-scene/1",
-    "polygons": [{"id": "stub", "outer": [[0,0,0],[1,0,0]], "holes": []}],
-    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
-  })");
+  const fs::path bad = write("bad.json", kStubScene);
   const fs::path later = write("later.json", kPlateScene);
   const fs::path out = dir_ / "out";
   const Outcome run_out =
@@ -426,7 +299,7 @@ TEST_F(Cli, ProgressOnATerminalOnlyAndNotWhenQuiet) {
 
   // A terminal: one line redrawn in place, ending with both lights done.
   const Outcome shown =
-      run_on_terminal({"generate", scene.string(), "-o", (dir_ / "c.json").string()});
+      run_shadowgen_on_terminal({"generate", scene.string(), "-o", (dir_ / "c.json").string()});
   ASSERT_EQ(shown.code, 0) << shown.out;
   std::string line_start = scene.string();  // "\r<scene>: lights ", built up piece by
   line_start.insert(0, 1, '\r');            // piece for GCC 12's false -Wrestrict
@@ -438,8 +311,8 @@ TEST_F(Cli, ProgressOnATerminalOnlyAndNotWhenQuiet) {
   EXPECT_EQ(contents(dir_ / "c.json"), contents(dir_ / "a.json"));
 
   // --quiet on a terminal: nothing.
-  const Outcome quiet =
-      run_on_terminal({"generate", scene.string(), "-o", (dir_ / "d.json").string(), "--quiet"});
+  const Outcome quiet = run_shadowgen_on_terminal(
+      {"generate", scene.string(), "-o", (dir_ / "d.json").string(), "--quiet"});
   ASSERT_EQ(quiet.code, 0) << quiet.out;
   EXPECT_EQ(quiet.out, "");
   EXPECT_EQ(contents(dir_ / "d.json"), contents(dir_ / "a.json"));
@@ -482,3 +355,4 @@ TEST_F(Cli, ReportAsATable) {
 }
 
 }  // namespace
+}  // namespace shadowgen::test

@@ -6,61 +6,26 @@
 // (well-formed SVG per xmllint, naming only faces and lights of the scene).
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <cstdlib>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "tests/cli/cli_harness.h"
 #include "tests/support/obj_text.h"
 
+namespace shadowgen::test {
 namespace {
 
-namespace fs = std::filesystem;
-
 const fs::path kExamples = fs::path(SHADOWGEN_EXAMPLES_DIR);
-
-struct Outcome {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string quoted(const std::string& arg) {
-  std::string q = "'";
-  for (const char c : arg) {
-    if (c == '\'') {
-      q += "'\\''";
-    } else {
-      q += c;
-    }
-  }
-  return q + "'";
-}
-
-std::string contents(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-int shell(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 // The example names (scene file stems), sorted.
 std::vector<std::string> example_names() {
@@ -73,52 +38,6 @@ std::vector<std::string> example_names() {
   }
   std::sort(names.begin(), names.end());
   return names;
-}
-
-// One CSV record split into fields, with RFC 4180 quoting undone.
-std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool in_quotes = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (in_quotes) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        in_quotes = false;
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"') {
-      in_quotes = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
-
-struct Row {
-  std::string face, light;
-  double area = 0.0, lit_area = 0.0, lit_fraction = 0.0;
-};
-
-std::vector<Row> parse_report(const std::string& csv) {
-  std::vector<Row> rows;
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "face_id,light_id,area,lit_area,lit_fraction");
-  while (std::getline(in, line)) {
-    const std::vector<std::string> f = csv_fields(line);
-    EXPECT_GE(f.size(), 5u) << line;
-    if (f.size() < 5) continue;
-    rows.push_back({f[0], f[1], std::stod(f[2]), std::stod(f[3]), std::stod(f[4])});
-  }
-  return rows;
 }
 
 // Faces of an OBJ file: its `f` records.
@@ -160,52 +79,9 @@ SceneIds scene_ids(const fs::path& scene_path) {
   return ids;
 }
 
-double relative_error(double actual, double expected) {
-  if (expected == 0.0) return std::abs(actual);
-  return std::abs(actual - expected) / std::abs(expected);
-}
-
-class ExampleCli : public ::testing::TestWithParam<std::string> {
+class ExampleCli : public CliFolderTest<::testing::TestWithParam<std::string>> {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = info->name();
-    std::replace(name.begin(), name.end(), '/', '-');
-    dir_ = fs::path(::testing::TempDir()) /
-           ("shadowgen-examples-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "run");
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
-
-  Outcome run(const std::vector<std::string>& args) const {
-    std::string command = quoted(SHADOWGEN_EXECUTABLE);
-    for (const std::string& arg : args) {
-      command += ' ';
-      command += quoted(arg);
-    }
-    command += " >";
-    command += quoted((dir_ / "run" / "out").string());
-    command += " 2>";
-    command += quoted((dir_ / "run" / "err").string());
-    command += " </dev/null";
-    Outcome result;
-    result.code = shell(command);
-    result.out = contents(dir_ / "run" / "out");
-    result.err = contents(dir_ / "run" / "err");
-    return result;
-  }
-
-  void ExpectWellFormedXml(const fs::path& file) const {
-    EXPECT_EQ(shell("xmllint --noout " + quoted(file.string()) + " 2>" +
-                    quoted((dir_ / "run" / "xmllint").string())),
-              0)
-        << file << ": " << contents(dir_ / "run" / "xmllint");
-  }
-
-  fs::path dir_;
+  ExampleCli() : CliFolderTest("shadowgen-examples") {}
 };
 
 TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
@@ -255,12 +131,12 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
   EXPECT_EQ(from_scene.out, from_db.out);
 
   // One row per (face, light), faces in scene order, lights in scene order.
-  const std::vector<Row> rows = parse_report(from_db.out);
+  const std::vector<ReportRow> rows = parse_report(from_db.out);
   ASSERT_EQ(rows.size(), ids.faces.size() * ids.lights.size());
   std::map<std::string, bool> partly_shadowed;  // by light: some face is lit in part only
   for (std::size_t f = 0; f < ids.faces.size(); ++f) {
     for (std::size_t l = 0; l < ids.lights.size(); ++l) {
-      const Row& row = rows[f * ids.lights.size() + l];
+      const ReportRow& row = rows[f * ids.lights.size() + l];
       EXPECT_EQ(row.face, ids.faces[f]);
       EXPECT_EQ(row.light, ids.lights[l]);
       EXPECT_GT(row.area, 0.0) << row.face;
@@ -288,17 +164,17 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
   EXPECT_EQ(exported.err, "");
   ASSERT_TRUE(fs::is_regular_file(obj_path));
   ASSERT_TRUE(fs::is_regular_file(mtl_path));
-  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(contents(obj_path));
+  const ObjText obj = parse_obj(contents(obj_path));
   EXPECT_TRUE(obj.errors.empty()) << obj.errors.front();
   EXPECT_EQ(obj.mtllib, mtl_path.filename().string());
   std::vector<std::string> groups;
   for (const auto& group : obj.groups) groups.push_back(group.name);
   EXPECT_EQ(groups, ids.faces);
-  const shadowgen::test::MtlText mtl = shadowgen::test::parse_mtl(contents(mtl_path));
+  const MtlText mtl = parse_mtl(contents(mtl_path));
   EXPECT_TRUE(mtl.errors.empty()) << mtl.errors.front();
   double worst = 0.0;
   for (const auto& group : obj.groups) {
-    const std::map<std::string, double> areas = shadowgen::test::material_areas(group);
+    const std::map<std::string, double> areas = material_areas(group);
     double total = 0.0;
     std::map<std::string, double> lit;  // by light
     for (const auto& [material, area] : areas) {
@@ -308,7 +184,7 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
       std::istringstream lights(material);
       for (std::string light; std::getline(lights, light, '+');) lit[light] += area;
     }
-    for (const Row& row : rows) {
+    for (const ReportRow& row : rows) {
       if (row.face != group.name) continue;
       const double area_error = relative_error(total, row.area);
       const double lit_error = relative_error(lit[row.light], row.lit_area);
@@ -328,7 +204,7 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
   EXPECT_EQ(rendered.out, "");
   EXPECT_EQ(rendered.err, "");
   ASSERT_TRUE(fs::is_regular_file(svg));
-  ExpectWellFormedXml(svg);
+  ExpectWellFormedXml(svg, dir_ / "run" / "xmllint");
   const std::string picture = contents(svg);
   const std::set<std::string> faces(ids.faces.begin(), ids.faces.end());
   std::set<std::string> light_sets(ids.lights.begin(), ids.lights.end());
@@ -360,3 +236,4 @@ INSTANTIATE_TEST_SUITE_P(Examples, ExampleCli, ::testing::ValuesIn(example_names
                          });
 
 }  // namespace
+}  // namespace shadowgen::test

@@ -4,126 +4,29 @@
 // 1 with one message and leave neither the OBJ nor the MTL behind.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "tests/cli/cli_harness.h"
+#include "tests/cli/cli_scenes.h"
 #include "tests/support/obj_text.h"
 
+namespace shadowgen::test {
 namespace {
-
-namespace fs = std::filesystem;
 
 const fs::path kCourtyard = fs::path(SHADOWGEN_EXAMPLES_DIR) / "scenes" / "courtyard.json";
 
-struct Outcome {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string quoted(const std::string& arg) {
-  std::string q = "'";
-  for (const char c : arg) {
-    if (c == '\'') {
-      q += "'\\''";
-    } else {
-      q += c;
-    }
-  }
-  return q + "'";
-}
-
-std::string contents(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-class ExportCli : public ::testing::Test {
+class ExportCli : public CliFolderTest<> {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) /
-           (std::string("shadowgen-export-") + info->name() + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "run");
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
-
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  Outcome run(const std::vector<std::string>& args) const {
-    std::string command = quoted(SHADOWGEN_EXECUTABLE);
-    for (const std::string& arg : args) {
-      command += ' ';
-      command += quoted(arg);
-    }
-    command += " >";
-    command += quoted((dir_ / "run" / "out").string());
-    command += " 2>";
-    command += quoted((dir_ / "run" / "err").string());
-    command += " </dev/null";
-    const int status = std::system(command.c_str());
-    Outcome result;
-    result.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = contents(dir_ / "run" / "out");
-    result.err = contents(dir_ / "run" / "err");
-    return result;
-  }
-
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      if (entry.path().filename() != "run") names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  fs::path dir_;
+  ExportCli() : CliFolderTest("shadowgen-export") {}
 };
-
-struct CsvRow {
-  std::string face, light;
-  double area = 0.0, lit_area = 0.0;
-};
-
-// The report's CSV (ids here hold no comma or quote).
-std::vector<CsvRow> parse_csv(const std::string& text) {
-  std::vector<CsvRow> rows;
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "face_id,light_id,area,lit_area,lit_fraction");
-  while (std::getline(in, line)) {
-    std::vector<std::string> fields;
-    std::istringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) fields.push_back(cell);
-    EXPECT_EQ(fields.size(), 5u) << line;
-    if (fields.size() != 5) continue;
-    rows.push_back({fields[0], fields[1], std::stod(fields[2]), std::stod(fields[3])});
-  }
-  return rows;
-}
 
 // The lights of a material, from its name ("shadow", "sun", "sun+lamp").
 std::vector<std::string> lights_of(const std::string& material) {
@@ -135,28 +38,23 @@ std::vector<std::string> lights_of(const std::string& material) {
   return lights;
 }
 
-double relative_error(double actual, double expected) {
-  if (expected == 0.0) return std::abs(actual);
-  return std::abs(actual - expected) / std::abs(expected);
-}
-
 // Per face group: all triangles add up to the report's area, and the materials holding a
 // light to its lit_area, within `tolerance` relative. Returns the worst error seen.
 double ExpectObjMatchesReport(const std::string& obj_text, const std::string& csv,
                               double tolerance) {
-  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(obj_text);
+  const ObjText obj = parse_obj(obj_text);
   EXPECT_TRUE(obj.errors.empty()) << obj.errors.front();
-  const std::vector<CsvRow> rows = parse_csv(csv);
+  const std::vector<ReportRow> rows = parse_report(csv);
   double worst = 0.0;
   std::size_t checked = 0;
-  for (const CsvRow& row : rows) {
+  for (const ReportRow& row : rows) {
     const auto group = std::find_if(obj.groups.begin(), obj.groups.end(),
                                     [&row](const auto& g) { return g.name == row.face; });
     if (group == obj.groups.end()) {
       ADD_FAILURE() << "no group " << row.face;
       continue;
     }
-    const std::map<std::string, double> areas = shadowgen::test::material_areas(*group);
+    const std::map<std::string, double> areas = material_areas(*group);
     double total = 0.0, lit = 0.0;
     for (const auto& [material, a] : areas) {
       total += a;
@@ -201,21 +99,21 @@ TEST_F(ExportCli, CourtyardFromDatabaseAndFromSceneMatchTheReport) {
                                                "scene.mtl", "scene.obj"}));
 
   const std::string obj = contents(dir_ / "db.obj");
-  EXPECT_EQ(shadowgen::test::parse_obj(obj).mtllib, "db.mtl");
-  EXPECT_EQ(shadowgen::test::parse_obj(contents(dir_ / "scene.obj")).mtllib, "scene.mtl");
+  EXPECT_EQ(parse_obj(obj).mtllib, "db.mtl");
+  EXPECT_EQ(parse_obj(contents(dir_ / "scene.obj")).mtllib, "scene.mtl");
   EXPECT_EQ(without_mtllib(obj), without_mtllib(contents(dir_ / "scene.obj")));
   EXPECT_EQ(contents(dir_ / "db.mtl"), contents(dir_ / "scene.mtl"));
 
   // Every face is a group, in scene order.
   std::vector<std::string> groups;
-  for (const auto& g : shadowgen::test::parse_obj(obj).groups) groups.push_back(g.name);
+  for (const auto& g : parse_obj(obj).groups) groups.push_back(g.name);
   EXPECT_EQ(groups, (std::vector<std::string>{"ground", "wall-south", "canopy"}));
 
   // Every material the OBJ uses is defined in the MTL, shadow darker than any lit set.
-  const shadowgen::test::MtlText mtl = shadowgen::test::parse_mtl(contents(dir_ / "db.mtl"));
+  const MtlText mtl = parse_mtl(contents(dir_ / "db.mtl"));
   EXPECT_TRUE(mtl.errors.empty());
   ASSERT_EQ(mtl.kd.count("shadow"), 1u);
-  for (const auto& g : shadowgen::test::parse_obj(obj).groups) {
+  for (const auto& g : parse_obj(obj).groups) {
     for (const auto& t : g.triangles) EXPECT_EQ(mtl.kd.count(t.material), 1u) << t.material;
   }
   for (const auto& [name, kd] : mtl.kd) {
@@ -240,14 +138,14 @@ TEST_F(ExportCli, SingleLightLitMaterialAreaIsTheReportsLitArea) {
   const Outcome report = run({"report", path.string()});
   ASSERT_EQ(report.code, 0) << report.err;
 
-  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(contents(dir_ / "sun.obj"));
-  const std::vector<CsvRow> rows = parse_csv(report.out);
+  const ObjText obj = parse_obj(contents(dir_ / "sun.obj"));
+  const std::vector<ReportRow> rows = parse_report(report.out);
   ASSERT_EQ(rows.size(), 3u);
   ASSERT_EQ(obj.groups.size(), 3u);
   double worst = 0.0;
   for (std::size_t f = 0; f < rows.size(); ++f) {
     EXPECT_EQ(obj.groups[f].name, rows[f].face);
-    std::map<std::string, double> areas = shadowgen::test::material_areas(obj.groups[f]);
+    std::map<std::string, double> areas = material_areas(obj.groups[f]);
     for (const auto& [material, a] : areas) {
       EXPECT_TRUE(material == "sun" || material == "shadow") << material;
     }
@@ -258,8 +156,8 @@ TEST_F(ExportCli, SingleLightLitMaterialAreaIsTheReportsLitArea) {
     worst = std::max({worst, lit_error, area_error});
   }
   // The sun lights part of the ground and not all of it: both materials there.
-  EXPECT_GT(shadowgen::test::material_areas(obj.groups[0])["shadow"], 0.0);
-  EXPECT_GT(shadowgen::test::material_areas(obj.groups[0])["sun"], 0.0);
+  EXPECT_GT(material_areas(obj.groups[0])["shadow"], 0.0);
+  EXPECT_GT(material_areas(obj.groups[0])["sun"], 0.0);
   std::printf("courtyard, sun only: worst relative area error %.3g\n", worst);
 }
 
@@ -271,11 +169,7 @@ TEST_F(ExportCli, BadInputExitsOneWithAMessageAndLeavesNothing) {
   EXPECT_NE(missing.err.find("missing.json"), std::string::npos) << missing.err;
   EXPECT_EQ(files(), std::vector<std::string>{});
 
-  const fs::path broken = write("broken.json", R"({
-    "format": "shadowgen-scene/1",
-    "polygons": [{"id": "stub", "outer": [[0,0,0],[1,0,0]], "holes": []}],
-    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
-  })");
+  const fs::path broken = write("broken.json", kStubScene);
   const Outcome bad = run({"export", broken.string(), "--obj", (dir_ / "out.obj").string()});
   EXPECT_EQ(bad.code, 1);
   EXPECT_EQ(bad.err.rfind("shadowgen: ", 0), 0u) << bad.err;
@@ -331,11 +225,7 @@ TEST_F(ExportCli, AFailedRunLeavesExistingOutputsAlone) {
 }
 
 TEST_F(ExportCli, WarningsAndStrict) {
-  const fs::path scene = write("bent.json", R"({
-    "format": "shadowgen-scene/1",
-    "polygons": [{"id": "bent", "outer": [[0,0,0],[1,0,0],[1,1,0.5],[0,1,0]], "holes": []}],
-    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
-  })");
+  const fs::path scene = write("bent.json", kBentScene);
   const Outcome loud = run({"export", scene.string(), "--obj", (dir_ / "a.obj").string()});
   EXPECT_EQ(loud.code, 0) << loud.err;
   EXPECT_NE(loud.err.find("warning"), std::string::npos) << loud.err;
@@ -345,10 +235,10 @@ TEST_F(ExportCli, WarningsAndStrict) {
   EXPECT_EQ(quiet.err, "");
   EXPECT_EQ(without_mtllib(contents(dir_ / "a.obj")), without_mtllib(contents(dir_ / "b.obj")));
   // The bent square is two triangles, each with its own normal, all lit.
-  const shadowgen::test::ObjText obj = shadowgen::test::parse_obj(contents(dir_ / "a.obj"));
+  const ObjText obj = parse_obj(contents(dir_ / "a.obj"));
   EXPECT_EQ(obj.normals.size(), 2u);
   ASSERT_EQ(obj.groups.size(), 1u);
-  EXPECT_EQ(shadowgen::test::material_areas(obj.groups[0]).count("sun"), 1u);
+  EXPECT_EQ(material_areas(obj.groups[0]).count("sun"), 1u);
 
   const Outcome strict =
       run({"export", scene.string(), "--obj", (dir_ / "c.obj").string(), "--strict"});
@@ -376,3 +266,4 @@ TEST_F(ExportCli, HelpAndUsage) {
 }
 
 }  // namespace
+}  // namespace shadowgen::test

@@ -4,23 +4,18 @@
 // output (nor a temporary file) behind.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace {
+#include "tests/cli/cli_harness.h"
 
-namespace fs = std::filesystem;
+namespace shadowgen::test {
+namespace {
 
 struct Malformed {
   const char* name;
@@ -200,38 +195,12 @@ std::vector<Malformed> cases() {
   };
 }
 
-class MalformedCli : public ::testing::TestWithParam<Malformed> {
+class MalformedCli : public CliFolderTest<::testing::TestWithParam<Malformed>> {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) / (std::string("shadowgen-malformed-") + GetParam().name +
-                                             "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "run");
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
+  MalformedCli() : CliFolderTest("shadowgen-malformed") {}
 
-  static std::string quoted(const std::string& arg) {
-    std::string q = "'";
-    for (const char c : arg) {
-      if (c == '\'') {
-        q += "'\\''";
-      } else {
-        q += c;
-      }
-    }
-    return q + "'";
-  }
-
-  static std::string contents(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  // Every file under dir_ but run/, as paths relative to dir_, sorted.
+  // Every file under dir_ but run/, as paths relative to dir_, sorted (the harness's
+  // files() lists one folder only).
   std::vector<std::string> files() const {
     std::vector<std::string> names;
     for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
@@ -242,34 +211,25 @@ class MalformedCli : public ::testing::TestWithParam<Malformed> {
     std::sort(names.begin(), names.end());
     return names;
   }
-
-  fs::path dir_;
 };
 
 TEST_P(MalformedCli, ExitsOneNamingTheProblemAndLeavesNoOutput) {
   const Malformed& c = GetParam();
-  const fs::path scene = dir_ / (std::string(c.name) + ".json");
-  std::ofstream(scene, std::ios::binary) << c.scene;
+  const fs::path scene = write(std::string(c.name) + ".json", c.scene);
   std::vector<std::string> inputs{scene.filename().string()};
   for (const auto& [path, text] : c.files) {
     fs::create_directories((dir_ / path).parent_path());
-    std::ofstream(dir_ / path, std::ios::binary) << text;
+    write(path, text);
     inputs.push_back(path);
   }
   std::sort(inputs.begin(), inputs.end());
 
-  std::string command = quoted(SHADOWGEN_EXECUTABLE) + " generate " + quoted(scene.string()) +
-                        " -o " + quoted((dir_ / "out.json").string());
-  for (const std::string& option : c.options) {
-    command += ' ';
-    command += quoted(option);
-  }
-  command += " >" + quoted((dir_ / "run" / "out").string());
-  command += " 2>" + quoted((dir_ / "run" / "err").string()) + " </dev/null";
-  const int status = std::system(command.c_str());
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  const std::string out = contents(dir_ / "run" / "out");
-  const std::string err = contents(dir_ / "run" / "err");
+  std::vector<std::string> args{"generate", scene.string(), "-o", (dir_ / "out.json").string()};
+  args.insert(args.end(), c.options.begin(), c.options.end());
+  const Outcome outcome = run(args);
+  const int code = outcome.code;
+  const std::string& out = outcome.out;
+  const std::string& err = outcome.err;
 
   EXPECT_EQ(code, 1) << err;
   EXPECT_EQ(out, "");
@@ -292,3 +252,4 @@ INSTANTIATE_TEST_SUITE_P(Scenes, MalformedCli, ::testing::ValuesIn(cases()),
                          });
 
 }  // namespace
+}  // namespace shadowgen::test

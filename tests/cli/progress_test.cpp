@@ -11,10 +11,16 @@
 namespace shadowgen::cli {
 namespace {
 
-TEST(FormatProgress, OneScene) {
+// The line of a scene's run before any light is done.
+ProgressLine starting(const std::string& scene, std::size_t lights_total) {
   ProgressLine line;
-  line.scene = "scenes/courtyard.json";
-  line.lights_total = 8;
+  line.scene = scene;
+  line.lights_total = lights_total;
+  return line;
+}
+
+TEST(FormatProgress, OneScene) {
+  ProgressLine line = starting("scenes/courtyard.json", 8);
   line.seconds = 0.04;
   EXPECT_EQ(format_progress(line), "scenes/courtyard.json: lights 0/8, 0.0 s");
 
@@ -49,9 +55,7 @@ TEST(FormatProgress, NonsenseSecondsShowAsZero) {
 // Elapsed seconds vary from run to run, so the drawn text is checked up to them.
 TEST(ProgressDisplay, RedrawsInPlaceAndEndsTheLine) {
   std::ostringstream out;
-  ProgressLine line;
-  line.scene = "scene.json";
-  line.lights_total = 2;
+  const ProgressLine line = starting("scene.json", 2);
   {
     ProgressDisplay display(&out, line);
     const auto callback = display.callback();
@@ -77,10 +81,7 @@ TEST(ProgressDisplay, RedrawsInPlaceAndEndsTheLine) {
 
 TEST(ProgressDisplay, ALongerLineIsBlankedWhenAShorterOneFollows) {
   std::ostringstream out;
-  ProgressLine line;
-  line.scene = "s.json";
-  line.lights_total = 10;
-  ProgressDisplay display(&out, line);
+  ProgressDisplay display(&out, starting("s.json", 10));
   LightStats stats;
   stats.faces_considered = 123456789;
   display.light_done(stats);  // "..., last light 123456789 faces, ..."
@@ -94,10 +95,7 @@ TEST(ProgressDisplay, ALongerLineIsBlankedWhenAShorterOneFollows) {
 }
 
 TEST(ProgressDisplay, SilentWithoutAStream) {
-  ProgressLine line;
-  line.scene = "scene.json";
-  line.lights_total = 1;
-  ProgressDisplay display(nullptr, line);
+  ProgressDisplay display(nullptr, starting("scene.json", 1));
   EXPECT_FALSE(display.callback());
   display.light_done(LightStats{});
   display.finish();
@@ -106,10 +104,7 @@ TEST(ProgressDisplay, SilentWithoutAStream) {
 TEST(ProgressDisplay, TheDestructorEndsAnOpenLine) {
   std::ostringstream out;
   {
-    ProgressLine line;
-    line.scene = "scene.json";
-    line.lights_total = 3;
-    ProgressDisplay display(&out, line);
+    ProgressDisplay display(&out, starting("scene.json", 3));
     display.light_done(LightStats{});
   }  // as when generation throws
   EXPECT_EQ(out.str().back(), '\n');

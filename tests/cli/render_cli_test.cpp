@@ -4,54 +4,21 @@
 // own paths against the report's lit areas; usage and input errors.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "tests/cli/cli_harness.h"
+
+namespace shadowgen::test {
 namespace {
-
-namespace fs = std::filesystem;
-
-std::string quoted(const std::string& arg) {
-  std::string q = "'";
-  for (const char c : arg) {
-    if (c == '\'') {
-      q += "'\\''";
-    } else {
-      q += c;
-    }
-  }
-  return q + "'";
-}
-
-std::string contents(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-int shell(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-struct Outcome {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
 
 // Area of one <path>'s region: its first subpath is the outer loop, the others holes.
 double path_area(const std::string& d) {
@@ -130,18 +97,12 @@ SvgAreas measure(const std::string& svg) {
   return result;
 }
 
-double relative_error(double actual, double expected) {
-  return std::abs(actual - expected) / std::max(std::abs(expected), 1e-300);
-}
-
-class RenderCli : public ::testing::Test {
+class RenderCli : public CliFolderTest<> {
  protected:
+  RenderCli() : CliFolderTest("shadowgen-render") {}
+
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) /
-           (std::string("shadowgen-render-") + info->name() + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "run");
+    CliFolderTest::SetUp();
     // The courtyard's database, made from a copy of the example that is then deleted.
     const fs::path scene = dir_ / "courtyard.json";
     fs::copy_file(fs::path(SHADOWGEN_EXAMPLES_DIR) / "scenes" / "courtyard.json", scene);
@@ -150,56 +111,16 @@ class RenderCli : public ::testing::Test {
     ASSERT_EQ(generated.code, 0) << generated.err;
     const Outcome report = run({"report", db_.string()});
     ASSERT_EQ(report.code, 0) << report.err;
-    std::istringstream rows(report.out);
-    std::string line;
-    std::getline(rows, line);  // header
-    while (std::getline(rows, line)) {
-      std::vector<std::string> cells;
-      std::stringstream cell_stream(line);
-      for (std::string cell; std::getline(cell_stream, cell, ',');) cells.push_back(cell);
-      ASSERT_EQ(cells.size(), 5u) << line;
-      areas_[cells[0]] = std::stod(cells[2]);
-      lit_[{cells[0], cells[1]}] = std::stod(cells[3]);
+    for (const ReportRow& row : parse_report(report.out)) {
+      areas_[row.face] = row.area;
+      lit_[{row.face, row.light}] = row.lit_area;
     }
     fs::remove(scene);
-  }
-  void TearDown() override {
-    if (!HasFailure()) fs::remove_all(dir_);
-  }
-
-  Outcome run(const std::vector<std::string>& args) const {
-    std::string command = quoted(SHADOWGEN_EXECUTABLE);
-    for (const std::string& arg : args) {
-      command += ' ';
-      command += quoted(arg);
-    }
-    command += " >";
-    command += quoted((dir_ / "run" / "out").string());
-    command += " 2>";
-    command += quoted((dir_ / "run" / "err").string());
-    command += " </dev/null";
-    Outcome result;
-    result.code = shell(command);
-    result.out = contents(dir_ / "run" / "out");
-    result.err = contents(dir_ / "run" / "err");
-    return result;
-  }
-
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      if (entry.path().filename() != "run") names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
   }
 
   // xmllint finds the file well-formed and rsvg-convert draws it into a non-empty PNG.
   void ExpectValidSvg(const fs::path& svg) const {
-    EXPECT_EQ(shell("xmllint --noout " + quoted(svg.string()) + " 2>" +
-                    quoted((dir_ / "run" / "xmllint").string())),
-              0)
-        << contents(dir_ / "run" / "xmllint");
+    ExpectWellFormedXml(svg, dir_ / "run" / "xmllint");
     const fs::path png = fs::path(svg).replace_extension(".png");
     EXPECT_EQ(shell("rsvg-convert " + quoted(svg.string()) + " -o " + quoted(png.string())), 0);
     ASSERT_TRUE(fs::exists(png));
@@ -208,7 +129,6 @@ class RenderCli : public ::testing::Test {
     EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
   }
 
-  fs::path dir_;
   fs::path db_;
   std::map<std::string, double> areas_;
   std::map<std::pair<std::string, std::string>, double> lit_;
@@ -317,8 +237,7 @@ TEST_F(RenderCli, BadInputExitsOneAndLeavesNoSvg) {
   EXPECT_EQ(same.code, 1);
 
   // A scene is not a database: render never runs a shadow pass.
-  std::ofstream(dir_ / "scene.json")
-      << R"({"format": "shadowgen-scene/1", "polygons": [], "lights": []})";
+  write("scene.json", R"({"format": "shadowgen-scene/1", "polygons": [], "lights": []})");
   const Outcome scene =
       run({"render", (dir_ / "scene.json").string(), "--view", "main", "--svg", svg});
   EXPECT_EQ(scene.code, 1);
@@ -335,9 +254,10 @@ TEST_F(RenderCli, BadInputExitsOneAndLeavesNoSvg) {
   EXPECT_EQ(files(), std::vector<std::string>{"courtyard.shadowed.json"});
 
   // A failed run leaves an existing picture alone.
-  std::ofstream(svg) << "old picture";
+  write("out.svg", "old picture");
   EXPECT_EQ(run({"render", db_.string(), "--view", "balcony", "--svg", svg}).code, 1);
   EXPECT_EQ(contents(svg), "old picture");
 }
 
 }  // namespace
+}  // namespace shadowgen::test

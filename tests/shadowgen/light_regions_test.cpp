@@ -22,18 +22,16 @@
 #include "shadowgen/area.h"
 #include "shadowgen/detail/plane_chart.h"
 #include "shadowgen/generate.h"
-#include "shadowgen/scene_reader.h"
+#include "tests/shadowgen/hand_scenes.h"
 #include "tests/support/cgal_oracle.h"
 
 namespace shadowgen {
 namespace {
 
 using LightSet = std::vector<std::size_t>;
-
-ShadowedScene generated(const std::string& json) {
-  const ReadResult read = parse_scene(json, "test.json");
-  return generate_shadows(read.scene).shadowed;
-}
+using test::generated;
+using test::kDartUnderRoof;
+using test::kTwoLights;
 
 std::size_t face_index(const Scene& scene, const std::string& id) {
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
@@ -194,8 +192,10 @@ Worst ExpectPartition(const ShadowedScene& shadowed, double tolerance) {
           }
           const clipper::PolygonSet2 normal_form = clipper::normalized({p});
           EXPECT_EQ(normal_form.size(), 1u) << face.id;
+          // normalized() drops vertices where a loop runs straight on, among them one where
+          // a hole touches the outer loop; after it, such a touch lies inside an edge.
           for (const clipper::PolygonWithHoles2& q : normal_form) {
-            EXPECT_EQ(test::validity_problem(q), "") << face.id;
+            EXPECT_EQ(test::validity_problem(q, test::Contacts::kAnyPoint), "") << face.id;
           }
           images.push_back(std::move(p));
         }
@@ -213,21 +213,6 @@ Worst ExpectPartition(const ShadowedScene& shadowed, double tolerance) {
   }
   return worst;
 }
-
-// Ground 10 × 10 at z = 0, a 4 × 4 square at z = 1 over [2,6] × [3,7]. Light "down" casts
-// its shadow straight below, light "slant" travels +x as it falls, so its shadow is the
-// square moved by 1 in x: [3,7] × [3,7].
-constexpr const char* kTwoLights = R"({
-  "format": "shadowgen-scene/1",
-  "polygons": [
-    {"id": "ground", "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
-    {"id": "square", "outer": [[2,3,1],[6,3,1],[6,7,1],[2,7,1]]}
-  ],
-  "lights": [
-    {"id": "down", "type": "directional", "direction": [0,0,-1]},
-    {"id": "slant", "type": "directional", "direction": [1,0,-1]}
-  ]
-})";
 
 TEST(LightRegions, TwoLightsWithOverlappingShadows) {
   const ShadowedScene s = generated(kTwoLights);
@@ -296,18 +281,8 @@ TEST(LightRegions, FaceWithAHole) {
 }
 
 TEST(LightRegions, TriangulatedNonPlanarFace) {
-  // A dart (its only diagonal runs from the reflex vertex (1,2) to (4,2)) with the reflex
-  // vertex raised to z = 1: two triangles, each of area sqrt(14), one over y ∈ [0,2], one
-  // over y ∈ [2,4]. A roof over y ∈ [3,5] shades the half-size tip of the second: 1/4 of
-  // its area.
-  const ShadowedScene s = generated(R"({
-    "format": "shadowgen-scene/1",
-    "polygons": [
-      {"id": "dart", "outer": [[0,0,0],[4,2,0],[0,4,0],[1,2,1]]},
-      {"id": "roof", "outer": [[-1,3,5],[5,3,5],[5,5,5],[-1,5,5]]}
-    ],
-    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
-  })");
+  // Two triangles of area sqrt(14); the roof shades 1/4 of the second (hand_scenes.h).
+  const ShadowedScene s = generated(kDartUnderRoof);
   const std::size_t dart = face_index(s.scene, "dart");
   ASSERT_EQ(s.scene.faces[dart].parts.size(), 2u);
   const std::vector<LightRegion> regions = light_regions(s, dart);

@@ -20,17 +20,15 @@
 #include "shadowgen/detail/plane_chart.h"
 #include "shadowgen/generate.h"
 #include "shadowgen/light_regions.h"
-#include "shadowgen/scene_reader.h"
+#include "tests/shadowgen/hand_scenes.h"
 #include "tests/support/obj_text.h"
 
 namespace shadowgen {
 namespace {
 
-ShadowedScene generated(const std::string& json, unsigned threads = 0) {
-  GenerateOptions options;
-  options.threads = threads;
-  return generate_shadows(parse_scene(json, "test.json").scene, options).shadowed;
-}
+using test::generated;
+using test::kDartUnderRoof;
+using test::kTwoLights;
 
 double relative_error(double actual, double expected) {
   if (expected == 0.0) return std::abs(actual);
@@ -140,18 +138,6 @@ Worst ExpectObjMatches(const ShadowedScene& s, const ObjFiles& files, double tol
   }
   return worst;
 }
-
-constexpr const char* kTwoLights = R"({
-  "format": "shadowgen-scene/1",
-  "polygons": [
-    {"id": "ground", "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
-    {"id": "square", "outer": [[2,3,1],[6,3,1],[6,7,1],[2,7,1]]}
-  ],
-  "lights": [
-    {"id": "down", "type": "directional", "direction": [0,0,-1]},
-    {"id": "slant", "type": "directional", "direction": [1,0,-1]}
-  ]
-})";
 
 TEST(ObjExport, TwoLightsHandScene) {
   const ShadowedScene s = generated(kTwoLights);
@@ -289,14 +275,7 @@ TEST(ObjExport, VerticesReadBackBitForBit) {
 }
 
 TEST(ObjExport, NonPlanarFaceHasANormalPerTriangle) {
-  const ShadowedScene s = generated(R"({
-    "format": "shadowgen-scene/1",
-    "polygons": [
-      {"id": "dart", "outer": [[0,0,0],[4,2,0],[0,4,0],[1,2,1]]},
-      {"id": "roof", "outer": [[-1,3,5],[5,3,5],[5,5,5],[-1,5,5]]}
-    ],
-    "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
-  })");
+  const ShadowedScene s = generated(kDartUnderRoof);
   const ObjFiles files = obj_export(s, "dart.mtl");
   ExpectObjMatches(s, files, 1e-12);
   const test::ObjText obj = test::parse_obj(files.obj);

@@ -18,14 +18,12 @@
 #include "shadowgen/camera.h"
 #include "shadowgen/generate.h"
 #include "shadowgen/report.h"
-#include "shadowgen/scene_reader.h"
+#include "tests/shadowgen/hand_scenes.h"
 
 namespace shadowgen {
 namespace {
 
-ShadowedScene generated(const std::string& json) {
-  return generate_shadows(parse_scene(json, "test.json").scene).shadowed;
-}
+using test::generated;
 
 double relative_error(double actual, double expected) {
   return std::abs(actual - expected) / std::max(std::abs(expected), 1e-300);
@@ -39,6 +37,26 @@ double pieces_area(const Picture& picture) {
   double sum = 0.0;
   for (const Piece& piece : picture.pieces) sum += clipper::area(piece.shape);
   return sum;
+}
+
+// An orthographic camera at `eye` looking at `target` below it, world +y up in the
+// picture; pixels_per_unit 0 fits the scene into the picture.
+Camera looking_down(const glm::dvec3& eye, const glm::dvec3& target, double pixels_per_unit) {
+  Camera camera;
+  camera.eye = eye;
+  camera.target = target;
+  camera.up = {0, 1, 0};
+  camera.orthographic = true;
+  camera.pixels_per_unit = pixels_per_unit;
+  return camera;
+}
+
+// Options for a picture of width × height pixels, the rest as default.
+RenderOptions picture_size(int width, int height) {
+  RenderOptions options;
+  options.width = width;
+  options.height = height;
+  return options;
 }
 
 // Every pair of pieces overlaps by no more than `tolerance` square pixels.
@@ -90,15 +108,8 @@ TEST(Render, TopDownOrthographicLitAreasEqualTheDatabase) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   // Below the occluders (z = 0.25), so that nothing hides the ground: its visible image is
   // all of it, and the lit pieces must add up to its lit area.
-  Camera camera;
-  camera.eye = {5, 5, 0.25};
-  camera.target = {5, 5, 0};
-  camera.up = {0, 1, 0};
-  camera.orthographic = true;
-  camera.pixels_per_unit = 37.5;
-  RenderOptions options;
-  options.width = 400;
-  options.height = 400;
+  const Camera camera = looking_down({5, 5, 0.25}, {5, 5, 0}, 37.5);
+  const RenderOptions options = picture_size(400, 400);
   const Picture picture = render(shadowed, camera, options);
   const double s2 = camera.pixels_per_unit * camera.pixels_per_unit;
   ASSERT_FALSE(picture.pieces.empty());
@@ -128,14 +139,8 @@ TEST(Render, TopDownOrthographicLitAreasEqualTheDatabase) {
 
 TEST(Render, OrthographicUpAndFittedScale) {
   const ShadowedScene shadowed = generated(kGroundScene);
-  Camera camera;
-  camera.eye = {5, 5, 0.25};
-  camera.target = {5, 5, 0};
-  camera.up = {0, 1, 0};
-  camera.orthographic = true;  // pixels_per_unit 0: fit
-  RenderOptions options;
-  options.width = 300;
-  options.height = 200;
+  const Camera camera = looking_down({5, 5, 0.25}, {5, 5, 0}, 0.0);  // 0: fit
+  const RenderOptions options = picture_size(300, 200);
   const Picture picture = render(shadowed, camera, options);
   // The scene spans 10 × 10 around the target: the height is the tighter side.
   EXPECT_DOUBLE_EQ(picture.pixels_per_unit, 0.95 * 200.0 / 10.0);
@@ -160,9 +165,7 @@ TEST(Render, PerspectivePiecesNeverOverlapAndCoverTheVisibleImage) {
   camera.eye = {14, -9, 8};
   camera.target = {5, 5, 0};
   camera.fov_deg = 40;
-  RenderOptions options;
-  options.width = 320;
-  options.height = 240;
+  const RenderOptions options = picture_size(320, 240);
   const Picture picture = render(shadowed, camera, options);
   ASSERT_FALSE(picture.pieces.empty());
   ExpectNoOverlap(picture, 1e-9 * options.width * options.height);
@@ -210,9 +213,7 @@ TEST(Render, ViewFromInsideAClosedBox) {
   camera.eye = {2, 2, 5};
   camera.target = {8, 7, 2};
   camera.fov_deg = 90;
-  RenderOptions options;
-  options.width = 200;
-  options.height = 150;
+  const RenderOptions options = picture_size(200, 150);
   const Picture picture = render(shadowed, camera, options);
   // Walls all round: the pieces cover the whole picture.
   EXPECT_LE(relative_error(pieces_area(picture), 200.0 * 150.0), 1e-9);
@@ -260,9 +261,7 @@ Camera beside_the_wall() {
 TEST(Render, FaceCrossingTheNearPlane) {
   const ShadowedScene shadowed = generated(wall_scene(true));
   ASSERT_EQ(shadowed.lit[0][0].size(), 1u);
-  RenderOptions options;
-  options.width = 200;
-  options.height = 200;
+  const RenderOptions options = picture_size(200, 200);
   const Picture picture = render(shadowed, beside_the_wall(), options);
   ASSERT_FALSE(picture.pieces.empty());
   EXPECT_LE(relative_error(pieces_area(picture), 0.45 * 200 * 200), 1e-9);
@@ -285,9 +284,7 @@ TEST(Render, BackSidesGetTheAmbientColourAndNoLight) {
   const ShadowedScene front = generated(wall_scene(true));
   const ShadowedScene back = generated(wall_scene(false));
   EXPECT_TRUE(back.lit[0][0].empty());  // turned away from the sun
-  RenderOptions options;
-  options.width = 200;
-  options.height = 200;
+  const RenderOptions options = picture_size(200, 200);
   const Picture picture = render(back, beside_the_wall(), options);
   ASSERT_FALSE(picture.pieces.empty());
   EXPECT_LE(relative_error(pieces_area(picture), 0.45 * 200 * 200), 1e-9);
@@ -319,15 +316,8 @@ TEST(Render, DrawsTheDatabaseNotAShadowPass) {
   sun.id = "sun";
   shadowed.scene.lights = {sun};
   shadowed.lit = {{{hsr::Polygon3{{{0, 0, 0}, {5, 0, 0}, {5, 10, 0}, {0, 10, 0}}, {}}}}};
-  Camera camera;
-  camera.eye = {5, 5, 10};
-  camera.target = {5, 5, 0};
-  camera.up = {0, 1, 0};
-  camera.orthographic = true;
-  camera.pixels_per_unit = 10;
-  RenderOptions options;
-  options.width = 120;
-  options.height = 120;
+  const Camera camera = looking_down({5, 5, 10}, {5, 5, 0}, 10.0);
+  const RenderOptions options = picture_size(120, 120);
   const Picture picture = render(shadowed, camera, options);
   double lit = 0.0, shadow = 0.0;
   for (const Piece& piece : picture.pieces) {

@@ -1,0 +1,165 @@
+#include "tests/cli/cli_harness.h"
+
+#include <pty.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace shadowgen::test {
+
+std::string quoted(const std::string& arg) {
+  std::string q = "'";
+  for (const char c : arg) {
+    if (c == '\'') {
+      q += "'\\''";
+    } else {
+      q += c;
+    }
+  }
+  return q + "'";
+}
+
+int shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+Outcome run_shadowgen(const std::vector<std::string>& args, const fs::path& run_dir) {
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `" " + std::string`.
+  std::string command = quoted(SHADOWGEN_EXECUTABLE);
+  for (const std::string& arg : args) {
+    command += ' ';
+    command += quoted(arg);
+  }
+  command += " >";
+  command += quoted((run_dir / "out").string());
+  command += " 2>";
+  command += quoted((run_dir / "err").string());
+  command += " </dev/null";
+  Outcome result;
+  result.code = shell(command);
+  result.out = contents(run_dir / "out");
+  result.err = contents(run_dir / "err");
+  return result;
+}
+
+Outcome run_shadowgen_on_terminal(const std::vector<std::string>& args) {
+  std::vector<std::string> argv_text = {SHADOWGEN_EXECUTABLE};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& arg : argv_text) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+
+  int terminal = -1;
+  const pid_t child = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+  if (child == 0) {
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  Outcome result;
+  if (child < 0) return result;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(terminal, buffer, sizeof buffer);
+    if (n > 0) {
+      result.out.append(buffer, static_cast<std::size_t>(n));
+    } else if (n < 0 && errno == EINTR) {
+      continue;
+    } else {
+      break;  // EIO once the child has closed its side
+    }
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ::close(terminal);
+  result.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+fs::path fresh_test_folder(const std::string& prefix) {
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::replace(name.begin(), name.end(), '/', '-');
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / (prefix + "-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "run");
+  return dir;
+}
+
+std::vector<std::string> sorted_names(const fs::path& folder, const fs::path& left_out) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.path() != left_out) names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool in_quotes = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_quotes) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        in_quotes = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      in_quotes = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+std::vector<ReportRow> parse_report(const std::string& csv) {
+  std::vector<ReportRow> rows;
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "face_id,light_id,area,lit_area,lit_fraction");
+  while (std::getline(in, line)) {
+    const std::vector<std::string> f = csv_fields(line);
+    EXPECT_EQ(f.size(), 5u) << line;
+    if (f.size() != 5) continue;
+    rows.push_back({f[0], f[1], std::stod(f[2]), std::stod(f[3]), std::stod(f[4])});
+  }
+  return rows;
+}
+
+double relative_error(double actual, double expected) {
+  if (expected == 0.0) return std::abs(actual);
+  return std::abs(actual - expected) / std::abs(expected);
+}
+
+void ExpectWellFormedXml(const fs::path& file, const fs::path& scratch) {
+  EXPECT_EQ(shell("xmllint --noout " + quoted(file.string()) + " 2>" + quoted(scratch.string())), 0)
+      << file << ": " << contents(scratch);
+}
+
+}  // namespace shadowgen::test
