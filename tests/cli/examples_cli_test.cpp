@@ -19,6 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "shadowgen/generate.h"
+#include "shadowgen/report.h"
+#include "shadowgen/scene_reader.h"
 #include "tests/cli/cli_harness.h"
 #include "tests/support/obj_text.h"
 
@@ -129,6 +132,8 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
   ASSERT_EQ(from_scene.code, 0) << from_scene.err;
   EXPECT_EQ(from_db.err, "");
   EXPECT_EQ(from_scene.out, from_db.out);
+  // ... and the library's own report of the same scene, generated in this process.
+  EXPECT_EQ(from_db.out, report_csv(generate_shadows(read_scene(scene).scene).shadowed));
 
   // One row per (face, light), faces in scene order, lights in scene order.
   const std::vector<ReportRow> rows = parse_report(from_db.out);
