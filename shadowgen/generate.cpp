@@ -48,6 +48,31 @@ Parts flatten(const Scene& scene) {
   return parts;
 }
 
+// An image-space bounding box.
+struct Box2 {
+  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+  void include(const Box2& o) {
+    xmin = std::min(xmin, o.xmin);
+    xmax = std::max(xmax, o.xmax);
+    ymin = std::min(ymin, o.ymin);
+    ymax = std::max(ymax, o.ymax);
+  }
+  bool meets(const Box2& o) const {
+    return xmin <= o.xmax && o.xmin <= xmax && ymin <= o.ymax && o.ymin <= ymax;
+  }
+};
+
+Box2 box_of(const clipper::Loop2& loop) {
+  Box2 b;
+  for (const clipper::Point2& p : loop) {
+    b.xmin = std::min(b.xmin, p.x);
+    b.xmax = std::max(b.xmax, p.x);
+    b.ymin = std::min(b.ymin, p.y);
+    b.ymax = std::max(b.ymax, p.y);
+  }
+  return b;
+}
+
 // Does the light reach the front side of this plane at all? A light in the plane (or
 // parallel to it) leaves it unlit, as the spec settles.
 bool faces_light(const hsr::Plane3& plane, const Light& light) {
@@ -151,13 +176,29 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     std::vector<clipper::PolygonSet2> extra(polygons.size());
     for (const auto& [g, members] : groups) {
       if (members.size() < 2) continue;
+      // The visible pieces of the group with their boxes: a receiver clips only the pieces
+      // whose box meets its image's (a ground of 16,641 coplanar tiles would otherwise
+      // clip every tile against every other).
+      struct Owned {
+        std::size_t owner;
+        const clipper::PolygonWithHoles2* shape;
+        Box2 box;
+      };
+      std::vector<Owned> pieces;
+      for (std::size_t m : members) {
+        for (const auto& piece : seen[m]) pieces.push_back({m, &piece, box_of(piece.outer)});
+      }
+      if (pieces.empty()) continue;
       for (std::size_t k : members) {
         if (!faces_light(planes[k], light)) continue;
         const clipper::PolygonSet2 image = hsr::project_polygon(polygons[k], view);
-        for (std::size_t m : members) {
-          if (m == k) continue;
-          for (const auto& piece : seen[m]) {
-            for (auto& q : clipper::intersection({piece}, image)) extra[k].push_back(std::move(q));
+        if (image.empty()) continue;
+        Box2 box = box_of(image.front().outer);
+        for (const auto& p : image) box.include(box_of(p.outer));
+        for (const Owned& piece : pieces) {
+          if (piece.owner == k || !box.meets(piece.box)) continue;
+          for (auto& q : clipper::intersection({*piece.shape}, image)) {
+            extra[k].push_back(std::move(q));
           }
         }
       }
