@@ -11,23 +11,11 @@
 # before and after printed with the table. The JSON is kept in $BUILD_DIR/bench/.
 set -euo pipefail
 
-repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$repo"
-build="${BUILD_DIR:-build/release}"
-if [[ "${1:-}" == "--no-build" ]]; then
-  shift
-else
-  [[ "$build" == build/release ]] && cmake --preset release >&2
-  cmake --build "$build" -j2 --target hsr_bench >&2
-fi
-
-json="$build/bench/hsr_bench.json"
-load="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$build/bench/hsr_bench" \
-  --benchmark_repetitions="${REPETITIONS:-5}" \
-  --benchmark_report_aggregates_only=true \
-  --benchmark_enable_random_interleaving=true \
-  --benchmark_out="$json" --benchmark_out_format=json "$@" >&2
+source "$(dirname "${BASH_SOURCE[0]}")/run_benchmark.sh"
+run_benchmark hsr_bench "$@"
+build=$BENCH_BUILD
+json=$BENCH_JSON
+load=$BENCH_LOAD
 
 python3 - "$json" "$load" <<'PY'
 import json, math, sys

@@ -14,24 +14,12 @@
 # after the timed run.
 set -euo pipefail
 
-repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$repo"
-build="${BUILD_DIR:-build/release}"
-if [[ "${1:-}" == "--no-build" ]]; then
-  shift
-else
-  [[ "$build" == build/release ]] && cmake --preset release >&2
-  cmake --build "$build" -j2 --target shadow_bench >&2
-fi
-
+source "$(dirname "${BASH_SOURCE[0]}")/run_benchmark.sh"
+run_benchmark shadow_bench "$@"
+build=$BENCH_BUILD
+json=$BENCH_JSON
+load=$BENCH_LOAD
 binary="$build/bench/shadow_bench"
-json="$build/bench/shadow_bench.json"
-load="$(cut -d' ' -f1-3 /proc/loadavg)"
-"$binary" \
-  --benchmark_repetitions="${REPETITIONS:-5}" \
-  --benchmark_report_aggregates_only=true \
-  --benchmark_enable_random_interleaving=true \
-  --benchmark_out="$json" --benchmark_out_format=json "$@" >&2
 load_mid="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 rss="$build/bench/shadow_bench.rss"

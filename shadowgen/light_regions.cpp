@@ -22,14 +22,6 @@ namespace {
 
 using LightSet = std::vector<std::size_t>;
 
-// The order of the contract: the empty set first, then by size, then lexicographically.
-struct LightSetLess {
-  bool operator()(const LightSet& a, const LightSet& b) const {
-    if (a.size() != b.size()) return a.size() < b.size();
-    return a < b;
-  }
-};
-
 // One part of a face in its exact plane chart, and the way back to 3D.
 class PartChart {
  public:

@@ -24,6 +24,15 @@ struct LightRegion {
   std::vector<hsr::Polygon3> polygons;
 };
 
+// The order of light sets used everywhere they are listed (regions, OBJ materials): the
+// empty set first, then by size, then lexicographically.
+struct LightSetLess {
+  bool operator()(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) const {
+    if (a.size() != b.size()) return a.size() < b.size();
+    return a < b;
+  }
+};
+
 // Partition of face `face` of `shadowed` into regions by the set of lights reaching them:
 // disjoint, covering the face exactly, no region with an empty polygon list, sets in a
 // deterministic order (empty set first, then by size, then lexicographically).

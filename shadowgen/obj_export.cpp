@@ -22,13 +22,6 @@ namespace {
 
 using LightSet = std::vector<std::size_t>;
 
-struct LightSetLess {
-  bool operator()(const LightSet& a, const LightSet& b) const {
-    if (a.size() != b.size()) return a.size() < b.size();
-    return a < b;
-  }
-};
-
 // Shortest form that reads back to the same double (std::to_chars); OBJ readers take
 // plain integers and exponents alike.
 void append_number(std::string& out, double value) {

@@ -212,20 +212,9 @@ class CubeMap {
 
 template <class Map>
 std::vector<double> estimate(const LightScope& scope, const Light& light, Map& map, int k) {
-  std::vector<double> lit(scope.faces.size(), 0.0);
-  std::vector<glm::dvec3> samples;
-  for (std::size_t f = 0; f < scope.faces.size(); ++f) {
-    if (!scope.receives[f]) continue;
-    const ConvexFace& face = scope.faces[f];
-    face_samples(face, k, samples);
-    if (samples.empty()) continue;
-    std::size_t hits = 0;
-    for (const glm::dvec3& p : samples) {
-      if (map.lit(p, bias_factor(face, towards_light(light, p)))) ++hits;
-    }
-    lit[f] = face.area * static_cast<double>(hits) / static_cast<double>(samples.size());
-  }
-  return lit;
+  return sampled_lit_areas(scope, k, [&](const glm::dvec3& p, const ConvexFace& face) {
+    return map.lit(p, bias_factor(face, towards_light(light, p)));
+  });
 }
 
 }  // namespace

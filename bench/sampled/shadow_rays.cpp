@@ -144,22 +144,11 @@ std::vector<double> shadow_ray_lit_areas(const Scene& scene, const Light& light,
   // A directional light's ray runs twice the scope's diagonal: past every occluder.
   const double reach = 2.0 * glm::length(scope.hi - scope.lo) + 1.0;
 
-  std::vector<double> lit(scope.faces.size(), 0.0);
-  std::vector<glm::dvec3> samples;
-  for (std::size_t f = 0; f < scope.faces.size(); ++f) {
-    if (!scope.receives[f]) continue;
-    const ConvexFace& face = scope.faces[f];
-    face_samples(face, k, samples);
-    if (samples.empty()) continue;
-    std::size_t hits = 0;
-    for (const glm::dvec3& p : samples) {
-      glm::dvec3 d = towards_light(light, p);
-      if (light.type == LightType::kDirectional) d = glm::normalize(d) * reach;
-      if (!bvh.any_hit(p, d, 1e-9, 1.0)) ++hits;
-    }
-    lit[f] = face.area * static_cast<double>(hits) / static_cast<double>(samples.size());
-  }
-  return lit;
+  return sampled_lit_areas(scope, k, [&](const glm::dvec3& p, const ConvexFace&) {
+    glm::dvec3 d = towards_light(light, p);
+    if (light.type == LightType::kDirectional) d = glm::normalize(d) * reach;
+    return !bvh.any_hit(p, d, 1e-9, 1.0);
+  });
 }
 
 }  // namespace shadowgen::bench

@@ -1,5 +1,8 @@
 #include "bench/scenes/box.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace shadowgen::bench {
 
 std::vector<hsr::Polygon3> box_faces(const glm::dvec3& lo, const glm::dvec3& hi, bool floor) {
@@ -21,6 +24,17 @@ void add_box(Scene& scene, const std::string& id, const glm::dvec3& lo, const gl
   for (hsr::Polygon3& p : box_faces(lo, hi, floor)) {
     scene.faces.push_back({id + "/" + std::to_string(k++), {std::move(p)}, ""});
   }
+}
+
+Light sun_at(double elevation_deg, double azimuth_deg) {
+  const double elevation = elevation_deg * std::numbers::pi / 180.0;
+  const double azimuth = azimuth_deg * std::numbers::pi / 180.0;
+  Light sun;
+  sun.id = "sun";
+  sun.type = LightType::kDirectional;
+  sun.direction = {-std::cos(elevation) * std::cos(azimuth),
+                   -std::cos(elevation) * std::sin(azimuth), -std::sin(elevation)};
+  return sun;
 }
 
 }  // namespace shadowgen::bench

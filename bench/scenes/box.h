@@ -19,4 +19,8 @@ std::vector<hsr::Polygon3> box_faces(const glm::dvec3& lo, const glm::dvec3& hi,
 void add_box(Scene& scene, const std::string& id, const glm::dvec3& lo, const glm::dvec3& hi,
              bool floor);
 
+// A directional light called "sun", `elevation_deg` above the horizon, coming from the
+// azimuth `azimuth_deg` (counter-clockwise from +x).
+Light sun_at(double elevation_deg, double azimuth_deg);
+
 }  // namespace shadowgen::bench

@@ -34,14 +34,7 @@ Scene city_scene(const CitySpec& spec) {
     }
   }
 
-  const double elevation = 40.0 * std::numbers::pi / 180.0;
-  const double azimuth = 30.0 * std::numbers::pi / 180.0;
-  Light sun;
-  sun.id = "sun";
-  sun.type = LightType::kDirectional;
-  sun.direction = {-std::cos(elevation) * std::cos(azimuth),
-                   -std::cos(elevation) * std::sin(azimuth), -std::sin(elevation)};
-  scene.lights.push_back(sun);
+  scene.lights.push_back(sun_at(40, 30));
 
   Light lamp;
   lamp.id = "lamp";

@@ -59,14 +59,7 @@ Scene cubes_on_ground(const CubeGridSpec& spec) {
     }
   }
 
-  const double elevation = 45.0 * std::numbers::pi / 180.0;
-  const double azimuth = 30.0 * std::numbers::pi / 180.0;
-  Light sun;
-  sun.id = "sun";
-  sun.type = LightType::kDirectional;
-  sun.direction = {-std::cos(elevation) * std::cos(azimuth),
-                   -std::cos(elevation) * std::sin(azimuth), -std::sin(elevation)};
-  scene.lights.push_back(sun);
+  scene.lights.push_back(sun_at(45, 30));
 
   // In the gap between the cubes of the cells just below and left of the grid's centre:
   // cell boundaries are gaps (cubes fill only the middle half of each cell).
