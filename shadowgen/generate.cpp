@@ -14,8 +14,8 @@
 #include "clipper/merge.h"
 #include "hsr/hidden_surface.h"
 #include "shadowgen/detail/coplanar_groups.h"
-#include "shadowgen/detail/frusta_union.h"
 #include "shadowgen/detail/light_views.h"
+#include "shadowgen/detail/part_plane.h"
 
 namespace shadowgen {
 namespace {

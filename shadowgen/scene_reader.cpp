@@ -321,9 +321,10 @@ class SceneParser {
       if (std::find(std::begin(kKnown), std::end(kKnown), key) != std::end(kKnown)) continue;
       unknown += (unknown.empty() ? "'" : ", '") + key + "'";
     }
-    top.fail("a scene needs \"polygons\" or \"meshes\" (either may be empty); neither is " +
-             std::string("present") +
-             (unknown.empty() ? std::string() : "; other keys found: " + unknown));
+    std::string problem =
+        "a scene needs \"polygons\" or \"meshes\" (either may be empty); neither is present";
+    if (!unknown.empty()) problem += "; other keys found: " + unknown;
+    top.fail(problem);
   }
 
   json parse_json() const {

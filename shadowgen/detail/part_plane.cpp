@@ -1,4 +1,4 @@
-#include "shadowgen/detail/frusta_union.h"
+#include "shadowgen/detail/part_plane.h"
 
 #include <algorithm>
 #include <cmath>
