@@ -9,6 +9,7 @@
 #include "clipper/detail/crossing.h"
 #include "clipper/detail/edge_noding.h"
 #include "clipper/detail/point_location.h"
+#include "clipper/detail/vertex_merge.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 
@@ -577,13 +578,25 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   append_reversed(outside_edges, b_edges.inside);
   append(outside_edges, a_edges.shared_opposite);
 
-  // Rounded crossings may have moved stretches into contact: node them. And a vertex the
+  // Rounded crossings may have moved stretches into contact: node them. A crossing an ulp
+  // beside a vertex goes to that vertex (and the edges it moved are noded). And a vertex the
   // operands bring from earlier clips may lie a rounding off an edge it was made on,
   // folding the traced boundary back along that edge: snap it onto the edge so the fold
   // cancels (detail/snap.h). A snapped edge moved by a hair and may now cross a
   // neighbour: node once more. Then trace.
-  auto finish = [&finder](std::vector<DirectedEdge> edges) {
+  auto is_input = [&a_loops, &b_loops](const Point2& p) {
+    for (const Boundary* loops : {&a_loops, &b_loops}) {
+      for (const Loop2& loop : *loops) {
+        if (std::find(loop.begin(), loop.end(), p) != loop.end()) return true;
+      }
+    }
+    return false;
+  };
+  auto finish = [&finder, &is_input](std::vector<DirectedEdge> edges) {
     edges = detail::node_edges(std::move(edges), finder.crossings);
+    std::unordered_set<Point2, Point2Hash> merged;
+    edges = detail::merge_close_vertices(std::move(edges), is_input, merged);
+    if (!merged.empty()) edges = detail::node_edges(std::move(edges), merged);
     std::unordered_set<Point2, Point2Hash> snapped;
     edges = detail::snap_vertices_onto_edges(std::move(edges), nullptr, &snapped);
     if (!snapped.empty()) edges = detail::node_edges(std::move(edges), snapped);

@@ -52,8 +52,11 @@
 // they cross, until none do. And a vertex brought in from an earlier clip, a crossing
 // rounded a hair off the edge it was made on, is taken as lying on any edge within twice
 // the bound above (8u·|edge| + 2u·|P|), so the boundary does not fold back along that edge
-// into a sliver. Both move the boundary by at most those bounds; the one tolerance is
-// that derived distance, nothing else.
+// into a sliver. A crossing constructed within 2u·|P| of another vertex (where exact
+// arithmetic puts it on that vertex) is merged into it, so the boundary does not run out
+// and back through two points an ulp apart (detail/vertex_merge.h). All of these move
+// the boundary by at most those bounds; the one tolerance is that derived distance,
+// nothing else.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges

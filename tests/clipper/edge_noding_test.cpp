@@ -1,14 +1,17 @@
-// The noding step between tracing and assembly (clipper/detail/edge_noding.h) and the
-// order of points along a segment it shares with the insertion of crossings.
+// The noding step between tracing and assembly (clipper/detail/edge_noding.h), the
+// order of points along a segment it shares with the insertion of crossings, and the
+// merging of crossings into vertices an ulp away (clipper/detail/vertex_merge.h).
 
 #include "clipper/detail/edge_noding.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "clipper/detail/crossing.h"
+#include "clipper/detail/vertex_merge.h"
 
 namespace shadowgen::clipper::detail {
 namespace {
@@ -79,6 +82,70 @@ TEST(CrossingPoint, DoesNotDependOnTheOrderOfTheSegmentsOrOfTheirEnds) {
   const Point2 p = crossing_point(a0, a1, b0, b1);
   EXPECT_EQ(p, crossing_point(b0, b1, a0, a1));
   EXPECT_EQ(p, crossing_point(a1, a0, b1, b0));
+}
+
+// Vertex–vertex snapping (clipper/detail/vertex_merge.h).
+
+Point2 ulps_right(Point2 p, int n) {
+  for (int i = 0; i < n; ++i) p.x = std::nextafter(p.x, INFINITY);
+  return p;
+}
+
+// The needle of the regression case scaled-1e-4-hole-collapsed-to-a-sliver: out to b
+// from the input vertex v, back to a crossing c an ulp beside v.
+const Point2 kV{6.7759635681812032e-07, 7.869756666827503e-05};
+const Point2 kB{7.8935476479682582e-06, 7.4679836327726617e-05};
+
+TEST(VertexMerge, ACrossingAnUlpFromAnInputVertexBecomesThatVertexAndTheNeedleCancels) {
+  const Point2 c = ulps_right(kV, 1);
+  const std::vector<DirectedEdge> edges{{kV, kB}, {kB, c}, {c, kV}};
+  Points moved;
+  const auto merged = merge_close_vertices(
+      edges, [](const Point2& p) { return p == kV; }, moved);
+  ASSERT_EQ(merged.size(), 2u);  // c -> v shrank to a point
+  EXPECT_TRUE(has_edge(merged, kV, kB));
+  EXPECT_TRUE(has_edge(merged, kB, kV));
+  EXPECT_EQ(moved, Points{kV});
+  EXPECT_TRUE(node_edges(merged, moved).empty());  // one segment run both ways
+}
+
+TEST(VertexMerge, InputVerticesNeverMove) {
+  const Point2 w = ulps_right(kV, 1);
+  const std::vector<DirectedEdge> edges{{kV, kB}, {kB, w}, {w, kV}};
+  Points moved;
+  const auto merged = merge_close_vertices(
+      edges, [](const Point2&) { return true; }, moved);
+  EXPECT_EQ(merged.size(), 3u);
+  EXPECT_TRUE(moved.empty());
+}
+
+TEST(VertexMerge, CloseCrossingsMergeIntoTheLeastWhateverTheEdgeOrder) {
+  const Point2 c1 = ulps_right(kV, 1), c2 = ulps_right(kV, 2);
+  std::vector<DirectedEdge> edges{{kB, c2}, {c1, {0, 0}}, {{0, 0}, kB}, {c2, c1}};
+  for (int turn = 0; turn < 4; ++turn) {
+    std::rotate(edges.begin(), edges.begin() + 1, edges.end());
+    Points moved;
+    const auto merged = merge_close_vertices(
+        edges, [](const Point2&) { return false; }, moved);
+    ASSERT_EQ(merged.size(), 3u);
+    EXPECT_TRUE(has_edge(merged, kB, c1));
+    EXPECT_TRUE(has_edge(merged, c1, {0, 0}));
+    EXPECT_EQ(moved, Points{c1});
+  }
+}
+
+TEST(VertexMerge, PointsFartherThanTheSnapDistanceStay) {
+  // 2u·|P| is about 1.7e-20 here; 64 ulps of x (1e-22 each) is well inside, 1e6 ulps not.
+  const Point2 near = ulps_right(kV, 64), far = ulps_right(kV, 1000000);
+  Points moved;
+  auto merged = merge_close_vertices(
+      {{kV, kB}, {kB, near}}, [](const Point2& p) { return p == kV; }, moved);
+  EXPECT_TRUE(has_edge(merged, kB, kV));
+  moved.clear();
+  merged = merge_close_vertices(
+      {{kV, kB}, {kB, far}}, [](const Point2& p) { return p == kV; }, moved);
+  EXPECT_TRUE(has_edge(merged, kB, far));
+  EXPECT_TRUE(moved.empty());
 }
 
 }  // namespace
