@@ -246,7 +246,11 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     result.planes[i] = plane_of(polygons[i]);
-    const std::optional<Nearness> nearness = view.nearness_on(result.planes[i]);
+    // Relative to the eye: far from the origin, the order of two faces meeting at an edge
+    // (a wall on the ground) depends on offsets that the absolute plane loses.
+    const glm::dvec3& normal = result.planes[i].normal;
+    const std::optional<Nearness> nearness =
+        view.nearness_on(normal, view.offset_from_eye(polygons[i].outer, normal));
     if (!nearness) {
       ++stats.edge_on;
       continue;

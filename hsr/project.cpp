@@ -48,7 +48,9 @@ clipper::Loop2 to_chart(const Loop3& loop, const PlaneChart& chart) {
 
 clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view) {
   const Plane3 plane = plane_of(polygon);
-  if (!view.nearness_on(plane)) return {};  // edge-on: no area in the image
+  if (!view.nearness_on(plane.normal, view.offset_from_eye(polygon.outer, plane.normal))) {
+    return {};  // edge-on: no area in the image
+  }
 
   std::vector<const Loop3*> loops{&polygon.outer};
   for (const Loop3& h : polygon.holes) loops.push_back(&h);

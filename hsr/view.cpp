@@ -102,11 +102,14 @@ std::optional<glm::dvec3> View::unproject_offset(const clipper::Point2& image,
 }
 
 std::optional<Nearness> View::nearness_on(const Plane3& plane) const {
-  const double nr = glm::dot(plane.normal, right_);
-  const double nu = glm::dot(plane.normal, up_);
-  const double nf = glm::dot(plane.normal, forward_);
-  // The plane's offset relative to the eye (or centre): n·(p − eye) = rel.
-  const double rel = plane.offset - glm::dot(plane.normal, eye_);
+  return nearness_on(plane.normal, plane.offset - glm::dot(plane.normal, eye_));
+}
+
+std::optional<Nearness> View::nearness_on(const glm::dvec3& normal, double rel) const {
+  const double nr = glm::dot(normal, right_);
+  const double nu = glm::dot(normal, up_);
+  const double nf = glm::dot(normal, forward_);
+  // rel: the plane relative to the eye (or centre), n·(p − eye) = rel.
   if (perspective_) {
     // p = eye + z (x right + y up + forward): n·p = offset gives
     // 1/z = (x nr + y nu + nf) / rel.
@@ -116,6 +119,13 @@ std::optional<Nearness> View::nearness_on(const Plane3& plane) const {
   // p = centre + x right + y up + z forward: z = (rel − x nr − y nu) / nf, nearness −z.
   if (nf == 0.0) return std::nullopt;
   return Nearness{nr / nf, nu / nf, -rel / nf};
+}
+
+double View::offset_from_eye(const Loop3& loop, const glm::dvec3& normal) const {
+  if (loop.empty()) return 0.0;
+  glm::dvec3 mean(0.0);
+  for (const glm::dvec3& v : loop) mean += v - eye_;
+  return glm::dot(normal, mean / static_cast<double>(loop.size()));
 }
 
 double View::nearness_of(const glm::dvec3& p) const {

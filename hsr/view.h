@@ -71,6 +71,13 @@ class View {
   // Nearness on `plane`, or nullopt when the plane is seen edge-on (it contains the
   // view direction, or the eye).
   std::optional<Nearness> nearness_on(const Plane3& plane) const;
+  // The same for the plane normal · d = offset_from_eye of points eye() + d. Far from the
+  // origin (1e8) plane.offset − normal · eye cancels and loses what decides the order of
+  // two faces meeting at an edge; offsets formed from nearby vertices keep it.
+  std::optional<Nearness> nearness_on(const glm::dvec3& normal, double offset_from_eye) const;
+  // The offset from the eye of the plane through `loop` with `normal`, through the loop's
+  // mean offset from the eye (exact differences for vertices near it).
+  double offset_from_eye(const Loop3& loop, const glm::dvec3& normal) const;
   // Nearness of a 3D point, comparable with nearness_on(...).at(...).
   double nearness_of(const glm::dvec3& p) const;
   // The image window of a perspective view (its frustum's sides); none for orthographic.

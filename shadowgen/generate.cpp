@@ -92,11 +92,8 @@ class BackProjector {
     };
     add(polygon.outer);
     for (const hsr::Loop3& h : polygon.holes) add(h);
-    // The plane relative to the eye, through the outer loop's mean offset from it: the
-    // offsets of nearby vertices are exact, so a scene far from the origin keeps them.
-    glm::dvec3 mean(0.0);
-    for (const glm::dvec3& v : polygon.outer) mean += v - view_.eye();
-    offset_from_eye_ = glm::dot(normal_, mean / static_cast<double>(polygon.outer.size()));
+    // The plane relative to the eye: a scene far from the origin keeps its precision.
+    offset_from_eye_ = view_.offset_from_eye(polygon.outer, normal_);
   }
 
   hsr::Loop3 lift(const clipper::Loop2& loop) const {

@@ -168,5 +168,32 @@ TEST(HiddenSurfaceRegression, SticksGiveTheSameAreasInAnotherInputOrder) {
   }
 }
 
+// A wall standing on the ground, seen from a lamp above it, 1e8 from the origin. The
+// faces' nearness came from plane offsets of 1e8 less the eye's, which cancel and keep
+// only a few digits: the ground was judged in front of the wall along its foot and took a
+// strip 3e-6 high of it (the lamp's shadow generation lost 3.6e-6 of the wall's light).
+// Nothing hides any of the wall from the lamp, in any of the six frusta around it.
+TEST(HiddenSurfaceRegression, WallOnTheGroundSeenFromALampFarFromTheOrigin) {
+  const glm::dvec3 shift(1e8, -1e8, 1e8);
+  const glm::dvec3 a{1.1006911162676865, -0.0088780376854659115, 0.0};
+  const glm::dvec3 b{1.758878037685466, 0.35069111626768634, 0.0};
+  const glm::dvec3 up{0.0, 0.0, 2.0};
+  std::vector<Polygon3> polygons{{{{-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}}, {}},
+                                 {{a, b, b + up, a + up}, {}}};
+  for (Polygon3& p : polygons) {
+    for (glm::dvec3& v : p.outer) v += shift;
+  }
+  const glm::dvec3 lamp = shift + glm::dvec3(0.25, -0.5, 3.0);
+  const glm::dvec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const glm::dvec3& axis : axes) {
+    const glm::dvec3 roll = axis.z != 0.0 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    const hsr::View view = hsr::View::perspective(lamp, axis, roll, 90.0, 0.25);
+    const double image = exact_area_of_pieces(hsr::project_polygon(polygons[1], view));
+    const double seen = visible_area_by_parent(hsr::remove_hidden_surfaces(polygons, view), 2)[1];
+    EXPECT_NEAR(seen, image, 1e-12 * image)
+        << "frustum along " << axis.x << ' ' << axis.y << ' ' << axis.z;
+  }
+}
+
 }  // namespace
 }  // namespace shadowgen::test
