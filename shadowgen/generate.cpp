@@ -14,6 +14,7 @@
 #include "clipper/merge.h"
 #include "hsr/hidden_surface.h"
 #include "shadowgen/detail/coplanar_groups.h"
+#include "shadowgen/detail/grazing_light.h"
 #include "shadowgen/detail/light_views.h"
 #include "shadowgen/detail/part_plane.h"
 
@@ -212,6 +213,20 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
         hsr::Polygon3 detail = back.lift(p);
         if (detail.outer.size() >= 3) seen_here.push_back(std::move(detail));
       }
+    }
+  }
+
+  // Faces the sun grazes: cast back from its image, their lit region would carry the
+  // image's rounding divided by a tiny sine; it is worked out in their plane instead.
+  if (light.type == LightType::kDirectional) {
+    std::vector<int> coplanar;
+    coplanar.reserve(considered.size());
+    for (std::size_t i : considered) coplanar.push_back(parts.coplanar[i]);
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+      if (!faces_light(planes[k], light) || !detail::grazes(planes[k], light.direction)) continue;
+      ++stats.faces_grazed;
+      lit_by_part[considered[k]] = {
+          detail::lit_by_grazing_light(k, polygons, planes, coplanar, light.direction)};
     }
   }
 

@@ -32,7 +32,8 @@ struct LightStats {
   std::size_t faces_considered = 0;  // within range
   std::size_t faces_culled_range = 0;
   std::size_t faces_facing_away = 0;
-  std::size_t frusta = 0;  // light views used (1 for directional lights)
+  std::size_t faces_grazed = 0;  // lit regions worked out in their plane (grazing_light.h)
+  std::size_t frusta = 0;        // light views used (1 for directional lights)
   std::size_t fragments = 0;
   std::size_t lit_polygons = 0;
   double seconds = 0.0;

@@ -298,5 +298,43 @@ TEST(ExtremesRegression, WallAHairFromEdgeOnKeepsItsLitWedge) {
   EXPECT_EQ(check.failures, 0u) << check.report;
 }
 
+// Walls the sun grazes at sines from 1e-5 down to 1e-300, each side of the 2^-20 below
+// which generation works in the wall's plane (shadowgen/detail/grazing_light.h): a roof
+// with a hole, a post crossing the wall's plane and a slanted board behind it, which
+// casts nothing. Every pair against the oracle down to 1e-100 (below that CGAL's lazy
+// exact numbers overflow the oracle's stack); at 1e-300 the lit areas must be those of
+// 1e-100, which differ from them by that order.
+Scene grazed_wall(double sine) {
+  Scene scene;
+  add_face(scene, "wall", polygon({{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}));  // faces +x
+  add_face(scene, "roof",
+           polygon({{-0.5, 0.25, 1.5}, {0.5, 0.25, 1.5}, {0.5, 1.5, 1.5}, {-0.5, 1.5, 1.5}},
+                   {{{-0.25, 0.5, 1.5}, {-0.25, 1.0, 1.5}, {0.25, 1.0, 1.5}, {0.25, 0.5, 1.5}}}));
+  add_face(scene, "post",
+           polygon({{-0.125, 0.0625, 0},
+                    {0.125, 0.1875, 0},
+                    {0.125, 0.1875, 0.75},
+                    {-0.125, 0.0625, 0.75}}));
+  add_face(scene, "board",
+           polygon({{-0.5, 0.5, 0.25}, {-0.25, 0.5, 0.5}, {-0.25, 0.75, 0.5}, {-0.5, 0.75, 0.25}}));
+  scene.lights.push_back(directional_light("sun", {-sine, -0.25, -1.0}));
+  return scene;
+}
+
+TEST(ExtremesRegression, WallsTheSunGrazesAtAnyAngle) {
+  for (double sine : {1e-5, 0x1p-19, 0x1p-21, 1e-9, 1e-13, 1e-17, 1e-26, 1e-40, 1e-100}) {
+    const OracleCheck check = check_against_oracle(grazed_wall(sine), kTolerance);
+    std::printf("[ grazing sine %-8.3g ] %s\n", sine, summary(check).c_str());
+    EXPECT_EQ(check.failures, 0u) << "sine " << sine << "\n" << check.report;
+    EXPECT_EQ(check.invalid, 0u) << "sine " << sine << "\n" << check.invalid_report;
+  }
+  const auto limit = report_rows(generate_shadows(grazed_wall(1e-100)).shadowed);
+  const auto beyond = report_rows(generate_shadows(grazed_wall(1e-300)).shadowed);
+  ASSERT_EQ(limit.size(), beyond.size());
+  for (std::size_t i = 0; i < limit.size(); ++i) {
+    EXPECT_NEAR(beyond[i].lit_area, limit[i].lit_area, 1e-15 * limit[i].area) << "row " << i;
+  }
+}
+
 }  // namespace
 }  // namespace shadowgen::test
