@@ -216,18 +216,18 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     }
   }
 
-  // Faces the sun grazes: cast back from its image, their lit region would carry the
+  // Faces the light grazes: cast back from its image, their lit region would carry the
   // image's rounding divided by a tiny sine; it is worked out in their plane instead.
-  if (light.type == LightType::kDirectional) {
-    std::vector<int> coplanar;
-    coplanar.reserve(considered.size());
-    for (std::size_t i : considered) coplanar.push_back(parts.coplanar[i]);
-    for (std::size_t k = 0; k < polygons.size(); ++k) {
-      if (!faces_light(planes[k], light) || !detail::grazes(planes[k], light.direction)) continue;
-      ++stats.faces_grazed;
-      lit_by_part[considered[k]] = {
-          detail::lit_by_grazing_light(k, polygons, planes, coplanar, light.direction)};
+  std::vector<int> coplanar;
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    if (!faces_light(planes[k], light) || !detail::grazes(polygons[k], planes[k], light)) continue;
+    if (coplanar.empty()) {
+      coplanar.reserve(considered.size());
+      for (std::size_t i : considered) coplanar.push_back(parts.coplanar[i]);
     }
+    ++stats.faces_grazed;
+    lit_by_part[considered[k]] = {
+        detail::lit_by_grazing_light(k, polygons, planes, coplanar, light)};
   }
 
   std::vector<std::vector<hsr::Polygon3>> lit_by_face;

@@ -14,6 +14,7 @@ namespace {
 
 constexpr double kGrazingSine = 0x1p-20;
 constexpr double kSlabReach = 0x1p30;
+constexpr double kLampMargin = 0x1p-40;
 
 struct Box3 {
   glm::dvec3 lo{INFINITY}, hi{-INFINITY};
@@ -48,33 +49,43 @@ struct FaceFrame {
   double height(const glm::dvec3& p) const { return glm::dot(normal, p - origin); }
 };
 
-// The shadow of `occluder` on the face's plane along `direction`, in the face's chart:
-// the occluder's part at heights 0 <= h <= slab in front of the face, moved along the
-// light onto the plane.
-//
-// The slab can be far thinner than a rounding of the occluder's coordinates (a sun 1e-40
-// from grazing), so the occluder is charted in coordinates where it is not: s along the
-// line L where the occluder's plane meets the face's, t = h / slab. The cut to 0 <= t <= 1
-// is then as well-conditioned as any clip, and the projection is affine in (s, t) with
-// moderate coefficients: a point x0 + s·l + t·m of the occluder's plane (x0 on L, l along
-// L, m across it with height slab) lands at x0 + s·l + t·(m − slab/(n·d)·d), every term
-// within 2^30 of the size of the face and occluder.
+// Where the light sends a point of an occluder onto the face's plane.
+struct Projection {
+  const FaceFrame& face;
+  const Light& light;
+  double slab;
+  double t_max;
+
+  // A point p (relative to the face's origin) at height t·slab above the face.
+  clipper::Point2 operator()(const glm::dvec3& p, double t) const {
+    if (light.type == LightType::kDirectional) {
+      // Along the light by the height over its normal component.
+      const double along = glm::dot(face.normal, light.direction);
+      return face.chart(p - (t * slab / along) * light.direction);
+    }
+    // From the lamp through the point, to height 0: scaled by slab / (slab − h).
+    const glm::dvec3 lamp = light.position - face.origin;
+    return face.chart(lamp + (p - lamp) / (1.0 - t));
+  }
+};
+
+// The shadow of `occluder` on the face's plane, in the face's chart.
 clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& occluder_normal,
-                               const FaceFrame& face, const glm::dvec3& direction, double slab) {
-  const double along = glm::dot(face.normal, direction);
+                               const Projection& project) {
+  const FaceFrame& face = project.face;
   const glm::dvec3 g = face.normal - glm::dot(face.normal, occluder_normal) * occluder_normal;
   const double g2 = glm::dot(g, g);
   const glm::dvec3 l = glm::cross(occluder_normal, face.normal);
   const double l_length = glm::length(l);
   if (g2 == 0.0 || l_length == 0.0) {
-    // Parallel to the face: one height, a plain translation along the light.
+    // Parallel to the face: one height, every vertex moved as it is.
     clipper::PolygonSet2 moved{{{}, {}}};
     auto move = [&](const hsr::Loop3& loop) {
       clipper::Loop2 out;
       for (const glm::dvec3& v : loop) {
-        const double h = face.height(v);
-        if (!(h > 0.0 && h <= slab)) return clipper::Loop2{};
-        out.push_back(face.chart((v - face.origin) - (h / along) * direction));
+        const double t = face.height(v) / project.slab;
+        if (!(t > 0.0 && t <= project.t_max)) return clipper::Loop2{};
+        out.push_back(project(v - face.origin, t));
       }
       return out;
     };
@@ -85,12 +96,13 @@ clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& 
   }
   const glm::dvec3 along_l = l / l_length;
   const glm::dvec3& v0 = occluder.outer.front();
-  const glm::dvec3 x0_from_face = (v0 - face.origin) - (face.height(v0) / g2) * g;
+  const glm::dvec3 x0 = (v0 - face.origin) - (face.height(v0) / g2) * g;
+  const glm::dvec3 m = (project.slab / g2) * g;
   auto to_st = [&](const hsr::Loop3& loop) {
     clipper::Loop2 out;
     out.reserve(loop.size());
     for (const glm::dvec3& v : loop) {
-      out.push_back({glm::dot(v - v0, along_l), face.height(v) / slab});
+      out.push_back({glm::dot(v - v0, along_l), face.height(v) / project.slab});
     }
     return out;
   };
@@ -102,17 +114,13 @@ clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& 
     smax = std::max(smax, q.x);
   }
   const double margin = smax - smin;
-  const clipper::PolygonWithHoles2 band = rectangle(smin - margin, 0.0, smax + margin, 1.0);
+  const clipper::PolygonWithHoles2 band =
+      rectangle(smin - margin, 0.0, smax + margin, project.t_max);
 
-  const clipper::Point2 x0 = face.chart(x0_from_face);
-  const clipper::Point2 ls = face.chart(along_l);
-  const clipper::Point2 mt = face.chart((slab / g2) * g - (slab / along) * direction);
   auto to_face = [&](const clipper::Loop2& loop) {
     clipper::Loop2 out;
     out.reserve(loop.size());
-    for (const clipper::Point2& q : loop) {
-      out.push_back({x0.x + q.x * ls.x + q.y * mt.x, x0.y + q.x * ls.y + q.y * mt.y});
-    }
+    for (const clipper::Point2& q : loop) out.push_back(project(x0 + q.x * along_l + q.y * m, q.y));
     return out;
   };
   clipper::PolygonSet2 shadow;
@@ -124,37 +132,53 @@ clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& 
   return clipper::normalized(shadow);
 }
 
+// sin θ of the text above, for a light reaching the face's front side.
+double grazing_sine(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light) {
+  if (light.type == LightType::kDirectional) {
+    return std::fabs(glm::dot(plane.normal, light.direction)) / glm::length(light.direction);
+  }
+  double farthest = 0.0;
+  for (const glm::dvec3& v : part.outer)
+    farthest = std::max(farthest, glm::length(v - light.position));
+  const double height = glm::dot(plane.normal, light.position - part.outer.front());
+  return farthest > 0.0 ? std::fabs(height) / farthest : 0.0;
+}
+
 }  // namespace
 
-bool grazes(const hsr::Plane3& plane, const glm::dvec3& direction) {
-  const double sine = std::fabs(glm::dot(plane.normal, direction)) / glm::length(direction);
+bool grazes(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light) {
+  const double sine = grazing_sine(part, plane, light);
   return sine > 0.0 && sine < kGrazingSine;
 }
 
 std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
                                                 std::span<const hsr::Polygon3> polygons,
                                                 std::span<const hsr::Plane3> planes,
-                                                std::span<const int> coplanar,
-                                                const glm::dvec3& direction) {
+                                                std::span<const int> coplanar, const Light& light) {
   const hsr::Polygon3& face = polygons[part];
   const FaceFrame frame{face.outer.front(), planes[part].normal, chart_facing(planes[part].normal)};
-  const double sine = std::fabs(glm::dot(frame.normal, direction)) / glm::length(direction);
+  const double sine = grazing_sine(face, planes[part], light);
   PlaneLifter lifter(planes[part], frame.origin);
   const clipper::PolygonWithHoles2 region = lifter.flatten(face);
   const clipper::PolygonSet2 around{grown_box(region.outer)};
   Box3 face_box;
   face_box.add(face.outer);
+  const bool point = light.type == LightType::kPoint;
 
   std::vector<clipper::PolygonWithHoles2> shadows;
   for (std::size_t j = 0; j < polygons.size(); ++j) {
     if (j == part || (coplanar[part] >= 0 && coplanar[j] == coplanar[part])) continue;
     const glm::dvec3& normal = planes[j].normal;
-    if (glm::length(normal) == 0.0 || glm::dot(normal, direction) == 0.0) continue;
-    // Beyond this height a point's shadow lands more than twice the size of face and
-    // occluder together away from it: it cannot fall on the face.
-    Box3 both = face_box;
-    both.add(polygons[j].outer);
-    const double slab = kSlabReach * glm::length(both.hi - both.lo) * sine;
+    if (glm::length(normal) == 0.0) continue;
+    double slab;
+    if (point) {
+      slab = frame.height(light.position);
+    } else {
+      if (glm::dot(normal, light.direction) == 0.0) continue;  // edge-on: no shadow area
+      Box3 both = face_box;
+      both.add(polygons[j].outer);
+      slab = kSlabReach * glm::length(both.hi - both.lo) * sine;
+    }
     if (!(slab > 0.0)) continue;
     bool ahead = false, within = false;
     for (const glm::dvec3& v : polygons[j].outer) {
@@ -163,7 +187,8 @@ std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
       within = within || h < slab;
     }
     if (!ahead || !within) continue;
-    const clipper::PolygonSet2 shadow = shadow_of(polygons[j], normal, frame, direction, slab);
+    const Projection project{frame, light, slab, point ? 1.0 - kLampMargin : 1.0};
+    const clipper::PolygonSet2 shadow = shadow_of(polygons[j], normal, project);
     if (shadow.empty()) continue;
     for (clipper::PolygonWithHoles2& p : clipper::intersection(shadow, around)) {
       shadows.push_back(std::move(p));

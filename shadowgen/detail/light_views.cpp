@@ -65,10 +65,11 @@ std::vector<hsr::View> light_views(const Light& light, std::span<const hsr::Poly
     }
   }
   if (!std::isfinite(nearest)) return {};
-  // Half the smallest depth any polygon point can have in a frustum; never zero, and not
-  // so small that 1/z loses everything (a light exactly on a polygon's plane is handled
-  // by that polygon being edge-on).
-  const double near = std::max(0.5 * nearest / std::sqrt(3.0), 1e-12 * farthest);
+  // Half the smallest depth any polygon point can have in a frustum, so nothing is cut
+  // off: a polygon 1e-12 from the lamp still occludes (a light exactly on a polygon's
+  // plane is handled by that polygon being edge-on). Never below 2^-450 of the farthest
+  // distance, only so that image coordinates (up to farthest / near) keep finite squares.
+  const double near = std::max(0.5 * nearest / std::sqrt(3.0), 0x1p-450 * farthest);
 
   static const std::array<glm::dvec3, 6> kAxes = {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0),
                                                   glm::dvec3(0, 1, 0), glm::dvec3(0, -1, 0),

@@ -336,5 +336,22 @@ TEST(ExtremesRegression, WallsTheSunGrazesAtAnyAngle) {
   }
 }
 
+// Lamps a hair above the ground and above a box's top, from 1e-6 down to 1e-100: the
+// faces under them are grazed (their lit regions come from their planes), and the top
+// 1e-12 below a lamp still occludes the ground (a near-plane floor of 1e-12 of the
+// scene's depth once cut it away and lit the box's footprint).
+TEST(ExtremesRegression, LampsAHairAboveFaces) {
+  for (double height : {1e-6, 1e-9, 1e-12, 1e-15, 1e-40, 1e-100}) {
+    Scene scene = boxes_on_ground_sun().scene;
+    scene.lights.clear();
+    scene.lights.push_back(point_light("over_ground", {0.125, -0.25, height}));
+    scene.lights.push_back(point_light("over_top", {-1.0, -1.0, 1.25 + height}));
+    const OracleCheck check = check_against_oracle(scene, kTolerance);
+    std::printf("[ lamps %-8.3g above ] %s\n", height, summary(check).c_str());
+    EXPECT_EQ(check.failures, 0u) << "height " << height << "\n" << check.report;
+    EXPECT_EQ(check.invalid, 0u) << "height " << height << "\n" << check.invalid_report;
+  }
+}
+
 }  // namespace
 }  // namespace shadowgen::test
