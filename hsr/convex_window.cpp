@@ -47,6 +47,31 @@ bool within(const clipper::Loop2& loop, int turn, const clipper::Loop2& points) 
   return true;
 }
 
+// The convex hull of `points`, counter-clockwise, without straight-run vertices (Andrew's
+// monotone chain on exact orientations); fewer than three points when it has no area.
+clipper::Loop2 convex_hull(clipper::Loop2 points) {
+  auto less = [](const clipper::Point2& a, const clipper::Point2& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  };
+  std::sort(points.begin(), points.end(), less);
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return {};
+  clipper::Loop2 hull(2 * points.size());
+  std::size_t k = 0;
+  auto keep_left_turns = [&](const clipper::Point2& p, std::size_t floor) {
+    while (k >= floor && clipper::orient2d(hull[k - 2], hull[k - 1], p) !=
+                             clipper::Orientation::kCounterClockwise) {
+      --k;
+    }
+    hull[k++] = p;
+  };
+  for (const clipper::Point2& p : points) keep_left_turns(p, 2);  // lower chain
+  const std::size_t lower = k + 1;
+  for (std::size_t i = points.size() - 1; i-- > 0;) keep_left_turns(points[i], lower);  // upper
+  hull.resize(k - 1);  // the last point is the first again
+  return hull;
+}
+
 }  // namespace
 
 int convex_turn(const clipper::Loop2& loop) {
@@ -71,12 +96,17 @@ int convex_turn(const clipper::Loop2& loop) {
 }
 
 ConvexWindow::ConvexWindow(const clipper::PolygonWithHoles2& window)
-    : window_(window), turn_(convex_turn(window.outer)) {}
+    : window_(window), turn_(convex_turn(window.outer)) {
+  if (turn_ == 0) hull_ = convex_hull(window.outer);
+}
 
 clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject) const {
-  if (turn_ != 0 && separated_by_edge_of(window_.outer, turn_, subject.outer)) {
-    return {{}, {subject}};
-  }
+  // Beside the window: an edge line of the window's hull (its outer loop when convex)
+  // with the whole subject on or beyond it.
+  const bool beside = turn_ != 0
+                          ? separated_by_edge_of(window_.outer, turn_, subject.outer)
+                          : hull_.size() >= 3 && separated_by_edge_of(hull_, 1, subject.outer);
+  if (beside) return {{}, {subject}};
   const int subject_turn = convex_turn(subject.outer);
   if (subject_turn != 0 && separated_by_edge_of(subject.outer, subject_turn, window_.outer)) {
     return {{}, {subject}};

@@ -1,11 +1,11 @@
 #pragma once
 
 // A polygon against which many pieces are clipped (a template of hidden-surface removal,
-// a receiver's image in shadow generation's coplanar pass): when it or a piece is convex,
-// exact orientation tests settle the common cases (a piece beside it, a piece wholly
-// within it) without calling the clipper. In a city seen from the sun most pairs whose
-// bounding boxes overlap are faces that only share an edge or a corner's neighbourhood,
-// or lie wholly in one another's shadow.
+// a receiver's image in shadow generation's coplanar pass): exact orientation tests
+// against its convex hull, and against a piece when that is convex, settle the common
+// cases (a piece beside it, a piece wholly within it) without calling the clipper. In a city seen
+// from the sun most pairs whose bounding boxes overlap are faces that only share an edge or a
+// corner's neighbourhood, or lie wholly in one another's shadow.
 
 #include "clipper/clip.h"
 #include "clipper/polygon.h"
@@ -18,8 +18,8 @@ class ConvexWindow {
   explicit ConvexWindow(const clipper::PolygonWithHoles2& window);
 
   // What clipper::clip(subject, window) gives, up to vertices where a boundary runs
-  // straight on: where every vertex of the subject lies on or outside one edge line of a
-  // convex window (or every window vertex on or outside one edge line of a convex
+  // straight on: where every vertex of the subject lies on or outside one edge line of the
+  // window's convex hull (or every window vertex on or outside one edge line of a convex
   // subject), the two share no area and inside is empty; where every vertex of the
   // subject lies on or inside every edge line of a convex window without holes, the
   // subject is inside whole. Both are decided by exact predicates; anything else goes to
@@ -28,7 +28,8 @@ class ConvexWindow {
 
  private:
   const clipper::PolygonWithHoles2& window_;
-  int turn_ = 0;  // +1: outer loop convex counter-clockwise, -1: clockwise, 0: not convex
+  int turn_ = 0;         // +1: outer loop convex counter-clockwise, -1: clockwise, 0: not convex
+  clipper::Loop2 hull_;  // the outer loop's convex hull, counter-clockwise, when not convex
 };
 
 // +1 or -1 when `loop` is a convex loop turning that way (orient2d's sign), straight runs
