@@ -7,6 +7,7 @@
 #include <exception>
 #include <glm/geometric.hpp>
 #include <mutex>
+#include <span>
 #include <thread>
 #include <unordered_map>
 
@@ -124,12 +125,20 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     if (!faces_light(parts.planes[i], light)) ++stats.faces_facing_away;
   }
   stats.faces_considered = considered.size();
-  std::vector<hsr::Polygon3> polygons;
-  std::vector<hsr::Plane3> planes;
-  polygons.reserve(considered.size());
-  for (std::size_t i : considered) {
-    polygons.push_back(parts.polygons[i]);
-    planes.push_back(parts.planes[i]);
+  // A light without range (the sun) considers every part: no copy of them then.
+  std::span<const hsr::Polygon3> polygons = parts.polygons;
+  std::span<const hsr::Plane3> planes = parts.planes;
+  std::vector<hsr::Polygon3> polygons_in_range;
+  std::vector<hsr::Plane3> planes_in_range;
+  if (considered.size() < n) {
+    polygons_in_range.reserve(considered.size());
+    planes_in_range.reserve(considered.size());
+    for (std::size_t i : considered) {
+      polygons_in_range.push_back(parts.polygons[i]);
+      planes_in_range.push_back(parts.planes[i]);
+    }
+    polygons = polygons_in_range;
+    planes = planes_in_range;
   }
 
   const std::vector<hsr::View> views = detail::light_views(light, polygons, planes, parts.centre);
