@@ -101,6 +101,8 @@ ConvexWindow::ConvexWindow(const clipper::PolygonWithHoles2& window)
 }
 
 clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject) const {
+  // A loop without area is the clipper's to drop.
+  if (subject.outer.size() < 3) return clipper::clip(subject, window_);
   // Beside the window: an edge line of the window's hull (its outer loop when convex)
   // with the whole subject on or beyond it.
   const bool beside = turn_ != 0
