@@ -6,16 +6,16 @@
 
 #include "clipper/clip.h"
 #include "clipper/merge.h"
-#include "hsr/detail/box2.h"
+#include "hsr/box2.h"
+#include "hsr/convex_window.h"
 #include "hsr/detail/half_plane.h"
-#include "hsr/detail/spatial_grid.h"
+#include "hsr/spatial_grid.h"
 
 namespace shadowgen::hsr {
 namespace {
 
 using clipper::PolygonSet2;
 using clipper::PolygonWithHoles2;
-using detail::Box2;
 
 // Relative bound on the error of a nearness difference: evaluating two affine functions,
 // whose coefficients are themselves rounded from the planes, costs a few dozen ulps of the
@@ -40,8 +40,8 @@ class AreaSort {
   void run(std::vector<Piece> pieces, std::vector<Fragment>& out) {
     out_ = &out;
     Box2 extent;
-    for (const Piece& p : pieces) extent.add(detail::box_of(p.shape));
-    detail::SpatialGrid grid(extent, pieces.size());
+    for (const Piece& p : pieces) extent.add(box_of(p.shape));
+    SpatialGrid grid(extent, pieces.size());
     std::vector<Box2> boxes;
     std::vector<bool> alive;
     // Rough depth sort: nearest first, by each piece's nearest vertex; ties by parent so
@@ -54,7 +54,7 @@ class AreaSort {
     std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
     auto add = [&](Piece piece) {
       const std::size_t id = pieces.size();
-      boxes.push_back(detail::box_of(piece.shape));
+      boxes.push_back(box_of(piece.shape));
       alive.push_back(true);
       grid.insert(id, boxes.back());
       const double key = nearest(piece);
@@ -64,7 +64,7 @@ class AreaSort {
     std::vector<Piece> initial = std::move(pieces);
     pieces.clear();
     for (Piece& p : initial) {
-      const Box2 box = detail::box_of(p.shape);
+      const Box2 box = box_of(p.shape);
       if (!grid.is_wide(box)) {
         add(std::move(p));
         continue;
@@ -91,6 +91,7 @@ class AreaSort {
       grid.erase_wide(t);
       ++stats_.templates;
       const Piece template_piece = pieces[t];
+      const ConvexWindow template_window(template_piece.shape);
       const Box2 tbox = boxes[t];
       candidates.clear();
       grid.query(tbox, candidates);
@@ -98,7 +99,7 @@ class AreaSort {
       for (std::size_t c : candidates) {
         if (!alive[c] || !boxes[c].overlaps(tbox)) continue;
         ++stats_.clips;
-        clipper::ClipResult r = clipper::clip(pieces[c].shape, template_piece.shape);
+        clipper::ClipResult r = template_window.clip(pieces[c].shape);
         if (r.inside.empty()) continue;
         alive[c] = false;
         grid.erase_wide(c);
@@ -143,8 +144,8 @@ class AreaSort {
     ++stats_.depth_splits;
     const Nearness& np = nearness_[piece.parent];
     const Nearness& nt = nearness_[front_parent];
-    const PolygonWithHoles2 half = detail::half_plane_in_box(np.a - nt.a, np.b - nt.b, np.c - nt.c,
-                                                             detail::box_of(piece.shape));
+    const PolygonWithHoles2 half =
+        detail::half_plane_in_box(np.a - nt.a, np.b - nt.b, np.c - nt.c, box_of(piece.shape));
     if (half.outer.empty()) return;
     ++stats_.clips;
     for (PolygonWithHoles2& p : clipper::clip(piece.shape, half).inside) {
@@ -194,9 +195,10 @@ class AreaSort {
     Piece front = std::move(offenders[best]);
     offenders.erase(offenders.begin() + static_cast<std::ptrdiff_t>(best));
     std::vector<Piece> in_front_area, elsewhere;
+    const ConvexWindow front_window(front.shape);
     for (Piece& p : offenders) {
       ++stats_.clips;
-      clipper::ClipResult r = clipper::clip(p.shape, front.shape);
+      clipper::ClipResult r = front_window.clip(p.shape);
       for (PolygonWithHoles2& q : r.inside) in_front_area.push_back({std::move(q), p.parent});
       for (PolygonWithHoles2& q : r.outside) elsewhere.push_back({std::move(q), p.parent});
     }

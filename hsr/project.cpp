@@ -112,7 +112,7 @@ clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view) 
     const double fx = f[i] - f[k] * n[i] / n[k];
     const double fy = f[j] - f[k] * n[j] / n[k];
     const double f0 = f[k] * chart.plane.offset / n[k] - view.near();
-    detail::Box2 box;
+    Box2 box;
     for (const clipper::Point2& q : flat.outer) box.add(q);
     const clipper::PolygonWithHoles2 keep = detail::half_plane_in_box(fx, fy, f0, box);
     const clipper::PolygonSet2 front = clipper::intersection({flat}, {keep});

@@ -7,12 +7,15 @@
 #include <exception>
 #include <glm/geometric.hpp>
 #include <mutex>
+#include <span>
 #include <thread>
 #include <unordered_map>
 
-#include "clipper/clip.h"
 #include "clipper/merge.h"
+#include "hsr/box2.h"
+#include "hsr/convex_window.h"
 #include "hsr/hidden_surface.h"
+#include "hsr/spatial_grid.h"
 #include "shadowgen/detail/coplanar_groups.h"
 #include "shadowgen/detail/grazing_light.h"
 #include "shadowgen/detail/light_views.h"
@@ -47,31 +50,6 @@ Parts flatten(const Scene& scene) {
   if (!parts.polygons.empty()) parts.centre = 0.5 * (lo + hi);
   parts.coplanar = detail::coplanar_groups(parts.polygons, parts.planes);
   return parts;
-}
-
-// An image-space bounding box.
-struct Box2 {
-  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-  void include(const Box2& o) {
-    xmin = std::min(xmin, o.xmin);
-    xmax = std::max(xmax, o.xmax);
-    ymin = std::min(ymin, o.ymin);
-    ymax = std::max(ymax, o.ymax);
-  }
-  bool meets(const Box2& o) const {
-    return xmin <= o.xmax && o.xmin <= xmax && ymin <= o.ymax && o.ymin <= ymax;
-  }
-};
-
-Box2 box_of(const clipper::Loop2& loop) {
-  Box2 b;
-  for (const clipper::Point2& p : loop) {
-    b.xmin = std::min(b.xmin, p.x);
-    b.xmax = std::max(b.xmax, p.x);
-    b.ymin = std::min(b.ymin, p.y);
-    b.ymax = std::max(b.ymax, p.y);
-  }
-  return b;
 }
 
 // Does the light reach the front side of this plane at all? A light in the plane (or
@@ -145,12 +123,20 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     if (!faces_light(parts.planes[i], light)) ++stats.faces_facing_away;
   }
   stats.faces_considered = considered.size();
-  std::vector<hsr::Polygon3> polygons;
-  std::vector<hsr::Plane3> planes;
-  polygons.reserve(considered.size());
-  for (std::size_t i : considered) {
-    polygons.push_back(parts.polygons[i]);
-    planes.push_back(parts.planes[i]);
+  // A light without range (the sun) considers every part: no copy of them then.
+  std::span<const hsr::Polygon3> polygons = parts.polygons;
+  std::span<const hsr::Plane3> planes = parts.planes;
+  std::vector<hsr::Polygon3> polygons_in_range;
+  std::vector<hsr::Plane3> planes_in_range;
+  if (considered.size() < n) {
+    polygons_in_range.reserve(considered.size());
+    planes_in_range.reserve(considered.size());
+    for (std::size_t i : considered) {
+      polygons_in_range.push_back(parts.polygons[i]);
+      planes_in_range.push_back(parts.planes[i]);
+    }
+    polygons = polygons_in_range;
+    planes = planes_in_range;
   }
 
   const std::vector<hsr::View> views = detail::light_views(light, polygons, planes, parts.centre);
@@ -174,29 +160,47 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     std::vector<clipper::PolygonSet2> extra(polygons.size());
     for (const auto& [g, members] : groups) {
       if (members.size() < 2) continue;
-      // The visible pieces of the group with their boxes: a receiver clips only the pieces
-      // whose box meets its image's (a ground of 16,641 coplanar tiles would otherwise
-      // clip every tile against every other).
+      // The visible pieces of the group in a grid of their boxes: a receiver clips only the
+      // pieces whose box overlaps its image's (a ground of 16,641 coplanar tiles would
+      // otherwise clip every tile against every other). Boxes that only touch hold regions
+      // that share no area, so their intersection would be empty anyway.
       struct Owned {
         std::size_t owner;
         const clipper::PolygonWithHoles2* shape;
-        Box2 box;
       };
       std::vector<Owned> pieces;
+      std::vector<hsr::Box2> boxes;
+      hsr::Box2 extent;
       for (std::size_t m : members) {
-        for (const auto& piece : seen[m]) pieces.push_back({m, &piece, box_of(piece.outer)});
+        for (const auto& piece : seen[m]) {
+          pieces.push_back({m, &piece});
+          boxes.push_back(hsr::box_of(piece));
+          extent.add(boxes.back());
+        }
       }
       if (pieces.empty()) continue;
+      hsr::SpatialGrid grid(extent, pieces.size());
+      for (std::size_t i = 0; i < pieces.size(); ++i) grid.insert(i, boxes[i]);
+      std::vector<std::size_t> near;
       for (std::size_t k : members) {
         if (!faces_light(planes[k], light)) continue;
         const clipper::PolygonSet2 image = hsr::project_polygon(polygons[k], view);
         if (image.empty()) continue;
-        Box2 box = box_of(image.front().outer);
-        for (const auto& p : image) box.include(box_of(p.outer));
-        for (const Owned& piece : pieces) {
-          if (piece.owner == k || !box.meets(piece.box)) continue;
-          for (auto& q : clipper::intersection({*piece.shape}, image)) {
-            extra[k].push_back(std::move(q));
+        hsr::Box2 box;
+        std::vector<hsr::ConvexWindow> windows;
+        for (const auto& p : image) {
+          box.add(hsr::box_of(p));
+          windows.emplace_back(p);
+        }
+        near.clear();
+        grid.query(box, near);
+        // In the pieces' own order, so the result does not depend on the grid's.
+        std::sort(near.begin(), near.end());
+        for (std::size_t i : near) {
+          if (pieces[i].owner == k || !box.overlaps(boxes[i])) continue;
+          // The image's parts are disjoint: the piece within each, in turn.
+          for (const hsr::ConvexWindow& window : windows) {
+            for (auto& q : window.clip(*pieces[i].shape).inside) extra[k].push_back(std::move(q));
           }
         }
       }

@@ -3,7 +3,7 @@
 // The part of a box on one side of a line, as a convex polygon the clipper can use.
 
 #include "clipper/polygon.h"
-#include "hsr/detail/box2.h"
+#include "hsr/box2.h"
 
 namespace shadowgen::hsr::detail {
 

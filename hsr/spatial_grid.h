@@ -1,14 +1,15 @@
 #pragma once
 
-// A uniform grid over image-space bounding boxes: which pieces may overlap a template.
+// A uniform grid over image-space bounding boxes: which pieces may overlap a template
+// (hidden-surface removal) or a receiver (shadow generation's coplanar faces).
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "hsr/detail/box2.h"
+#include "hsr/box2.h"
 
-namespace shadowgen::hsr::detail {
+namespace shadowgen::hsr {
 
 class SpatialGrid {
  public:
@@ -44,4 +45,4 @@ class SpatialGrid {
   std::uint32_t stamp_ = 0;
 };
 
-}  // namespace shadowgen::hsr::detail
+}  // namespace shadowgen::hsr

@@ -1,9 +1,9 @@
-#include "hsr/detail/spatial_grid.h"
+#include "hsr/spatial_grid.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace shadowgen::hsr::detail {
+namespace shadowgen::hsr {
 
 SpatialGrid::SpatialGrid(const Box2& extent, std::size_t expected_items) : extent_(extent) {
   const double w = extent.xmax - extent.xmin, h = extent.ymax - extent.ymin;
@@ -107,4 +107,4 @@ void SpatialGrid::query(const Box2& box, std::vector<std::size_t>& out) {
   }
 }
 
-}  // namespace shadowgen::hsr::detail
+}  // namespace shadowgen::hsr
