@@ -65,7 +65,7 @@ struct EdgeRef {
 struct Insertion {
   int loop;
   int index;
-  Point2 point;
+  detail::EdgePoint at;
 };
 
 // Finds every point where the two boundaries meet and records it for insertion into
@@ -130,7 +130,11 @@ class IntersectionFinder {
   }
 
   void insert(const EdgeRef& e, const Point2& p) {
-    insertions[e.side].push_back({e.loop, e.index, p});
+    insertions[e.side].push_back({e.loop, e.index, {p}});
+  }
+  // The rounded crossing with the other operand's edge f0-f1, which orders it exactly.
+  void insert_crossing(const EdgeRef& e, const Point2& p, const Point2& f0, const Point2& f1) {
+    insertions[e.side].push_back({e.loop, e.index, {p, true, f0, f1}});
   }
 
   // An endpoint of one edge lying on the other: a touching point, already a vertex of
@@ -153,8 +157,8 @@ class IntersectionFinder {
       const Point2 p = crossing_point(a0, a1, b0, b1);
       nodes.insert(p);
       crossings.insert(p);
-      insert(a, p);
-      insert(b, p);
+      insert_crossing(a, p, b0, b1);
+      insert_crossing(b, p, a0, a1);
       return;
     }
     // Touching or collinear overlap: every endpoint lying on the other segment.
@@ -207,7 +211,7 @@ std::vector<Insertion> self_touches(const Boundary& loops) {
       if (std::max(a.x, b.x) < p.x) continue;  // left behind by the sweep
       active[kept++] = e;
       if (p == a || p == b) continue;
-      if (on_segment(a, b, p)) found.push_back({e->loop, e->index, p});
+      if (on_segment(a, b, p)) found.push_back({e->loop, e->index, {p}});
     }
     active.resize(kept);
   }
@@ -248,12 +252,12 @@ SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& ins
       const std::size_t first = k;
       while (k < insertions.size() && insertions[k].loop == l && insertions[k].index == i) ++k;
       if (k == first) continue;
-      const detail::AlongSegment along(p, q);
+      const detail::ExactlyAlongSegment along(p, q);
       std::sort(insertions.begin() + static_cast<std::ptrdiff_t>(first),
                 insertions.begin() + static_cast<std::ptrdiff_t>(k),
-                [&](const Insertion& a, const Insertion& b) { return along(a.point, b.point); });
+                [&](const Insertion& a, const Insertion& b) { return along(a.at, b.at); });
       for (std::size_t j = first; j < k; ++j) {
-        if (insertions[j].point != q) push(insertions[j].point, -1, i);
+        if (insertions[j].at.point != q) push(insertions[j].at.point, -1, i);
       }
     }
     while (result.points.size() > 1 && result.points.back() == result.points.front()) {
@@ -522,8 +526,8 @@ ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
           dst = &bucket(side_of_edge(v, e0, e1, it->second));
         } else {
           // No usable local picture: decide at the middle of the stretch's first edge.
-          const Point2 mid{0.5 * (v.x + w.x), 0.5 * (v.y + w.y)};
-          dst = detail::locate(mid, other_loops) == Location::kInside ? &out.inside : &out.outside;
+          dst = detail::locate_midpoint(v, w, other_loops) == Location::kInside ? &out.inside
+                                                                                : &out.outside;
         }
       }
       dst->push_back({v, w});

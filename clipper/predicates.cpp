@@ -61,6 +61,7 @@ class Expansion {
     add(hi.lo);
     add(hi.hi);
   }
+  const std::vector<double>& terms() const { return terms_; }
   // The largest component carries the sign of the exact sum.
   double sign() const { return terms_.empty() ? 0.0 : terms_.back(); }
   double approximate() const {
@@ -158,6 +159,103 @@ Orientation orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3&
       }
     }
   }
+  return to_orientation(e.sign());
+}
+
+namespace {
+
+// Sign of (a − c) + (b − c) = a + b − 2c. The filter: each of the three roundings is
+// within u of its result, so the computed sum is off by at most 3u·(|a − c| + |b − c|)
+// (to first order; 4u covers the rest).
+int midpoint_sign(double a, double b, double c) {
+  const double da = a - c;
+  const double db = b - c;
+  const double sum = da + db;
+  const double bound = 4.0 * kEpsilon * (std::fabs(da) + std::fabs(db));
+  if (sum > bound) return 1;
+  if (-sum > bound) return -1;
+  const Pair ea = two_diff(a, c);
+  const Pair eb = two_diff(b, c);
+  Expansion e;
+  for (double t : {ea.lo, eb.lo, ea.hi, eb.hi}) e.add(t);
+  const double s = e.sign();
+  return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+}
+
+}  // namespace
+
+Orientation orient2d_crossing(const Point2& g0, const Point2& g1, const Point2& e0,
+                              const Point2& e1, const Point2& f0, const Point2& f1) {
+  // The crossing is X = e0 + t·(e1 − e0) with t = A / (A − B), A = [f0 f1 e0] and
+  // B = [f0 f1 e1] of opposite signs. [g0 g1 X] is affine in X, so
+  //     [g0 g1 X] = (A·G1 − B·G0) / (A − B),   G0 = [g0 g1 e0], G1 = [g0 g1 e1],
+  // and A − B has A's sign. The filter: each determinant is rounded once from its exact
+  // value (relative error 2^-52), each product and the difference once more, so the
+  // computed numerator is off by less than 4·2^-52·(|A·G1| + |B·G0|) (8 leaves room).
+  const Expansion ea = exact_determinant(f0, f1, e0), eb = exact_determinant(f0, f1, e1);
+  const Expansion eg0 = exact_determinant(g0, g1, e0), eg1 = exact_determinant(g0, g1, e1);
+  const double a = ea.approximate(), b = eb.approximate();
+  const double g0v = eg0.approximate(), g1v = eg1.approximate();
+  const double left = a * g1v, right = b * g0v;
+  const double numerator = left - right;
+  const double bound = 16.0 * kEpsilon * (std::fabs(left) + std::fabs(right));
+  double sign = 0.0;
+  if (numerator > bound || -numerator > bound) {
+    sign = numerator;
+  } else {
+    Expansion e;
+    auto add_product = [&e](const Expansion& x, const Expansion& y, double s) {
+      for (double xi : x.terms()) {
+        for (double yi : y.terms()) {
+          const Pair p = two_product(s * xi, yi);
+          e.add(p.lo);
+          e.add(p.hi);
+        }
+      }
+    };
+    add_product(ea, eg1, 1.0);
+    add_product(eb, eg0, -1.0);
+    sign = e.sign();
+  }
+  return to_orientation(a > 0.0 ? sign : -sign);
+}
+
+int compare_x(const Midpoint2& m, double x) { return midpoint_sign(m.a.x, m.b.x, x); }
+
+int compare_y(const Midpoint2& m, double y) { return midpoint_sign(m.a.y, m.b.y, y); }
+
+Orientation orient2d(const Point2& p, const Point2& q, const Midpoint2& m) {
+  // 2·(q − p) x (m − p) = (q − p) x ((a − p) + (b − p)). The filter: the differences and
+  // the sums are rounded once each (relative error u), the products and the final
+  // difference once more, so the error is below 5u·(|dx|·Ty + |dy|·Tx) + u·|det| with
+  // T the sums of the absolute differences; 8u·permanent covers it with room to spare.
+  const double dx = q.x - p.x, dy = q.y - p.y;
+  const double ax = m.a.x - p.x, bx = m.b.x - p.x;
+  const double ay = m.a.y - p.y, by = m.b.y - p.y;
+  const double left = dx * (ay + by);
+  const double right = dy * (ax + bx);
+  const double det = left - right;
+  const double permanent = std::fabs(dx) * (std::fabs(ay) + std::fabs(by)) +
+                           std::fabs(dy) * (std::fabs(ax) + std::fabs(bx));
+  const double bound = 8.0 * kEpsilon * permanent;
+  if (det > bound || -det > bound) return to_orientation(det);
+  const Pair ex = two_diff(q.x, p.x), ey = two_diff(q.y, p.y);
+  const Pair sx[2] = {two_diff(m.a.x, p.x), two_diff(m.b.x, p.x)};
+  const Pair sy[2] = {two_diff(m.a.y, p.y), two_diff(m.b.y, p.y)};
+  Expansion e;
+  auto add_products = [&e](const Pair& l, const Pair(&r)[2], double sign) {
+    for (double li : {l.hi, l.lo}) {
+      for (const Pair& rp : r) {
+        for (double ri : {rp.hi, rp.lo}) {
+          const Pair prod = two_product(sign * li, ri);
+          e.add(prod.lo);
+          e.add(prod.hi);
+        }
+      }
+    }
+  };
+  add_products(ex, sy, 1.0);
+  add_products(ey, sx, -1.0);
   return to_orientation(e.sign());
 }
 

@@ -32,4 +32,26 @@ Orientation orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3&
 // True when p lies on the closed segment [a, b] (exact).
 bool on_segment(const Point2& a, const Point2& b, const Point2& p);
 
+// Which side of the line g0 -> g1 the exact crossing point of the segments e0-e1 and
+// f0-f1 lies on, without constructing it. The segments must cross properly (each
+// strictly separates the other's endpoints). Exact in the same sense as orient2d, for
+// coordinates of magnitude up to about 1e75 (it multiplies pairs of determinants).
+Orientation orient2d_crossing(const Point2& g0, const Point2& g1, const Point2& e0,
+                              const Point2& e1, const Point2& f0, const Point2& f1);
+
+// The midpoint m = (a + b) / 2 of two points, held exactly. Rounded to doubles, m can
+// land an ulp off the segment [a, b], across a boundary that runs within an ulp of it
+// (a sliver between two nearly collinear edges); these predicates decide for m itself.
+struct Midpoint2 {
+  Point2 a;
+  Point2 b;
+};
+
+// Signs of m.x − x and m.y − y: -1, 0 or 1, exact.
+int compare_x(const Midpoint2& m, double x);
+int compare_y(const Midpoint2& m, double y);
+
+// Sign of (q - p) x (m - p), exact in the same sense as orient2d.
+Orientation orient2d(const Point2& p, const Point2& q, const Midpoint2& m);
+
 }  // namespace shadowgen::clipper

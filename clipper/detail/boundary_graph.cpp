@@ -150,7 +150,7 @@ bool encloses(const Loop2& outer, const Loop2& hole) {
   for (std::size_t i = 0; i < hole.size(); ++i) {
     const Point2& a = hole[i];
     const Point2& b = hole[(i + 1) % hole.size()];
-    const Location where = locate({0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}, outer);
+    const Location where = locate_midpoint(a, b, outer);
     if (where != Location::kBoundary) return where == Location::kInside;
   }
   return false;

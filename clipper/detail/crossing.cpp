@@ -43,4 +43,39 @@ Point2 crossing_point(const Point2& a_start, const Point2& a_end, const Point2& 
   return p;
 }
 
+ExactlyAlongSegment::ExactlyAlongSegment(const Point2& e0, const Point2& e1)
+    : e0_(e0), e1_(e1), along_(e0, e1), by_x_(std::fabs(e1.x - e0.x) >= std::fabs(e1.y - e0.y)) {}
+
+double ExactlyAlongSegment::rounding(const EdgePoint& p) const {
+  if (!p.crossing) return 0.0;
+  constexpr double u = 0x1p-53;
+  const double length = std::fabs(e1_.x - e0_.x) + std::fabs(e1_.y - e0_.y);
+  const double magnitude = std::fabs(p.point.x) + std::fabs(p.point.y);
+  return 4.0 * u * length + u * magnitude;  // 1-norms: above the Euclidean bound
+}
+
+// -1 when a's exact point comes first, 1 when b's does, 0 when they are the same point.
+int ExactlyAlongSegment::exact_order(const EdgePoint& a, const EdgePoint& b) const {
+  if (b.crossing) {
+    // a comes first when its exact point lies strictly on e0's side of b's segment.
+    const Orientation start = orient2d(b.f0, b.f1, e0_);
+    const Orientation side = a.crossing ? orient2d_crossing(b.f0, b.f1, e0_, e1_, a.f0, a.f1)
+                                        : orient2d(b.f0, b.f1, a.point);
+    if (side == Orientation::kCollinear) return 0;
+    return side == start ? -1 : 1;
+  }
+  if (a.crossing) return -exact_order(b, a);
+  if (a.point == b.point) return 0;
+  return along_(a.point, b.point) ? -1 : 1;  // both exactly on the segment
+}
+
+bool ExactlyAlongSegment::operator()(const EdgePoint& a, const EdgePoint& b) const {
+  const double ua = by_x_ ? a.point.x : a.point.y;
+  const double ub = by_x_ ? b.point.x : b.point.y;
+  if (std::fabs(ua - ub) > rounding(a) + rounding(b)) return along_(a.point, b.point);
+  const int order = exact_order(a, b);
+  if (order != 0) return order < 0;
+  return along_(a.point, b.point);
+}
+
 }  // namespace shadowgen::clipper::detail

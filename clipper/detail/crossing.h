@@ -41,4 +41,34 @@ class AlongSegment {
   bool by_x_, main_ascending_, other_ascending_;
 };
 
+// A point inserted into the segment e0 -> e1: a vertex lying exactly on it, or the
+// rounded crossing with the segment f0-f1 (crossing true).
+struct EdgePoint {
+  Point2 point;
+  bool crossing = false;
+  Point2 f0{}, f1{};
+};
+
+// The exact order of such points along e0 -> e1: the order of the exact points they
+// stand for, not of their rounded coordinates. Two crossings of one edge less than a
+// rounding apart (an edge passing within an ulp of the other operand's vertex crosses
+// both of its edges) can round in the opposite order; traced in that order, the stretch
+// between them is taken for the one beyond, and the boundary is wrong far from there.
+// Points farther apart than their rounding (4u·|e| + u·|P| each, clip.h) are ordered by
+// AlongSegment, which agrees; closer ones by exact predicates (orient2d_crossing); the
+// same exact point, by AlongSegment again.
+class ExactlyAlongSegment {
+ public:
+  ExactlyAlongSegment(const Point2& e0, const Point2& e1);
+  bool operator()(const EdgePoint& a, const EdgePoint& b) const;
+
+ private:
+  double rounding(const EdgePoint& p) const;
+  int exact_order(const EdgePoint& a, const EdgePoint& b) const;
+
+  Point2 e0_, e1_;
+  AlongSegment along_;
+  bool by_x_;
+};
+
 }  // namespace shadowgen::clipper::detail

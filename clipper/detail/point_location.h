@@ -17,4 +17,10 @@ Location locate(const Point2& p, const Loop2& loop);
 // clockwise): the winding number is 1 inside, 0 outside.
 Location locate(const Point2& p, const std::vector<Loop2>& loops);
 
+// The same for the midpoint (a + b) / 2, decided exactly without rounding it: the rounded
+// midpoint of a segment can lie an ulp off it, across a boundary running within an ulp
+// of the segment, and so be located on the wrong side of that boundary.
+Location locate_midpoint(const Point2& a, const Point2& b, const Loop2& loop);
+Location locate_midpoint(const Point2& a, const Point2& b, const std::vector<Loop2>& loops);
+
 }  // namespace shadowgen::clipper::detail

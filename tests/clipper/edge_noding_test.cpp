@@ -150,3 +150,29 @@ TEST(VertexMerge, PointsFartherThanTheSnapDistanceStay) {
 
 }  // namespace
 }  // namespace shadowgen::clipper::detail
+
+namespace shadowgen::clipper::detail {
+namespace {
+
+// The fuzzer's case (tests/clipper/regressions/crossings-rounded-out-of-order.wkt): an
+// edge passing 1.2e-15 above a vertex crosses both edges there, 1e-16 apart; rounded,
+// the two crossings compare the wrong way round, exactly they do not.
+TEST(ExactlyAlongSegment, OrdersCrossingsLessThanARoundingApartExactly) {
+  const Point2 e0{-7.9999999999999432, -7.9999999999999964}, e1{1.0, -8.0};
+  const Point2 vertex{-2.0, -8.0}, before{-4.0009727478027344, -2.0000000000000036};
+  const Point2 after{-3.9999999999999574, 0.0};
+  const EdgePoint first{crossing_point(e0, e1, before, vertex), true, before, vertex};
+  const EdgePoint second{crossing_point(e0, e1, vertex, after), true, vertex, after};
+  ASSERT_TRUE(AlongSegment(e0, e1)(second.point, first.point));  // rounding's order
+  const ExactlyAlongSegment along(e0, e1);
+  EXPECT_TRUE(along(first, second));
+  EXPECT_FALSE(along(second, first));
+  EXPECT_FALSE(along(first, first));
+  // A vertex exactly on the edge is ordered against crossings exactly too.
+  const EdgePoint end{e1};
+  EXPECT_TRUE(along(second, end));
+  EXPECT_FALSE(along(end, first));
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper::detail

@@ -83,3 +83,102 @@ TEST(Orient3d, ExactOnATiltedPlaneAndOneUlpOff) {
 
 }  // namespace
 }  // namespace shadowgen::clipper
+
+namespace shadowgen::clipper {
+namespace {
+
+// The midpoint predicates against the same 128-bit reference: on the grid 2^-53·k,
+// 2m = a + b and 2·(q − p) x (m − p) = (q − p) x (a + b − 2p) are integers.
+int exact_midpoint_orientation_on_grid(const Point2& p, const Point2& q, const Midpoint2& m) {
+  auto scaled = [](double v) { return static_cast<Int128>(std::ldexp(v, 53)); };
+  const Int128 dx = scaled(q.x) - scaled(p.x), dy = scaled(q.y) - scaled(p.y);
+  const Int128 sx = scaled(m.a.x) + scaled(m.b.x) - 2 * scaled(p.x);
+  const Int128 sy = scaled(m.a.y) + scaled(m.b.y) - 2 * scaled(p.y);
+  const Int128 det = dx * sy - dy * sx;
+  return det > 0 ? 1 : (det < 0 ? -1 : 0);
+}
+
+// Midpoints of pairs of points a few ulps around (0.5, 0.5) against the diagonal through
+// (12, 12) and (24, 24): every midpoint lies on it, half of them half an ulp from any
+// double, and the other pairs' midpoints off it by half an ulp.
+TEST(Orient2dMidpoint, MatchesExactSignNearADegenerateLine) {
+  const Point2 p{12.0, 12.0}, q{24.0, 24.0};
+  int mismatches = 0, collinear = 0, unrepresentable_collinear = 0;
+  for (int i = 0; i < 32; ++i) {
+    for (int j = 0; j < 32; ++j) {
+      const Point2 a{0.5 + std::ldexp(i, -53), 0.5 + std::ldexp(j, -53)};
+      const Point2 b{0.5 + std::ldexp(j, -53), 0.5 + std::ldexp(i, -53)};
+      const Midpoint2 m{a, b};
+      const int expected = exact_midpoint_orientation_on_grid(p, q, m);
+      if (expected != static_cast<int>(orient2d(p, q, m))) ++mismatches;
+      const Midpoint2 off{a, {b.x + std::ldexp(1.0, -53), b.y}};
+      if (exact_midpoint_orientation_on_grid(p, q, off) != static_cast<int>(orient2d(p, q, off))) {
+        ++mismatches;
+      }
+      if (expected == 0) {
+        ++collinear;
+        if ((i + j) % 2 != 0) ++unrepresentable_collinear;
+      }
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(collinear, 32 * 32);  // (i + j) / 2 ulps in both coordinates: on the diagonal
+  EXPECT_GT(unrepresentable_collinear, 0);
+}
+
+TEST(Orient2dMidpoint, SidesOffTheLineAndFarFromTheOrigin) {
+  const Point2 p{1e8, 1e8}, q{1e8 + 4.0, 1e8 + 2.0};
+  // (p + q) / 2 lies on the line; one ulp either way in y moves the midpoint half an ulp.
+  const double up = std::nextafter(1e8 + 2.0, 2e8), down = std::nextafter(1e8 + 2.0, 0.0);
+  EXPECT_EQ(orient2d(p, q, Midpoint2{p, q}), Orientation::kCollinear);
+  EXPECT_EQ(orient2d(p, q, Midpoint2{p, {q.x, up}}), Orientation::kCounterClockwise);
+  EXPECT_EQ(orient2d(p, q, Midpoint2{p, {q.x, down}}), Orientation::kClockwise);
+}
+
+TEST(CompareMidpoint, ExactWhereTheMidpointIsNoDouble) {
+  const double x = 3461825.89;
+  const double next = std::nextafter(x, 4e6);
+  const Midpoint2 m{{x, 0.0}, {next, 1.0}};  // m.x is half an ulp above x: no double
+  EXPECT_EQ(compare_x(m, x), 1);
+  EXPECT_EQ(compare_x(m, next), -1);
+  EXPECT_EQ(compare_x(Midpoint2{{x, 0.0}, {x, 1.0}}, x), 0);
+  EXPECT_EQ(compare_y(m, 0.5), 0);
+  EXPECT_EQ(compare_y(m, std::nextafter(0.5, 1.0)), -1);
+  EXPECT_EQ(compare_y(Midpoint2{{0.0, 1e300}, {0.0, 1e300}}, 1e300), 0);
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper
+
+namespace shadowgen::clipper {
+namespace {
+
+// The crossing of the diagonal e with the segment f lies on a known point; the line g
+// through it, and one ulp beside it, tell the predicate's three answers apart.
+TEST(Orient2dCrossing, SideOfALineThroughTheExactCrossing) {
+  const Point2 e0{0.0, 0.0}, e1{3.0, 3.0};  // y = x
+  const Point2 f0{0.0, 2.0}, f1{2.0, 0.0};  // x + y = 2: crosses e at (1, 1)
+  const Point2 g0{1.0, -5.0};
+  EXPECT_EQ(orient2d_crossing(g0, {1.0, 7.0}, e0, e1, f0, f1), Orientation::kCollinear);
+  const double right = std::nextafter(1.0, 2.0), left = std::nextafter(1.0, 0.0);
+  // The line x = 1 + ulp, going up: (1, 1) lies to its left.
+  EXPECT_EQ(orient2d_crossing({right, -5.0}, {right, 7.0}, e0, e1, f0, f1),
+            Orientation::kCounterClockwise);
+  EXPECT_EQ(orient2d_crossing({left, -5.0}, {left, 7.0}, e0, e1, f0, f1), Orientation::kClockwise);
+  // Independent of the direction of e and f.
+  EXPECT_EQ(orient2d_crossing({left, -5.0}, {left, 7.0}, e1, e0, f1, f0), Orientation::kClockwise);
+}
+
+// A crossing that is no double: e: y = x/3 crosses f: x = 1 at (1, 1/3). The line
+// y = 1/3 rounded down passes below it, rounded up above it.
+TEST(Orient2dCrossing, ExactWhereTheCrossingIsNoDouble) {
+  const Point2 e0{0.0, 0.0}, e1{3.0, 1.0}, f0{1.0, -1.0}, f1{1.0, 1.0};
+  const double third = 1.0 / 3.0;  // below 1/3
+  const double above = std::nextafter(third, 1.0);
+  EXPECT_EQ(orient2d_crossing({0.0, third}, {2.0, third}, e0, e1, f0, f1),
+            Orientation::kCounterClockwise);
+  EXPECT_EQ(orient2d_crossing({0.0, above}, {2.0, above}, e0, e1, f0, f1), Orientation::kClockwise);
+}
+
+}  // namespace
+}  // namespace shadowgen::clipper
