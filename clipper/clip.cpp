@@ -176,44 +176,79 @@ class IntersectionFinder {
 // inside an edge of the other loop. Inserting it there makes it a vertex of both, so the
 // traversal and the split at repeated vertices see the touch. Decided exactly.
 std::vector<Insertion> self_touches(const Boundary& loops) {
-  struct Event {
+  // A sweep over the vertices in x. An edge enters at its left end, itself a vertex, so
+  // one sort serves both; it is tested against the vertices of the other loops until the
+  // sweep has passed its right end. The active edges are kept in horizontal bands, so a
+  // vertex is tested only against the edges spanning its own band (bands are numbered by
+  // one monotone formula, so an edge whose y-range holds p.y is in p's band).
+  struct Vertex {
     double x;
-    int kind;  // 0: an edge starts, 1: a vertex
     int loop;
     int index;
   };
-  std::vector<Event> events;
+  struct Edge {
+    double xmax, ymin, ymax;
+    int loop;
+    int index;
+  };
+  std::vector<Vertex> vertices;
+  double ymin = INFINITY, ymax = -INFINITY;
   for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
-    const Loop2& loop = loops[l];
-    for (int i = 0; i < static_cast<int>(loop.size()); ++i) {
-      const Point2& p = loop[i];
-      const Point2& q = loop[(i + 1) % loop.size()];
-      events.push_back({std::min(p.x, q.x), 0, l, i});
-      events.push_back({p.x, 1, l, i});
+    for (int i = 0; i < static_cast<int>(loops[l].size()); ++i) {
+      const Point2& p = loops[l][i];
+      vertices.push_back({p.x, l, i});
+      ymin = std::min(ymin, p.y);
+      ymax = std::max(ymax, p.y);
     }
   }
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-    return a.x != b.x ? a.x < b.x : a.kind < b.kind;
-  });
+  std::sort(vertices.begin(), vertices.end(),
+            [](const Vertex& a, const Vertex& b) { return a.x < b.x; });
+  const int bands = static_cast<int>(std::clamp<std::size_t>(vertices.size() / 16, 1, 256));
+  const double band_height = (ymax - ymin) / bands;
+  auto band = [&](double y) {
+    if (!(band_height > 0.0)) return 0;
+    return std::clamp(static_cast<int>((y - ymin) / band_height), 0, bands - 1);
+  };
+  std::vector<Edge> edges;
+  edges.reserve(vertices.size());
+  std::vector<std::vector<int>> active(bands);
+  // Activates edge i of loop l (from vertex i to the next) when the sweep stands at its
+  // left end: at its start (at_start) or at its end. A vertical edge enters at its start,
+  // so each edge enters exactly once.
+  auto enter = [&](int l, int i, bool at_start) {
+    const Loop2& loop = loops[l];
+    const Point2& p = loop[i];
+    const Point2& q = loop[i + 1 == static_cast<int>(loop.size()) ? 0 : i + 1];
+    if ((p.x <= q.x) != at_start) return;
+    edges.push_back({std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y), l, i});
+    for (int b = band(std::min(p.y, q.y)), last = band(std::max(p.y, q.y)); b <= last; ++b) {
+      active[b].push_back(static_cast<int>(edges.size()) - 1);
+    }
+  };
   std::vector<Insertion> found;
-  std::vector<const Event*> active;
-  for (const Event& ev : events) {
-    if (ev.kind == 0) {
-      active.push_back(&ev);
-      continue;
+  std::size_t next = 0;
+  for (const Vertex& vertex : vertices) {
+    for (; next < vertices.size() && vertices[next].x <= vertex.x; ++next) {
+      const Vertex& v = vertices[next];
+      const int n = static_cast<int>(loops[v.loop].size());
+      enter(v.loop, v.index, true);                              // the edge leaving v
+      enter(v.loop, v.index == 0 ? n - 1 : v.index - 1, false);  // the edge arriving at v
     }
-    const Point2& p = loops[ev.loop][ev.index];
+    const Point2& p = loops[vertex.loop][vertex.index];
+    std::vector<int>& in_band = active[band(p.y)];
     std::size_t kept = 0;
-    for (const Event* e : active) {
-      const Loop2& loop = loops[e->loop];
-      const Point2& a = loop[e->index];
-      const Point2& b = loop[(e->index + 1) % loop.size()];
-      if (std::max(a.x, b.x) < p.x) continue;  // left behind by the sweep
-      active[kept++] = e;
+    for (const int k : in_band) {
+      const Edge& e = edges[k];
+      if (e.xmax < p.x) continue;  // left behind by the sweep
+      in_band[kept++] = k;
+      if (e.loop == vertex.loop || p.y < e.ymin || p.y > e.ymax) continue;
+      const Loop2& loop = loops[e.loop];
+      const Point2& a = loop[e.index];
+      const Point2& b = loop[(e.index + 1) % loop.size()];
       if (p == a || p == b) continue;
-      if (on_segment(a, b, p)) found.push_back({e->loop, e->index, {p}});
+      if (orient2d(a, b, p) == Orientation::kCollinear) found.push_back({e.loop, e.index, {p}});
     }
-    active.resize(kept);
+    in_band.resize(kept);
   }
   return found;
 }
@@ -225,10 +260,14 @@ struct SplitLoop {
   Loop2 points;
   std::vector<int> original;  // index of the input vertex, or -1 for an inserted point
   std::vector<int> edge;      // input edge that the edge leaving this vertex lies on
+  std::vector<char> node;     // whether the point is a node (looked up once, here)
 };
 using SplitBoundary = std::vector<SplitLoop>;
 
-SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& insertions) {
+// `nodes`, when given, marks which points are nodes: every inserted point is one (it was
+// inserted where the boundaries meet), an input vertex when it is in the set.
+SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& insertions,
+                              const std::unordered_set<Point2, Point2Hash>* nodes = nullptr) {
   std::sort(insertions.begin(), insertions.end(), [](const Insertion& a, const Insertion& b) {
     return a.loop != b.loop ? a.loop < b.loop : a.index < b.index;
   });
@@ -239,11 +278,12 @@ SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& ins
     SplitLoop& result = out[l];
     result.points.reserve(loop.size());
     const int n = static_cast<int>(loop.size());
-    auto push = [&result](const Point2& p, int original, int edge) {
+    auto push = [&result, nodes](const Point2& p, int original, int edge) {
       if (!result.points.empty() && result.points.back() == p) return;
       result.points.push_back(p);
       result.original.push_back(original);
       result.edge.push_back(edge);
+      result.node.push_back(nodes != nullptr && (original < 0 || nodes->count(p) != 0));
     };
     for (int i = 0; i < n; ++i) {
       const Point2& p = loop[i];
@@ -264,6 +304,7 @@ SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& ins
       result.points.pop_back();
       result.original.pop_back();
       result.edge.pop_back();
+      result.node.pop_back();
     }
   }
   return out;
@@ -289,15 +330,14 @@ struct Pass {
 };
 using PassMap = std::unordered_map<Point2, std::vector<Pass>, Point2Hash>;
 
-PassMap passes_through(const Boundary& loops, const SplitBoundary& split,
-                       const std::unordered_set<Point2, Point2Hash>& nodes) {
+PassMap passes_through(const Boundary& loops, const SplitBoundary& split) {
   PassMap passes;
   for (std::size_t l = 0; l < split.size(); ++l) {
     const Loop2& input = loops[l];
     const SplitLoop& loop = split[l];
     const int n = static_cast<int>(input.size());
     for (std::size_t i = 0; i < loop.points.size(); ++i) {
-      if (!nodes.count(loop.points[i])) continue;
+      if (!loop.node[i]) continue;
       const int e = loop.edge[i];
       if (loop.original[i] >= 0) {
         const int v = loop.original[i];
@@ -454,15 +494,14 @@ using SegmentSet = std::unordered_set<Segment, SegmentHash>;
 
 // The split edges of one operand that run from node to node: the only ones that can be
 // the very same segment as one of the other operand's.
-SegmentSet node_to_node_segments(const SplitBoundary& split,
-                                 const std::unordered_set<Point2, Point2Hash>& nodes) {
+SegmentSet node_to_node_segments(const SplitBoundary& split) {
   SegmentSet out;
   for (const SplitLoop& loop : split) {
     const std::size_t n = loop.points.size();
     for (std::size_t i = 0; i < n; ++i) {
-      const Point2& v = loop.points[i];
-      const Point2& w = loop.points[(i + 1) % n];
-      if (nodes.count(v) && nodes.count(w)) out.insert({v, w});
+      if (loop.node[i] && loop.node[(i + 1) % n]) {
+        out.insert({loop.points[i], loop.points[(i + 1) % n]});
+      }
     }
   }
   return out;
@@ -470,8 +509,7 @@ SegmentSet node_to_node_segments(const SplitBoundary& split,
 
 ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
                          const Boundary& other_loops, const PassMap& other_passes,
-                         const SegmentSet& other_segments,
-                         const std::unordered_set<Point2, Point2Hash>& nodes) {
+                         const SegmentSet& other_segments) {
   ClassifiedEdges out;
   auto bucket = [&out](Side s) -> std::vector<DirectedEdge>& {
     switch (s) {
@@ -492,7 +530,7 @@ ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
     const std::size_t n = loop.size();
     std::size_t first_node = n;
     for (std::size_t i = 0; i < n; ++i) {
-      if (nodes.count(loop[i])) {
+      if (split[l].node[i]) {
         first_node = i;
         break;
       }
@@ -510,7 +548,7 @@ ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
       const std::size_t i = (first_node + k) % n;
       const Point2& v = loop[i];
       const Point2& w = loop[(i + 1) % n];
-      if (nodes.count(v)) {
+      if (split[l].node[i]) {
         const auto it = other_passes.find(v);
         const int e = split[l].edge[i];
         const Point2& e0 = input[e];
@@ -560,16 +598,14 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
 
   IntersectionFinder finder(a_loops, b_loops);
   finder.run();
-  const SplitBoundary a_split = with_insertions(a_loops, finder.insertions[0]);
-  const SplitBoundary b_split = with_insertions(b_loops, finder.insertions[1]);
-  const PassMap a_passes = passes_through(a_loops, a_split, finder.nodes);
-  const PassMap b_passes = passes_through(b_loops, b_split, finder.nodes);
-  const SegmentSet a_segments = node_to_node_segments(a_split, finder.nodes);
-  const SegmentSet b_segments = node_to_node_segments(b_split, finder.nodes);
-  const ClassifiedEdges a_edges =
-      classify(a_loops, a_split, b_loops, b_passes, b_segments, finder.nodes);
-  const ClassifiedEdges b_edges =
-      classify(b_loops, b_split, a_loops, a_passes, a_segments, finder.nodes);
+  const SplitBoundary a_split = with_insertions(a_loops, finder.insertions[0], &finder.nodes);
+  const SplitBoundary b_split = with_insertions(b_loops, finder.insertions[1], &finder.nodes);
+  const PassMap a_passes = passes_through(a_loops, a_split);
+  const PassMap b_passes = passes_through(b_loops, b_split);
+  const SegmentSet a_segments = node_to_node_segments(a_split);
+  const SegmentSet b_segments = node_to_node_segments(b_split);
+  const ClassifiedEdges a_edges = classify(a_loops, a_split, b_loops, b_passes, b_segments);
+  const ClassifiedEdges b_edges = classify(b_loops, b_split, a_loops, a_passes, a_segments);
 
   // subject ∩ clip: the subject inside the clip, the clip inside the subject, and the
   // shared stretches where both regions lie on the same side (taken once).

@@ -1,8 +1,9 @@
 #include "clipper/predicates.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <vector>
+#include <span>
 
 namespace shadowgen::clipper {
 namespace {
@@ -34,22 +35,25 @@ Pair two_product(double a, double b) {
   return {p, std::fma(a, b, -p)};
 }
 
-// A nonoverlapping expansion in increasing magnitude: an exact sum of doubles. Only the
-// rare calls the filters cannot decide get here, so a vector is fine.
+// A nonoverlapping expansion in increasing magnitude: an exact sum of doubles. Each add
+// grows it by at most one term, so N, the number of adds a caller makes, is enough room;
+// the terms live on the stack (the exact paths run often enough inside the crossing
+// construction that a heap allocation per call showed in profiles).
+template <std::size_t N>
 class Expansion {
  public:
-  Expansion() { terms_.reserve(32); }
   // Shewchuk's Grow-Expansion with zero elimination: adds b exactly.
   void add(double b) {
+    if (b == 0.0) return;
     std::size_t out = 0;
     double q = b;
-    for (double t : terms_) {
-      const Pair s = two_sum(q, t);
+    for (std::size_t i = 0; i < size_; ++i) {
+      const Pair s = two_sum(q, terms_[i]);
       q = s.hi;
       if (s.lo != 0.0) terms_[out++] = s.lo;
     }
-    terms_.resize(out);
-    if (q != 0.0 || terms_.empty()) terms_.push_back(q);
+    size_ = out;
+    if (q != 0.0) terms_[size_++] = q;
   }
   // Adds the product a·b·c exactly (four terms).
   void add_product(double a, double b, double c) {
@@ -61,26 +65,30 @@ class Expansion {
     add(hi.lo);
     add(hi.hi);
   }
-  const std::vector<double>& terms() const { return terms_; }
+  std::span<const double> terms() const { return {terms_.data(), size_}; }
   // The largest component carries the sign of the exact sum.
-  double sign() const { return terms_.empty() ? 0.0 : terms_.back(); }
+  double sign() const { return size_ == 0 ? 0.0 : terms_[size_ - 1]; }
   double approximate() const {
     double sum = 0.0;
-    for (double t : terms_) sum += t;
+    for (std::size_t i = 0; i < size_; ++i) sum += terms_[i];
     return sum;
   }
 
  private:
-  std::vector<double> terms_;
+  std::array<double, N> terms_;
+  std::size_t size_ = 0;
 };
 
-Expansion exact_determinant(const Point2& a, const Point2& b, const Point2& c) {
+// 16 adds: four two_diff halves on each side, multiplied out in pairs.
+using Determinant = Expansion<16>;
+
+Determinant exact_determinant(const Point2& a, const Point2& b, const Point2& c) {
   // (b - a) x (c - a) = bax * cay - bay * cax, each difference split exactly in two.
   const Pair bax = two_diff(b.x, a.x);
   const Pair bay = two_diff(b.y, a.y);
   const Pair cax = two_diff(c.x, a.x);
   const Pair cay = two_diff(c.y, a.y);
-  Expansion e;
+  Determinant e;
   for (double l : {bax.hi, bax.lo}) {
     for (double r : {cay.hi, cay.lo}) {
       const Pair p = two_product(l, r);
@@ -147,7 +155,7 @@ Orientation orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3&
   // det = u · (v × w): the six signed permutations of (x, y, z).
   constexpr int kPermutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1},
                                        {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
-  Expansion e;
+  Expansion<6 * 8 * 4> e;
   for (int p = 0; p < 6; ++p) {
     const double sign = p < 3 ? 1.0 : -1.0;
     const Pair& x = u[kPermutations[p][0]];
@@ -176,7 +184,7 @@ int midpoint_sign(double a, double b, double c) {
   if (-sum > bound) return -1;
   const Pair ea = two_diff(a, c);
   const Pair eb = two_diff(b, c);
-  Expansion e;
+  Expansion<4> e;
   for (double t : {ea.lo, eb.lo, ea.hi, eb.hi}) e.add(t);
   const double s = e.sign();
   return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
@@ -192,8 +200,8 @@ Orientation orient2d_crossing(const Point2& g0, const Point2& g1, const Point2& 
   // and A − B has A's sign. The filter: each determinant is rounded once from its exact
   // value (relative error 2^-52), each product and the difference once more, so the
   // computed numerator is off by less than 4·2^-52·(|A·G1| + |B·G0|) (8 leaves room).
-  const Expansion ea = exact_determinant(f0, f1, e0), eb = exact_determinant(f0, f1, e1);
-  const Expansion eg0 = exact_determinant(g0, g1, e0), eg1 = exact_determinant(g0, g1, e1);
+  const Determinant ea = exact_determinant(f0, f1, e0), eb = exact_determinant(f0, f1, e1);
+  const Determinant eg0 = exact_determinant(g0, g1, e0), eg1 = exact_determinant(g0, g1, e1);
   const double a = ea.approximate(), b = eb.approximate();
   const double g0v = eg0.approximate(), g1v = eg1.approximate();
   const double left = a * g1v, right = b * g0v;
@@ -203,8 +211,8 @@ Orientation orient2d_crossing(const Point2& g0, const Point2& g1, const Point2& 
   if (numerator > bound || -numerator > bound) {
     sign = numerator;
   } else {
-    Expansion e;
-    auto add_product = [&e](const Expansion& x, const Expansion& y, double s) {
+    Expansion<2 * 16 * 16 * 2> e;
+    auto add_product = [&e](const Determinant& x, const Determinant& y, double s) {
       for (double xi : x.terms()) {
         for (double yi : y.terms()) {
           const Pair p = two_product(s * xi, yi);
@@ -242,7 +250,7 @@ Orientation orient2d(const Point2& p, const Point2& q, const Midpoint2& m) {
   const Pair ex = two_diff(q.x, p.x), ey = two_diff(q.y, p.y);
   const Pair sx[2] = {two_diff(m.a.x, p.x), two_diff(m.b.x, p.x)};
   const Pair sy[2] = {two_diff(m.a.y, p.y), two_diff(m.b.y, p.y)};
-  Expansion e;
+  Expansion<2 * 2 * 2 * 2 * 2> e;
   auto add_products = [&e](const Pair& l, const Pair(&r)[2], double sign) {
     for (double li : {l.hi, l.lo}) {
       for (const Pair& rp : r) {
