@@ -178,9 +178,7 @@ class IntersectionFinder {
 std::vector<Insertion> self_touches(const Boundary& loops) {
   // A sweep over the vertices in x. An edge enters at its left end, itself a vertex, so
   // one sort serves both; it is tested against the vertices of the other loops until the
-  // sweep has passed its right end. The active edges are kept in horizontal bands, so a
-  // vertex is tested only against the edges spanning its own band (bands are numbered by
-  // one monotone formula, so an edge whose y-range holds p.y is in p's band).
+  // sweep has passed its right end.
   struct Vertex {
     double x;
     int loop;
@@ -191,27 +189,18 @@ std::vector<Insertion> self_touches(const Boundary& loops) {
     int loop;
     int index;
   };
+  std::size_t count = 0;
+  for (const Loop2& loop : loops) count += loop.size();
   std::vector<Vertex> vertices;
-  double ymin = INFINITY, ymax = -INFINITY;
+  vertices.reserve(count);
   for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
     for (int i = 0; i < static_cast<int>(loops[l].size()); ++i) {
-      const Point2& p = loops[l][i];
-      vertices.push_back({p.x, l, i});
-      ymin = std::min(ymin, p.y);
-      ymax = std::max(ymax, p.y);
+      vertices.push_back({loops[l][i].x, l, i});
     }
   }
   std::sort(vertices.begin(), vertices.end(),
             [](const Vertex& a, const Vertex& b) { return a.x < b.x; });
-  const int bands = static_cast<int>(std::clamp<std::size_t>(vertices.size() / 16, 1, 256));
-  const double band_height = (ymax - ymin) / bands;
-  auto band = [&](double y) {
-    if (!(band_height > 0.0)) return 0;
-    return std::clamp(static_cast<int>((y - ymin) / band_height), 0, bands - 1);
-  };
-  std::vector<Edge> edges;
-  edges.reserve(vertices.size());
-  std::vector<std::vector<int>> active(bands);
+  std::vector<Edge> active;
   // Activates edge i of loop l (from vertex i to the next) when the sweep stands at its
   // left end: at its start (at_start) or at its end. A vertical edge enters at its start,
   // so each edge enters exactly once.
@@ -220,10 +209,7 @@ std::vector<Insertion> self_touches(const Boundary& loops) {
     const Point2& p = loop[i];
     const Point2& q = loop[i + 1 == static_cast<int>(loop.size()) ? 0 : i + 1];
     if ((p.x <= q.x) != at_start) return;
-    edges.push_back({std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y), l, i});
-    for (int b = band(std::min(p.y, q.y)), last = band(std::max(p.y, q.y)); b <= last; ++b) {
-      active[b].push_back(static_cast<int>(edges.size()) - 1);
-    }
+    active.push_back({std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y), l, i});
   };
   std::vector<Insertion> found;
   std::size_t next = 0;
@@ -235,12 +221,10 @@ std::vector<Insertion> self_touches(const Boundary& loops) {
       enter(v.loop, v.index == 0 ? n - 1 : v.index - 1, false);  // the edge arriving at v
     }
     const Point2& p = loops[vertex.loop][vertex.index];
-    std::vector<int>& in_band = active[band(p.y)];
     std::size_t kept = 0;
-    for (const int k : in_band) {
-      const Edge& e = edges[k];
+    for (const Edge& e : active) {
       if (e.xmax < p.x) continue;  // left behind by the sweep
-      in_band[kept++] = k;
+      active[kept++] = e;
       if (e.loop == vertex.loop || p.y < e.ymin || p.y > e.ymax) continue;
       const Loop2& loop = loops[e.loop];
       const Point2& a = loop[e.index];
@@ -248,7 +232,7 @@ std::vector<Insertion> self_touches(const Boundary& loops) {
       if (p == a || p == b) continue;
       if (orient2d(a, b, p) == Orientation::kCollinear) found.push_back({e.loop, e.index, {p}});
     }
-    in_band.resize(kept);
+    active.resize(kept);
   }
   return found;
 }
