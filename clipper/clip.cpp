@@ -103,9 +103,11 @@ class IntersectionFinder {
       std::vector<const Item*>& candidates = active[other];
       std::size_t kept = 0;
       for (const Item* c : candidates) {
-        if (c->box.xmax < item.box.xmin) continue;  // left behind by the sweep
-        candidates[kept++] = c;
-        if (c->box.ymin <= item.box.ymax && item.box.ymin <= c->box.ymax) {
+        // Kept unless left behind by the sweep (without branches: unpredictable).
+        candidates[kept] = c;
+        const bool live = c->box.xmax >= item.box.xmin;
+        kept += live ? 1 : 0;
+        if (live & (c->box.ymin <= item.box.ymax) & (item.box.ymin <= c->box.ymax)) {
           if (item.edge.side == 0) {
             intersect(item.edge, c->edge);
           } else {
@@ -222,10 +224,15 @@ std::vector<Insertion> self_touches(const Boundary& loops) {
     }
     const Point2& p = loops[vertex.loop][vertex.index];
     std::size_t kept = 0;
-    for (const Edge& e : active) {
-      if (e.xmax < p.x) continue;  // left behind by the sweep
-      active[kept++] = e;
-      if (e.loop == vertex.loop || p.y < e.ymin || p.y > e.ymax) continue;
+    for (std::size_t k = 0; k < active.size(); ++k) {
+      // Kept unless the sweep has passed it; written without branches, as which edges
+      // drop out is unpredictable and the test is the whole cost of this loop.
+      const Edge e = active[k];
+      active[kept] = e;
+      kept += e.xmax >= p.x ? 1 : 0;
+      const bool candidate =
+          (e.xmax >= p.x) & (e.loop != vertex.loop) & (p.y >= e.ymin) & (p.y <= e.ymax);
+      if (!candidate) continue;
       const Loop2& loop = loops[e.loop];
       const Point2& a = loop[e.index];
       const Point2& b = loop[(e.index + 1) % loop.size()];
@@ -617,9 +624,12 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
     return false;
   };
   auto finish = [&finder, &is_input](std::vector<DirectedEdge> edges) {
-    edges = detail::node_edges(std::move(edges), finder.crossings);
+    std::unordered_set<Point2, Point2Hash> made;  // by the noding, beside the crossings
+    edges = detail::node_edges(std::move(edges), finder.crossings, nullptr, &made);
+    if (!made.empty()) made.insert(finder.crossings.begin(), finder.crossings.end());
     std::unordered_set<Point2, Point2Hash> merged;
-    edges = detail::merge_close_vertices(std::move(edges), is_input, merged);
+    edges = detail::merge_close_vertices(std::move(edges), made.empty() ? finder.crossings : made,
+                                         is_input, merged);
     if (!merged.empty()) edges = detail::node_edges(std::move(edges), merged);
     std::unordered_set<Point2, Point2Hash> snapped;
     edges = detail::snap_vertices_onto_edges(std::move(edges), nullptr, &snapped);

@@ -99,9 +99,11 @@ void for_each_close_pair(const std::vector<DirectedEdge>& edges, Margin margin, 
   for (const Item& item : items) {
     std::size_t kept = 0;
     for (const Item* c : active) {
-      if (c->xmax < item.xmin) continue;  // left behind by the sweep
-      active[kept++] = c;
-      if ((item.selected || c->selected) && c->ymin <= item.ymax && item.ymin <= c->ymax) {
+      // Kept unless left behind by the sweep (without branches: unpredictable).
+      active[kept] = c;
+      const bool live = c->xmax >= item.xmin;
+      kept += live ? 1 : 0;
+      if (live & (item.selected | c->selected) & (c->ymin <= item.ymax) & (item.ymin <= c->ymax)) {
         visit(c->edge, item.edge);
       }
     }
@@ -195,7 +197,7 @@ std::vector<DirectedEdge> without_opposite_pairs(std::vector<DirectedEdge> edges
 // Rounds of noding: the first over the pairs `first` selects, each later one only near
 // the points the previous round constructed.
 std::vector<DirectedEdge> node(std::vector<DirectedEdge> edges, const PointSet* first,
-                               NodingStats* stats) {
+                               NodingStats* stats, PointSet* made) {
   NodingStats local;
   PointSet moved;
   const PointSet* selection = first;
@@ -206,6 +208,7 @@ std::vector<DirectedEdge> node(std::vector<DirectedEdge> edges, const PointSet* 
     local.splits += splits.count;
     edges = split_edges(edges, splits);
     if (splits.constructed.empty()) break;  // exact splits only: nothing moved
+    if (made != nullptr) made->insert(splits.constructed.begin(), splits.constructed.end());
     moved = std::move(splits.constructed);
     selection = &moved;
   }
@@ -217,14 +220,14 @@ std::vector<DirectedEdge> node(std::vector<DirectedEdge> edges, const PointSet* 
 }  // namespace
 
 std::vector<DirectedEdge> node_edges(std::vector<DirectedEdge> edges, const PointSet& constructed,
-                                     NodingStats* stats) {
+                                     NodingStats* stats, PointSet* made) {
   if (constructed.empty()) {
     NodingStats local;
     edges = without_opposite_pairs(std::move(edges), local.cancelled);
     if (stats != nullptr) *stats = local;
     return edges;
   }
-  return node(std::move(edges), &constructed, stats);
+  return node(std::move(edges), &constructed, stats, made);
 }
 
 std::vector<DirectedEdge> snap_vertices_onto_edges(std::vector<DirectedEdge> edges,

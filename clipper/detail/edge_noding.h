@@ -29,10 +29,12 @@ struct NodingStats {
 };
 
 // `constructed`: the points that are not input vertices (rounded crossings); edges
-// touching none of them are not tested against each other.
+// touching none of them are not tested against each other. `made`, when given,
+// receives the crossing points the noding constructed.
 std::vector<DirectedEdge> node_edges(std::vector<DirectedEdge> edges,
                                      const std::unordered_set<Point2, Point2Hash>& constructed,
-                                     NodingStats* stats = nullptr);
+                                     NodingStats* stats = nullptr,
+                                     std::unordered_set<Point2, Point2Hash>* made = nullptr);
 
 // For edges of pieces computed apart (merge.h), which meet at T-junctions and along
 // seams whose vertices were rounded on either side of the common line: every edge is

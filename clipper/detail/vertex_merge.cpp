@@ -13,35 +13,41 @@ bool close(const Point2& a, const Point2& b) {
   return std::hypot(a.x - b.x, a.y - b.y) <= snap_distance(a, b);
 }
 
-// Every close pair of distinct points, each pair once. A point q at distance d from p is
-// close only if d <= 2·(4u·d + u·max|coordinate|), so d < 4u·(|p.x| + |p.y| + d) <
-// 8u·(|p.x| + |p.y|): a window in x of that half-width around p holds every such q.
-std::vector<std::pair<Point2, Point2>> close_pairs(std::vector<Point2> points) {
-  std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end()), points.end());
+// Every close pair of an edge endpoint and a candidate (a pair of two candidates once).
+// A point q at distance d from v is close only if d <= 2·(4u·d + u·max|coordinate|), so
+// d < 2.1u·max(|v.x|, |v.y|): a window in x of half-width 16u·(|v.x| + |v.y|) around v
+// holds every such q. The candidates are few (the constructed points), so they are
+// sorted and searched; the endpoints are not sorted at all.
+std::vector<std::pair<Point2, Point2>> close_pairs(
+    const std::vector<DirectedEdge>& edges,
+    const std::unordered_set<Point2, Point2Hash>& candidates) {
   std::vector<std::pair<Point2, Point2>> pairs;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Point2& p = points[i];
-    const double half = 8.0 * 0x1p-53 * (std::fabs(p.x) + std::fabs(p.y));
-    for (std::size_t j = i + 1; j < points.size() && points[j].x <= p.x + half; ++j) {
-      if (close(p, points[j])) pairs.emplace_back(p, points[j]);
+  if (candidates.empty()) return pairs;
+  std::vector<Point2> sorted(candidates.begin(), candidates.end());
+  std::sort(sorted.begin(), sorted.end());
+  auto visit = [&](const Point2& v) {
+    const double half = 16.0 * 0x1p-53 * (std::fabs(v.x) + std::fabs(v.y));
+    auto it = std::lower_bound(sorted.begin(), sorted.end(), Point2{v.x - half, -INFINITY});
+    for (; it != sorted.end() && it->x <= v.x + half; ++it) {
+      if (*it == v || !close(v, *it)) continue;
+      if (!(v < *it) && candidates.contains(v)) continue;  // met again from the other end
+      pairs.emplace_back(v, *it);
     }
+  };
+  for (const DirectedEdge& e : edges) {
+    visit(e.from);
+    visit(e.to);
   }
   return pairs;
 }
 
 }  // namespace
 
-std::vector<DirectedEdge> merge_close_vertices(std::vector<DirectedEdge> edges,
-                                               const std::function<bool(const Point2&)>& is_input,
-                                               std::unordered_set<Point2, Point2Hash>& moved) {
-  std::vector<Point2> vertices;
-  vertices.reserve(2 * edges.size());
-  for (const DirectedEdge& e : edges) {
-    vertices.push_back(e.from);
-    vertices.push_back(e.to);
-  }
-  const std::vector<std::pair<Point2, Point2>> pairs = close_pairs(std::move(vertices));
+std::vector<DirectedEdge> merge_close_vertices(
+    std::vector<DirectedEdge> edges, const std::unordered_set<Point2, Point2Hash>& candidates,
+    const std::function<bool(const Point2&)>& is_input,
+    std::unordered_set<Point2, Point2Hash>& moved) {
+  const std::vector<std::pair<Point2, Point2>> pairs = close_pairs(edges, candidates);
   if (pairs.empty()) return edges;
 
   // Per constructed vertex, where it goes: an input vertex is exact, so the nearest close

@@ -27,11 +27,14 @@ namespace shadowgen::clipper::detail {
 // is close to another vertex: by the nearest close input vertex (ties to the least
 // point), or, with none, by the least close vertex if that is less than itself, so the
 // choice does not depend on the edges' order. Edges shrunk to a point are dropped.
+// `candidates`: every point of `edges` that may be constructed (a superset will do;
+// `is_input` has the last word); only pairs with one of them are looked at.
 // `moved` receives the vertices that gained edges: those edges moved, by at most the
 // snap distance, and may need noding again. `is_input` is asked only about vertices
 // that have a close neighbour, which is rare.
-std::vector<DirectedEdge> merge_close_vertices(std::vector<DirectedEdge> edges,
-                                               const std::function<bool(const Point2&)>& is_input,
-                                               std::unordered_set<Point2, Point2Hash>& moved);
+std::vector<DirectedEdge> merge_close_vertices(
+    std::vector<DirectedEdge> edges, const std::unordered_set<Point2, Point2Hash>& candidates,
+    const std::function<bool(const Point2&)>& is_input,
+    std::unordered_set<Point2, Point2Hash>& moved);
 
 }  // namespace shadowgen::clipper::detail

@@ -101,7 +101,7 @@ TEST(VertexMerge, ACrossingAnUlpFromAnInputVertexBecomesThatVertexAndTheNeedleCa
   const std::vector<DirectedEdge> edges{{kV, kB}, {kB, c}, {c, kV}};
   Points moved;
   const auto merged = merge_close_vertices(
-      edges, [](const Point2& p) { return p == kV; }, moved);
+      edges, Points{c}, [](const Point2& p) { return p == kV; }, moved);
   ASSERT_EQ(merged.size(), 2u);  // c -> v shrank to a point
   EXPECT_TRUE(has_edge(merged, kV, kB));
   EXPECT_TRUE(has_edge(merged, kB, kV));
@@ -114,7 +114,7 @@ TEST(VertexMerge, InputVerticesNeverMove) {
   const std::vector<DirectedEdge> edges{{kV, kB}, {kB, w}, {w, kV}};
   Points moved;
   const auto merged = merge_close_vertices(
-      edges, [](const Point2&) { return true; }, moved);
+      edges, Points{w}, [](const Point2&) { return true; }, moved);
   EXPECT_EQ(merged.size(), 3u);
   EXPECT_TRUE(moved.empty());
 }
@@ -126,7 +126,7 @@ TEST(VertexMerge, CloseCrossingsMergeIntoTheLeastWhateverTheEdgeOrder) {
     std::rotate(edges.begin(), edges.begin() + 1, edges.end());
     Points moved;
     const auto merged = merge_close_vertices(
-        edges, [](const Point2&) { return false; }, moved);
+        edges, Points{c1, c2, kB, {0, 0}}, [](const Point2&) { return false; }, moved);
     ASSERT_EQ(merged.size(), 3u);
     EXPECT_TRUE(has_edge(merged, kB, c1));
     EXPECT_TRUE(has_edge(merged, c1, {0, 0}));
@@ -139,11 +139,11 @@ TEST(VertexMerge, PointsFartherThanTheSnapDistanceStay) {
   const Point2 near = ulps_right(kV, 64), far = ulps_right(kV, 1000000);
   Points moved;
   auto merged = merge_close_vertices(
-      {{kV, kB}, {kB, near}}, [](const Point2& p) { return p == kV; }, moved);
+      {{kV, kB}, {kB, near}}, Points{near}, [](const Point2& p) { return p == kV; }, moved);
   EXPECT_TRUE(has_edge(merged, kB, kV));
   moved.clear();
   merged = merge_close_vertices(
-      {{kV, kB}, {kB, far}}, [](const Point2& p) { return p == kV; }, moved);
+      {{kV, kB}, {kB, far}}, Points{far}, [](const Point2& p) { return p == kV; }, moved);
   EXPECT_TRUE(has_edge(merged, kB, far));
   EXPECT_TRUE(moved.empty());
 }
