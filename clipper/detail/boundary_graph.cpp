@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
+#include "clipper/detail/point_index.h"
 #include "clipper/detail/point_location.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
@@ -36,36 +36,47 @@ bool clockwise_before(const Point2& v, const Point2& back, const Point2& w1, con
   return orient2d(v, w1, w2) == Orientation::kClockwise;
 }
 
+// A closed walk through the edges: its points, and their ids (PointIndex) for the split
+// at repeated vertices.
+struct Walk {
+  Loop2 points;
+  std::vector<std::size_t> ids;
+};
+
 class Tracer {
  public:
-  explicit Tracer(const std::vector<DirectedEdge>& edges) : edges_(edges) {
-    ids_.reserve(edges.size() * 2);
+  explicit Tracer(const std::vector<DirectedEdge>& edges)
+      : edges_(edges), index_(edges.size() + 1) {
     from_.resize(edges.size());
     to_.resize(edges.size());
     for (std::size_t e = 0; e < edges.size(); ++e) {
-      from_[e] = id_of(edges[e].from);
-      to_[e] = id_of(edges[e].to);
+      from_[e] = index_.id(edges[e].from);
+      to_[e] = index_.id(edges[e].to);
     }
     // Edges leaving each point, in one array (counting sort by start point).
-    first_.assign(count_ + 1, 0);
+    const std::size_t count = index_.size();
+    first_.assign(count + 1, 0);
     for (std::size_t e = 0; e < edges.size(); ++e) ++first_[from_[e] + 1];
-    for (std::size_t v = 0; v < count_; ++v) first_[v + 1] += first_[v];
+    for (std::size_t v = 0; v < count; ++v) first_[v + 1] += first_[v];
     leaving_.resize(edges.size());
     std::vector<std::size_t> fill(first_.begin(), first_.end() - 1);
     for (std::size_t e = 0; e < edges.size(); ++e) leaving_[fill[from_[e]]++] = e;
     used_.assign(edges.size(), false);
   }
 
-  std::vector<Loop2> trace() {
-    std::vector<Loop2> loops;
+  std::size_t point_count() const { return index_.size(); }
+
+  std::vector<Walk> trace() {
+    std::vector<Walk> walks;
     for (std::size_t start = 0; start < edges_.size(); ++start) {
       if (used_[start]) continue;
-      Loop2 walk;
+      Walk walk;
       std::size_t e = start;
       used_[e] = true;
       const std::size_t origin = from_[start];
       while (true) {
-        walk.push_back(edges_[e].from);
+        walk.points.push_back(edges_[e].from);
+        walk.ids.push_back(from_[e]);
         const Point2& back = edges_[e].from;
         const Point2& v = edges_[e].to;
         const std::size_t vid = to_[e];
@@ -82,46 +93,46 @@ class Tracer {
         used_[best] = true;
         e = best;
       }
-      loops.push_back(std::move(walk));
+      walks.push_back(std::move(walk));
     }
-    return loops;
+    return walks;
   }
 
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
-  std::size_t id_of(const Point2& p) {
-    const auto [it, inserted] = ids_.try_emplace(p, count_);
-    if (inserted) ++count_;
-    return it->second;
-  }
-
   const std::vector<DirectedEdge>& edges_;
-  std::unordered_map<Point2, std::size_t, Point2Hash> ids_;
-  std::size_t count_ = 0;
+  PointIndex index_;
   std::vector<std::size_t> from_, to_;
   std::vector<std::size_t> first_, leaving_;
   std::vector<bool> used_;
 };
 
 // Splits a closed walk at every repeated vertex into closed walks without repeats.
-void split_at_repeats(const Loop2& walk, std::vector<Loop2>& out) {
-  std::unordered_map<Point2, std::size_t, Point2Hash> position;
+// `position` is indexed by point id, kNotOnStack for every id on entry and on exit.
+constexpr std::size_t kNotOnStack = static_cast<std::size_t>(-1);
+void split_at_repeats(const Walk& walk, std::vector<std::size_t>& position,
+                      std::vector<Loop2>& out) {
   Loop2 stack;
-  for (const Point2& p : walk) {
-    const auto it = position.find(p);
-    if (it == position.end()) {
-      position.emplace(p, stack.size());
+  std::vector<std::size_t> stack_ids;
+  for (std::size_t k = 0; k < walk.points.size(); ++k) {
+    const Point2& p = walk.points[k];
+    const std::size_t id = walk.ids[k];
+    if (position[id] == kNotOnStack) {
+      position[id] = stack.size();
       stack.push_back(p);
+      stack_ids.push_back(id);
       continue;
     }
-    // p closes the stretch stack[it->second .. end]: emit it as its own loop.
-    const std::size_t from = it->second;
+    // p closes the stretch stack[position .. end]: emit it as its own loop.
+    const std::size_t from = position[id];
     Loop2 piece(stack.begin() + static_cast<std::ptrdiff_t>(from), stack.end());
-    for (std::size_t i = from + 1; i < stack.size(); ++i) position.erase(stack[i]);
+    for (std::size_t i = from + 1; i < stack.size(); ++i) position[stack_ids[i]] = kNotOnStack;
     stack.resize(from + 1);
+    stack_ids.resize(from + 1);
     out.push_back(std::move(piece));
   }
+  for (const std::size_t id : stack_ids) position[id] = kNotOnStack;
   out.push_back(std::move(stack));
 }
 
@@ -184,7 +195,9 @@ void drop_turned_over_holes(PolygonSet2& polygons) {
 
 PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
   std::vector<Loop2> loops;
-  for (const Loop2& walk : Tracer(edges).trace()) split_at_repeats(walk, loops);
+  Tracer tracer(edges);
+  std::vector<std::size_t> position(tracer.point_count(), kNotOnStack);
+  for (const Walk& walk : tracer.trace()) split_at_repeats(walk, position, loops);
 
   PolygonSet2 polygons;
   std::vector<Loop2> holes;
