@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -481,26 +482,51 @@ struct SegmentHash {
     return h(s.from) * 31u + h(s.to);
   }
 };
-using SegmentSet = std::unordered_set<Segment, SegmentHash>;
+// The input edge a split edge lies on, in its operand's direction (region on its left).
+struct InputEdge {
+  Point2 from, to;
+};
+using SegmentMap = std::unordered_map<Segment, InputEdge, SegmentHash>;
 
 // The split edges of one operand that run from node to node: the only ones that can be
 // the very same segment as one of the other operand's.
-SegmentSet node_to_node_segments(const SplitBoundary& split) {
-  SegmentSet out;
-  for (const SplitLoop& loop : split) {
+SegmentMap node_to_node_segments(const Boundary& loops, const SplitBoundary& split) {
+  SegmentMap out;
+  for (std::size_t l = 0; l < split.size(); ++l) {
+    const SplitLoop& loop = split[l];
+    const Loop2& input = loops[l];
     const std::size_t n = loop.points.size();
     for (std::size_t i = 0; i < n; ++i) {
       if (loop.node[i] && loop.node[(i + 1) % n]) {
-        out.insert({loop.points[i], loop.points[(i + 1) % n]});
+        const int e = loop.edge[i];
+        out.emplace(Segment{loop.points[i], loop.points[(i + 1) % n]},
+                    InputEdge{input[e], input[(e + 1) % input.size()]});
       }
     }
   }
   return out;
 }
 
+// Where the other operand's boundary runs both ways along one segment, rounding has
+// closed a part of it to zero width: a needle of its region (the two input edges face
+// each other's region side) or a crack in it. The two copies bound nothing, and the
+// region around them is outside a needle, inside a crack. `forward` is the copy running
+// with the stretch, `backward` the other; the backward edge lies on the forward edge's
+// region side exactly for a needle. Empty when the input edges do not tell (the backward
+// edge crosses the forward edge's line).
+std::optional<Side> side_of_collapsed(const InputEdge& forward, const InputEdge& backward) {
+  const Orientation a = orient2d(forward.from, forward.to, backward.from);
+  const Orientation b = orient2d(forward.from, forward.to, backward.to);
+  const Orientation side = a == Orientation::kCollinear ? b : a;
+  if (side == Orientation::kCollinear || (b != Orientation::kCollinear && b != side)) {
+    return std::nullopt;
+  }
+  return side == Orientation::kCounterClockwise ? Side::kOutside : Side::kInside;
+}
+
 ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
                          const Boundary& other_loops, const PassMap& other_passes,
-                         const SegmentSet& other_segments) {
+                         const SegmentMap& other_segments) {
   ClassifiedEdges out;
   auto bucket = [&out](Side s) -> std::vector<DirectedEdge>& {
     switch (s) {
@@ -547,9 +573,17 @@ ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
         // The same segment in both boundaries (after rounding, whatever the input edges
         // were) is shared: deciding it any other way would leave the two copies on
         // different sides of a zero-width gap.
-        if (other_segments.count({v, w})) {
+        const auto same = other_segments.find({v, w});
+        const auto opposite = other_segments.find({w, v});
+        std::optional<Side> collapsed;
+        if (same != other_segments.end() && opposite != other_segments.end()) {
+          collapsed = side_of_collapsed(same->second, opposite->second);
+        }
+        if (collapsed) {
+          dst = &bucket(*collapsed);
+        } else if (same != other_segments.end()) {
           dst = &out.shared_same;
-        } else if (other_segments.count({w, v})) {
+        } else if (opposite != other_segments.end()) {
           dst = &out.shared_opposite;
         } else if (it != other_passes.end() && !merged_crossings(v, it->second)) {
           dst = &bucket(side_of_edge(v, e0, e1, it->second));
@@ -593,8 +627,8 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   const SplitBoundary b_split = with_insertions(b_loops, finder.insertions[1], &finder.nodes);
   const PassMap a_passes = passes_through(a_loops, a_split);
   const PassMap b_passes = passes_through(b_loops, b_split);
-  const SegmentSet a_segments = node_to_node_segments(a_split);
-  const SegmentSet b_segments = node_to_node_segments(b_split);
+  const SegmentMap a_segments = node_to_node_segments(a_loops, a_split);
+  const SegmentMap b_segments = node_to_node_segments(b_loops, b_split);
   const ClassifiedEdges a_edges = classify(a_loops, a_split, b_loops, b_passes, b_segments);
   const ClassifiedEdges b_edges = classify(b_loops, b_split, a_loops, a_passes, a_segments);
 
@@ -649,10 +683,23 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   // The outside pieces left by one clip are the subject of the next, so the inside
   // pieces of different clips never overlap even where the clips do.
   // Re-clipping rounded pieces against clips that overlap earlier ones can leave slivers
-  // that exist only because of that rounding; pieces within the rounding bound go.
-  auto drop_rounding_slivers = [](PolygonSet2& set) {
-    std::erase_if(set, [](const PolygonWithHoles2& p) {
-      return std::fabs(signed_area(p.outer)) <= detail::rounding_area_bound(p.outer);
+  // that exist only because of that rounding; pieces within the rounding bound go, unless
+  // every vertex of theirs was already a vertex of the step's operands: such a piece was
+  // not made by rounding (a thin subject the clip does not touch comes back whole).
+  auto drop_rounding_slivers = [](PolygonSet2& set, const PolygonSet2& before,
+                                  const PolygonWithHoles2& c) {
+    auto is_operand_vertex = [&](const Point2& v) {
+      auto in = [&v](const PolygonWithHoles2& p) {
+        if (std::find(p.outer.begin(), p.outer.end(), v) != p.outer.end()) return true;
+        return std::any_of(p.holes.begin(), p.holes.end(), [&v](const Loop2& h) {
+          return std::find(h.begin(), h.end(), v) != h.end();
+        });
+      };
+      return in(c) || std::any_of(before.begin(), before.end(), in);
+    };
+    std::erase_if(set, [&](const PolygonWithHoles2& p) {
+      if (std::fabs(signed_area(p.outer)) > detail::rounding_area_bound(p.outer)) return false;
+      return !std::all_of(p.outer.begin(), p.outer.end(), is_operand_vertex);
     });
   };
   ClipResult result;
@@ -660,8 +707,8 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   for (const PolygonWithHoles2& c : clips) {
     if (result.outside.empty()) break;
     ClipResult step = clip(result.outside, PolygonSet2{c});
-    drop_rounding_slivers(step.inside);
-    drop_rounding_slivers(step.outside);
+    drop_rounding_slivers(step.inside, result.outside, c);
+    drop_rounding_slivers(step.outside, result.outside, c);
     for (PolygonWithHoles2& p : step.inside) result.inside.push_back(std::move(p));
     result.outside = std::move(step.outside);
   }

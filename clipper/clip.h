@@ -79,8 +79,8 @@ ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_
 // One subject against several clip polygons, as hidden-surface removal needs: inside is
 // subject ∩ (union of the clips), outside is subject − (union of the clips). The clips
 // may overlap each other. The outside pieces of one clip are clipped by the next; pieces
-// whose area is within the rounding bound of their vertices (slivers that only rounding
-// made) are dropped along the way.
+// whose area is within the rounding bound of their vertices and that have a vertex the
+// step constructed (slivers that only rounding made) are dropped along the way.
 ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips);
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b);

@@ -30,8 +30,11 @@
 // for V output vertices (about 8e-15·V·M²). Off the grid a piece of the exact result may
 // also be thin enough to vanish when its crossings round; its area is bounded the same
 // way by its own constructed vertices, so each identity gets a floor of
-// 2·K·delta_max·(2L + delta_max), K being the number of subject and clip edges that meet
-// (three times that for the list of clips, which clips rounded pieces again).
+// 2·K·delta_max·(2L + delta_max), K being the number of subject and clip edges that meet,
+// a vertex within the snap distance of an edge counting as meeting it (resolution.h)
+// (three times that for the list of clips, which clips rounded pieces again), plus the
+// area of every input loop thin enough to lie within its own rounding bound, which the
+// clipper may drop whole as a sliver.
 //
 // A broken invariant prints its name, the decoded input and the offending output, then
 // traps. Environment: SHADOWGEN_FUZZ_SKIP=name,name skips checks (see `enabled`);
@@ -53,12 +56,14 @@
 #include <vector>
 
 #include "clipper/clip.h"
+#include "clipper/detail/boundary_graph.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 #include "tests/fuzz/clip_fuzz_case.h"
 #include "tests/fuzz/exact_area.h"
 #include "tests/fuzz/fuzz_input.h"
 #include "tests/fuzz/region_validity.h"
+#include "tests/fuzz/resolution.h"
 
 namespace shadowgen::fuzz {
 namespace {
@@ -124,9 +129,15 @@ class ClipCase {
       }
     }
     if (input.mode != CoordinateMode::kGrid) {
-      const double meeting_edges = static_cast<double>(count_meeting_edges());
+      // A vertex within the snap distance of an edge meets it at the clipper's resolution
+      // (resolution.h), and counts as such a meeting.
+      const double meeting_edges = static_cast<double>(
+          count_meeting_edges() + count_sub_resolution_pairs(input.subject, input.clip));
       const double delta_max = 4 * kUnitRoundoff * longest_edge_ + kUnitRoundoff * farthest_vertex_;
       vanished_piece_floor_ = 2 * meeting_edges * delta_max * (2 * longest_edge_ + delta_max);
+      // An input loop whose area is within its own rounding bound is, to the clipper, a
+      // sliver rounding may have made, and may be dropped (clip.h): all of it may vanish.
+      vanished_piece_floor_ += 2 * thin_input_area_;
     }
   }
 
@@ -203,6 +214,9 @@ class ClipCase {
   static constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
 
   void note_input_loop(const Loop2& loop) {
+    // Exactly: far from the origin a shoelace in doubles loses a thin loop's area entirely.
+    const double area = 0.5 * std::fabs(twice_signed_area(loop).approx());
+    if (area <= clipper::detail::rounding_area_bound(loop)) thin_input_area_ += area;
     for (std::size_t i = 0; i < loop.size(); ++i) {
       input_vertices_.insert(loop[i]);
       farthest_vertex_ = std::max(farthest_vertex_, std::hypot(loop[i].x, loop[i].y));
@@ -363,6 +377,7 @@ class ClipCase {
   double longest_edge_ = 0.0;
   double farthest_vertex_ = 0.0;
   double vanished_piece_floor_ = 0.0;
+  double thin_input_area_ = 0.0;  // of the loops within their own rounding bound
   const char* call_ = "";
 };
 
