@@ -58,6 +58,12 @@
 // the boundary by at most those bounds; the one tolerance is that derived distance,
 // nothing else.
 //
+// Limit. The placement error of a crossing grows with the length of its edges (4u·L).
+// Where the other operand has features thinner than that along a long edge (a needle
+// 1e8 long crossed within 1e-8 of its other edge), rounded crossings can land out of
+// order and the pieces come out wrong; the fuzzer finds such inputs on raw doubles
+// (README, Limits). Snap rounding of the crossings would lift it.
+//
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
 // whose x-ranges overlap, instead of the all-pairs O(n²).
