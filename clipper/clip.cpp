@@ -698,7 +698,7 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
       return in(c) || std::any_of(before.begin(), before.end(), in);
     };
     std::erase_if(set, [&](const PolygonWithHoles2& p) {
-      if (std::fabs(signed_area(p.outer)) > detail::rounding_area_bound(p.outer)) return false;
+      if (std::fabs(signed_area(p.outer)) > rounding_area_bound(p.outer)) return false;
       return !std::all_of(p.outer.begin(), p.outer.end(), is_operand_vertex);
     });
   };

@@ -1,5 +1,6 @@
 #include "clipper/polygon.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowgen::clipper {
@@ -41,6 +42,18 @@ std::size_t vertex_count(const PolygonSet2& polygons) {
   std::size_t n = 0;
   for (const PolygonWithHoles2& p : polygons) n += vertex_count(p);
   return n;
+}
+
+double rounding_area_bound(const Loop2& loop) {
+  constexpr double kUnit = 0x1p-53;
+  double perimeter = 0.0, magnitude = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Point2& a = loop[i];
+    const Point2& b = loop[(i + 1) % loop.size()];
+    perimeter += std::hypot(b.x - a.x, b.y - a.y);
+    magnitude = std::max({magnitude, std::fabs(a.x), std::fabs(a.y)});
+  }
+  return 8.0 * kUnit * (magnitude + 4.0 * perimeter) * perimeter;
 }
 
 }  // namespace shadowgen::clipper

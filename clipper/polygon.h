@@ -32,6 +32,13 @@ double signed_area(const Loop2& loop);
 double area(const PolygonWithHoles2& polygon);
 double area(const PolygonSet2& polygons);
 
+// How much area the rounding of a loop's constructed vertices can account for: each moves
+// by at most 4u·(adjacent edge) + u·|P| (clip.h), sweeping at most that times the
+// perimeter, 8u·(max |coordinate| + 4·perimeter)·perimeter in all. A loop of smaller
+// area is thinner than the rounding of its own coordinates: it may exist only because of
+// rounding, and nothing can tell it from an empty one.
+double rounding_area_bound(const Loop2& loop);
+
 std::size_t vertex_count(const PolygonWithHoles2& polygon);
 std::size_t vertex_count(const PolygonSet2& polygons);
 

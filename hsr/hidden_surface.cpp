@@ -270,6 +270,14 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const
   AreaSort(result.nearness, stats).run(std::move(pieces), result.fragments);
   stats.fragments_before_merge = result.fragments.size();
   if (options.merge_fragments) result.fragments = merge_by_parent(std::move(result.fragments));
+  // Pieces that meet exactly can get vertices an ulp apart from two chains of clips, each
+  // rounded on its own; the needle left between them is thinner than the rounding of its
+  // coordinates and is no visible piece (hidden_surface.h).
+  const std::size_t before = result.fragments.size();
+  std::erase_if(result.fragments, [](const Fragment& f) {
+    return clipper::area(f.shape) <= clipper::rounding_area_bound(f.shape.outer);
+  });
+  stats.slivers_dropped = before - result.fragments.size();
   stats.fragments = result.fragments.size();
   return result;
 }

@@ -38,7 +38,10 @@
 namespace shadowgen::hsr {
 
 // A visible piece of input polygon `parent` (its index in the input), in image
-// coordinates. Fragments never overlap each other.
+// coordinates. Fragments never overlap each other, and none is thinner than the rounding
+// of its own coordinates (area within clipper::rounding_area_bound): such needles, left
+// where pieces that meet exactly got vertices an ulp apart from separately rounded clips,
+// are dropped, which changes the visible area by less than that bound.
 struct Fragment {
   std::size_t parent = 0;
   clipper::PolygonWithHoles2 shape;
@@ -55,6 +58,7 @@ struct HsrStats {
   std::size_t depth_splits = 0;  // interpenetrations split along the planes' line
   std::size_t cycle_breaks = 0;  // recursion refused because the template was on the stack
   std::size_t fragments_before_merge = 0;
+  std::size_t slivers_dropped = 0;  // after the merge: thinner than their own rounding
   std::size_t fragments = 0;
 };
 

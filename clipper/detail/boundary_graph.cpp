@@ -245,16 +245,4 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
   return polygons;
 }
 
-double rounding_area_bound(const Loop2& loop) {
-  constexpr double kUnit = 0x1p-53;
-  double perimeter = 0.0, magnitude = 0.0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Point2& a = loop[i];
-    const Point2& b = loop[(i + 1) % loop.size()];
-    perimeter += std::hypot(b.x - a.x, b.y - a.y);
-    magnitude = std::max({magnitude, std::fabs(a.x), std::fabs(a.y)});
-  }
-  return 8.0 * kUnit * (magnitude + 4.0 * perimeter) * perimeter;
-}
-
 }  // namespace shadowgen::clipper::detail

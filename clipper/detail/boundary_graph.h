@@ -22,9 +22,4 @@ struct DirectedEdge {
 // the smallest outer loop containing it.
 PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges);
 
-// How much area the rounding of a loop's constructed vertices can account for: each moves
-// by at most 4u·(adjacent edge) + u·|P| (clip.h), sweeping at most that times the
-// perimeter. A loop of smaller area may exist only because of rounding.
-double rounding_area_bound(const Loop2& loop);
-
 }  // namespace shadowgen::clipper::detail
