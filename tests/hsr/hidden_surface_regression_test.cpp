@@ -203,22 +203,24 @@ namespace {
 
 // Thakur, Cheng and Miura's cube grid, 5 x 5 x 5 cubes of side 0.1 spaced 0.2 apart,
 // seen along (1, 2, -3): the fragments overlapped (their areas summed to 1.18308 where
-// the images' union is 1.17773), from the order of two crossings less than a rounding
-// apart along one edge (clipper/detail/crossing.h, ExactlyAlongSegment).
+// the images' union is 1.17773; 283 of 100,000 samples covered twice) until the clipper
+// located stretches at exact midpoints and ordered crossings along an edge exactly.
 std::vector<Polygon3> cube_grid(int k) {
   std::vector<Polygon3> faces;
   const double s = 1.0 / k;
   for (int i = 0; i < k; ++i) {
     for (int j = 0; j < k; ++j) {
       for (int l = 0; l < k; ++l) {
-        const glm::dvec3 a((i + 0.25) * s, (j + 0.25) * s, (l + 0.25) * s);
-        const glm::dvec3 b = a + glm::dvec3(0.5 * s);
-        const glm::dvec3 c[8] = {{a.x, a.y, a.z}, {b.x, a.y, a.z}, {b.x, b.y, a.z},
-                                 {a.x, b.y, a.z}, {a.x, a.y, b.z}, {b.x, a.y, b.z},
-                                 {b.x, b.y, b.z}, {a.x, b.y, b.z}};
-        const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-        for (const auto& q : quads) faces.push_back({{c[q[0]], c[q[1]], c[q[2]], c[q[3]]}, {}});
+        const double x0 = (i + 0.25) * s, y0 = (j + 0.25) * s, z0 = (l + 0.25) * s;
+        const double x1 = x0 + 0.5 * s, y1 = y0 + 0.5 * s, z1 = z0 + 0.5 * s;
+        // The faces and their vertices in bench/scenes/box.h's order: the order of the
+        // input decides which clips are made, and so whether the defect shows.
+        faces.push_back({{{x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0}}, {}});
+        faces.push_back({{{x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1}}, {}});
+        faces.push_back({{{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}}, {}});
+        faces.push_back({{{x0, y1, z0}, {x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0}}, {}});
+        faces.push_back({{{x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}}, {}});
+        faces.push_back({{{x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}, {x1, y0, z0}}, {}});
       }
     }
   }
@@ -226,7 +228,10 @@ std::vector<Polygon3> cube_grid(int k) {
 }
 
 TEST(HiddenSurfaceRegression, CubeGridFragmentsDoNotOverlap) {
-  ExpectVisibilityMatchesOracles(scene("cube_grid_5", cube_grid(5), {1.0, 2.0, -3.0}));
+  ViewSpec view;  // bench/hsr_bench.cpp's oblique view
+  view.point = {0.5, 0.5, 0.5};
+  view.direction = {1.0, 2.0, -3.0};
+  ExpectVisibilityMatchesOracles({"cube_grid_5", cube_grid(5), {view}});
 }
 
 }  // namespace
