@@ -124,6 +124,7 @@ class IntersectionFinder {
   std::vector<Insertion> insertions[2];
   std::unordered_set<Point2, Point2Hash> nodes;
   std::unordered_set<Point2, Point2Hash> crossings;  // the nodes that are rounded points
+  detail::ErrorRadii radii;  // per crossing, its construction's error bound (clip.h)
 
  private:
   const Point2& start(const EdgeRef& e) const { return (*sides_[e.side])[e.loop][e.index]; }
@@ -147,6 +148,11 @@ class IntersectionFinder {
     if (p != h0 && p != h1) insert(host, p);
   }
 
+  static double length2(const Point2& p, const Point2& q) {
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    return dx * dx + dy * dy;
+  }
+
   void intersect(const EdgeRef& a, const EdgeRef& b) {
     const Point2 &a0 = start(a), &a1 = end(a), &b0 = start(b), &b1 = end(b);
     const Orientation oa0 = orient2d(b0, b1, a0);
@@ -160,6 +166,11 @@ class IntersectionFinder {
       const Point2 p = crossing_point(a0, a1, b0, b1);
       nodes.insert(p);
       crossings.insert(p);
+      constexpr double u = 0x1p-53;
+      const double shorter = std::sqrt(std::min(length2(a0, a1), length2(b0, b1)));
+      const double radius = 4.0 * u * shorter + u * (std::fabs(p.x) + std::fabs(p.y));
+      double& r = radii[p];
+      r = std::max(r, radius);
       insert_crossing(a, p, b0, b1);
       insert_crossing(b, p, a0, a1);
       return;
@@ -663,7 +674,7 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
     if (!made.empty()) made.insert(finder.crossings.begin(), finder.crossings.end());
     std::unordered_set<Point2, Point2Hash> merged;
     edges = detail::merge_close_vertices(std::move(edges), made.empty() ? finder.crossings : made,
-                                         is_input, merged);
+                                         is_input, merged, &finder.radii);
     if (!merged.empty()) edges = detail::node_edges(std::move(edges), merged);
     std::unordered_set<Point2, Point2Hash> snapped;
     edges = detail::snap_vertices_onto_edges(std::move(edges), nullptr, &snapped);

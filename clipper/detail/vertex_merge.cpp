@@ -14,22 +14,38 @@ bool close(const Point2& a, const Point2& b) {
 }
 
 // Every close pair of an edge endpoint and a candidate (a pair of two candidates once).
-// A point q at distance d from v is close only if d <= 2·(4u·d + u·max|coordinate|), so
-// d < 2.1u·max(|v.x|, |v.y|): a window in x of half-width 16u·(|v.x| + |v.y|) around v
-// holds every such q. The candidates are few (the constructed points), so they are
-// sorted and searched; the endpoints are not sorted at all.
+// A point q at distance d from v is close by distance only if
+// d <= 2·(4u·d + u·max|coordinate|), so d < 2.1u·max(|v.x|, |v.y|), and by the radii only
+// if d <= twice the largest radius: a window in x of half-width the larger of
+// 16u·(|v.x| + |v.y|) and that around v holds every such q. The candidates are few (the
+// constructed points), so they are sorted and searched; the endpoints are not sorted.
 std::vector<std::pair<Point2, Point2>> close_pairs(
     const std::vector<DirectedEdge>& edges,
-    const std::unordered_set<Point2, Point2Hash>& candidates) {
+    const std::unordered_set<Point2, Point2Hash>& candidates, const ErrorRadii* radii) {
   std::vector<std::pair<Point2, Point2>> pairs;
   if (candidates.empty()) return pairs;
   std::vector<Point2> sorted(candidates.begin(), candidates.end());
   std::sort(sorted.begin(), sorted.end());
+  double largest_radius = 0.0;
+  if (radii != nullptr) {
+    for (const auto& [p, r] : *radii) largest_radius = std::max(largest_radius, r);
+  }
+  auto radius = [radii](const Point2& p) {
+    if (radii == nullptr) return -1.0;
+    const auto it = radii->find(p);
+    return it == radii->end() ? -1.0 : it->second;
+  };
+  auto close_enough = [&](const Point2& v, const Point2& q) {
+    if (close(v, q)) return true;
+    const double rv = radius(v), rq = radius(q);
+    return rv >= 0.0 && rq >= 0.0 && std::hypot(v.x - q.x, v.y - q.y) <= rv + rq;
+  };
   auto visit = [&](const Point2& v) {
-    const double half = 16.0 * 0x1p-53 * (std::fabs(v.x) + std::fabs(v.y));
+    const double half =
+        std::max(16.0 * 0x1p-53 * (std::fabs(v.x) + std::fabs(v.y)), 2.0 * largest_radius);
     auto it = std::lower_bound(sorted.begin(), sorted.end(), Point2{v.x - half, -INFINITY});
     for (; it != sorted.end() && it->x <= v.x + half; ++it) {
-      if (*it == v || !close(v, *it)) continue;
+      if (*it == v || !close_enough(v, *it)) continue;
       if (!(v < *it) && candidates.contains(v)) continue;  // met again from the other end
       pairs.emplace_back(v, *it);
     }
@@ -46,8 +62,8 @@ std::vector<std::pair<Point2, Point2>> close_pairs(
 std::vector<DirectedEdge> merge_close_vertices(
     std::vector<DirectedEdge> edges, const std::unordered_set<Point2, Point2Hash>& candidates,
     const std::function<bool(const Point2&)>& is_input,
-    std::unordered_set<Point2, Point2Hash>& moved) {
-  const std::vector<std::pair<Point2, Point2>> pairs = close_pairs(edges, candidates);
+    std::unordered_set<Point2, Point2Hash>& moved, const ErrorRadii* radii) {
+  const std::vector<std::pair<Point2, Point2>> pairs = close_pairs(edges, candidates, radii);
   if (pairs.empty()) return edges;
 
   // Per constructed vertex, where it goes: an input vertex is exact, so the nearest close

@@ -15,6 +15,7 @@
 // edge length. Farther points are genuine features, and input vertices never move.
 
 #include <functional>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -32,9 +33,16 @@ namespace shadowgen::clipper::detail {
 // `moved` receives the vertices that gained edges: those edges moved, by at most the
 // snap distance, and may need noding again. `is_input` is asked only about vertices
 // that have a close neighbour, which is rare.
+// `radii`, when given, holds for crossings the error bound of their construction
+// (clip.h: 4u·min(|a|, |b|) + u·|P|). Two crossings less than the sum of their bounds
+// apart are close too: rounded nearer than their errors, nothing tells where either
+// exact point lies relative to the other, and kept apart they can leave the traced
+// boundary without a consistent order (three edges folded onto one line within 1e-17 of
+// each other, each crossed by one edge of the other operand, rounded 2 ulps apart).
+using ErrorRadii = std::unordered_map<Point2, double, Point2Hash>;
 std::vector<DirectedEdge> merge_close_vertices(
     std::vector<DirectedEdge> edges, const std::unordered_set<Point2, Point2Hash>& candidates,
     const std::function<bool(const Point2&)>& is_input,
-    std::unordered_set<Point2, Point2Hash>& moved);
+    std::unordered_set<Point2, Point2Hash>& moved, const ErrorRadii* radii = nullptr);
 
 }  // namespace shadowgen::clipper::detail

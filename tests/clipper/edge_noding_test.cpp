@@ -134,6 +134,29 @@ TEST(VertexMerge, CloseCrossingsMergeIntoTheLeastWhateverTheEdgeOrder) {
   }
 }
 
+TEST(VertexMerge, CrossingsNearerThanTheirErrorBoundsMerge) {
+  // 2 ulps apart in y near 0.15: beyond 2u·|P| (3.3e-17), within two error radii of 4e-16.
+  const Point2 d{-0.15000000000000002, -0.15000000000000002};
+  const Point2 e{-0.15000000000000002, -0.14999999999999997};
+  const Point2 far{-0.18, -0.12};
+  const std::vector<DirectedEdge> edges{{far, d}, {e, far}, {d, e}};
+  Points moved;
+  const auto kept = merge_close_vertices(
+      edges, Points{d, e}, [](const Point2&) { return false; }, moved);
+  EXPECT_EQ(kept.size(), 3u);  // by distance alone they stay apart
+  const ErrorRadii radii{{d, 4e-16}, {e, 4e-16}};
+  const auto merged = merge_close_vertices(
+      edges, Points{d, e}, [](const Point2&) { return false; }, moved, &radii);
+  ASSERT_EQ(merged.size(), 2u);  // d -> e shrank to a point
+  EXPECT_TRUE(has_edge(merged, far, d));
+  EXPECT_TRUE(has_edge(merged, d, far));
+  const ErrorRadii tight{{d, 2e-17}, {e, 2e-17}};
+  EXPECT_EQ(merge_close_vertices(
+                edges, Points{d, e}, [](const Point2&) { return false; }, moved, &tight)
+                .size(),
+            3u);
+}
+
 TEST(VertexMerge, PointsFartherThanTheSnapDistanceStay) {
   // 2u·|P| is about 1.7e-20 here; 64 ulps of x (1e-22 each) is well inside, 1e6 ulps not.
   const Point2 near = ulps_right(kV, 64), far = ulps_right(kV, 1000000);
