@@ -54,9 +54,10 @@
 // the bound above (8u·|edge| + 2u·|P|), so the boundary does not fold back along that edge
 // into a sliver. A crossing constructed within 2u·|P| of another vertex (where exact
 // arithmetic puts it on that vertex) is merged into it, so the boundary does not run out
-// and back through two points an ulp apart (detail/vertex_merge.h). All of these move
-// the boundary by at most those bounds; the one tolerance is that derived distance,
-// nothing else.
+// and back through two points an ulp apart, and two crossings nearer each other than the
+// sum of their own error bounds become one (detail/vertex_merge.h). All of these move the
+// boundary by at most those bounds; the tolerances are those derived distances, nothing
+// else.
 //
 // Limit. The placement error of a crossing grows with the length of its edges (4u·L).
 // Where the other operand has features thinner than that along a long edge (a needle

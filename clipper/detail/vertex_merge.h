@@ -12,7 +12,8 @@
 //
 // Two vertices are close when they lie within snap_distance (snap.h) of each other: for
 // points that near, 2u·|P|, the part of a crossing's error bound that does not depend on
-// edge length. Farther points are genuine features, and input vertices never move.
+// edge length. Two crossings are also close within the sum of their own error bounds
+// (`radii` below). Farther points are genuine features, and input vertices never move.
 
 #include <functional>
 #include <unordered_map>
