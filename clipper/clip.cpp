@@ -25,6 +25,16 @@ using detail::Location;
 // region lies on its left.
 using Boundary = std::vector<Loop2>;
 
+bool has_vertex(const Loop2& loop, const Point2& v) {
+  return std::find(loop.begin(), loop.end(), v) != loop.end();
+}
+
+bool has_vertex(const PolygonWithHoles2& polygon, const Point2& v) {
+  return has_vertex(polygon.outer, v) ||
+         std::any_of(polygon.holes.begin(), polygon.holes.end(),
+                     [&v](const Loop2& hole) { return has_vertex(hole, v); });
+}
+
 Boundary boundary_of(const PolygonSet2& polygons) {
   Boundary loops;
   for (const PolygonWithHoles2& p : polygons) {
@@ -661,12 +671,9 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   // cancels (detail/snap.h). A snapped edge moved by a hair and may now cross a
   // neighbour: node once more. Then trace.
   auto is_input = [&a_loops, &b_loops](const Point2& p) {
-    for (const Boundary* loops : {&a_loops, &b_loops}) {
-      for (const Loop2& loop : *loops) {
-        if (std::find(loop.begin(), loop.end(), p) != loop.end()) return true;
-      }
-    }
-    return false;
+    auto on = [&p](const Loop2& loop) { return has_vertex(loop, p); };
+    return std::any_of(a_loops.begin(), a_loops.end(), on) ||
+           std::any_of(b_loops.begin(), b_loops.end(), on);
   };
   auto finish = [&finder, &is_input](std::vector<DirectedEdge> edges) {
     std::unordered_set<Point2, Point2Hash> made;  // by the noding, beside the crossings
@@ -700,13 +707,8 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   auto drop_rounding_slivers = [](PolygonSet2& set, const PolygonSet2& before,
                                   const PolygonWithHoles2& c) {
     auto is_operand_vertex = [&](const Point2& v) {
-      auto in = [&v](const PolygonWithHoles2& p) {
-        if (std::find(p.outer.begin(), p.outer.end(), v) != p.outer.end()) return true;
-        return std::any_of(p.holes.begin(), p.holes.end(), [&v](const Loop2& h) {
-          return std::find(h.begin(), h.end(), v) != h.end();
-        });
-      };
-      return in(c) || std::any_of(before.begin(), before.end(), in);
+      return has_vertex(c, v) || std::any_of(before.begin(), before.end(),
+                                             [&v](const auto& p) { return has_vertex(p, v); });
     };
     std::erase_if(set, [&](const PolygonWithHoles2& p) {
       if (std::fabs(signed_area(p.outer)) > rounding_area_bound(p.outer)) return false;
