@@ -2,22 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
-#include <unordered_map>
-#include <unordered_set>
+#include <cstdint>
+#include <span>
+#include <vector>
 
 #include "clipper/detail/boundary_graph.h"
-#include "clipper/detail/crossing.h"
-#include "clipper/detail/edge_noding.h"
+#include "clipper/detail/point_index.h"
 #include "clipper/detail/point_location.h"
-#include "clipper/detail/vertex_merge.h"
+#include "clipper/detail/snap_rounding.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 
 namespace shadowgen::clipper {
 namespace {
 
-using detail::crossing_point;
 using detail::DirectedEdge;
 using detail::Location;
 
@@ -65,492 +63,252 @@ bool overlap(const Box& a, const Box& b) {
   return a.xmin <= b.xmax && b.xmin <= a.xmax && a.ymin <= b.ymax && b.ymin <= a.ymax;
 }
 
-// An edge of one operand, addressed by loop and start vertex.
-struct EdgeRef {
-  int side;  // 0 subject, 1 clip
-  int loop;
-  int index;
-};
-
-// A point to be inserted into an edge of one operand.
-struct Insertion {
-  int loop;
-  int index;
-  detail::EdgePoint at;
-};
-
-// Finds every point where the two boundaries meet and records it for insertion into
-// both. Candidate pairs come from a sweep over x; the rest are rejected by y-interval.
-class IntersectionFinder {
- public:
-  IntersectionFinder(const Boundary& subject, const Boundary& clip_region)
-      : sides_{&subject, &clip_region} {}
-
-  void run() {
-    struct Item {
-      Box box;
-      EdgeRef edge;
-    };
-    std::vector<Item> items;
-    for (int s = 0; s < 2; ++s) {
-      const Boundary& loops = *sides_[s];
-      for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
-        const Loop2& loop = loops[l];
-        const int n = static_cast<int>(loop.size());
-        for (int i = 0; i < n; ++i) {
-          const Point2& p = loop[i];
-          const Point2& q = loop[i + 1 == n ? 0 : i + 1];
-          items.push_back(
-              {{std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y)},
-               {s, l, i}});
-        }
-      }
-    }
-    std::sort(items.begin(), items.end(),
-              [](const Item& a, const Item& b) { return a.box.xmin < b.box.xmin; });
-    std::vector<const Item*> active[2];
-    for (const Item& item : items) {
-      const int other = 1 - item.edge.side;
-      std::vector<const Item*>& candidates = active[other];
-      std::size_t kept = 0;
-      for (const Item* c : candidates) {
-        // Kept unless left behind by the sweep (without branches: unpredictable).
-        candidates[kept] = c;
-        const bool live = c->box.xmax >= item.box.xmin;
-        kept += live ? 1 : 0;
-        if (live & (c->box.ymin <= item.box.ymax) & (item.box.ymin <= c->box.ymax)) {
-          if (item.edge.side == 0) {
-            intersect(item.edge, c->edge);
-          } else {
-            intersect(c->edge, item.edge);
-          }
-        }
-      }
-      candidates.resize(kept);
-      active[item.edge.side].push_back(&item);
-    }
-  }
-
-  std::vector<Insertion> insertions[2];
-  std::unordered_set<Point2, Point2Hash> nodes;
-  std::unordered_set<Point2, Point2Hash> crossings;  // the nodes that are rounded points
-  detail::ErrorRadii radii;  // per crossing, its construction's error bound (clip.h)
-
- private:
-  const Point2& start(const EdgeRef& e) const { return (*sides_[e.side])[e.loop][e.index]; }
-  const Point2& end(const EdgeRef& e) const {
-    const Loop2& loop = (*sides_[e.side])[e.loop];
-    return loop[e.index + 1 == static_cast<int>(loop.size()) ? 0 : e.index + 1];
-  }
-
-  void insert(const EdgeRef& e, const Point2& p) {
-    insertions[e.side].push_back({e.loop, e.index, {p}});
-  }
-  // The rounded crossing with the other operand's edge f0-f1, which orders it exactly.
-  void insert_crossing(const EdgeRef& e, const Point2& p, const Point2& f0, const Point2& f1) {
-    insertions[e.side].push_back({e.loop, e.index, {p, true, f0, f1}});
-  }
-
-  // An endpoint of one edge lying on the other: a touching point, already a vertex of
-  // its own boundary, inserted into the other unless it is an endpoint there too.
-  void touch(const Point2& p, const EdgeRef& host, const Point2& h0, const Point2& h1) {
-    nodes.insert(p);
-    if (p != h0 && p != h1) insert(host, p);
-  }
-
-  static double length2(const Point2& p, const Point2& q) {
-    const double dx = q.x - p.x, dy = q.y - p.y;
-    return dx * dx + dy * dy;
-  }
-
-  void intersect(const EdgeRef& a, const EdgeRef& b) {
-    const Point2 &a0 = start(a), &a1 = end(a), &b0 = start(b), &b1 = end(b);
-    const Orientation oa0 = orient2d(b0, b1, a0);
-    const Orientation oa1 = orient2d(b0, b1, a1);
-    if (oa0 == oa1 && oa0 != Orientation::kCollinear) return;
-    const Orientation ob0 = orient2d(a0, a1, b0);
-    const Orientation ob1 = orient2d(a0, a1, b1);
-    if (ob0 == ob1 && ob0 != Orientation::kCollinear) return;
-    if (oa0 != Orientation::kCollinear && oa1 != Orientation::kCollinear &&
-        ob0 != Orientation::kCollinear && ob1 != Orientation::kCollinear) {
-      const Point2 p = crossing_point(a0, a1, b0, b1);
-      nodes.insert(p);
-      crossings.insert(p);
-      constexpr double u = 0x1p-53;
-      const double shorter = std::sqrt(std::min(length2(a0, a1), length2(b0, b1)));
-      const double radius = 4.0 * u * shorter + u * (std::fabs(p.x) + std::fabs(p.y));
-      double& r = radii[p];
-      r = std::max(r, radius);
-      insert_crossing(a, p, b0, b1);
-      insert_crossing(b, p, a0, a1);
-      return;
-    }
-    // Touching or collinear overlap: every endpoint lying on the other segment.
-    if (oa0 == Orientation::kCollinear && on_segment(b0, b1, a0)) touch(a0, b, b0, b1);
-    if (oa1 == Orientation::kCollinear && on_segment(b0, b1, a1)) touch(a1, b, b0, b1);
-    if (ob0 == Orientation::kCollinear && on_segment(a0, a1, b0)) touch(b0, a, a0, a1);
-    if (ob1 == Orientation::kCollinear && on_segment(a0, a1, b1)) touch(b1, a, a0, a1);
-  }
-
-  const Boundary* sides_[2];
-};
-
-// Where a loop of one operand touches another loop of the same operand (a hole touching
-// its outer loop, two polygons of a set meeting at a point), the touching vertex lies
-// inside an edge of the other loop. Inserting it there makes it a vertex of both, so the
-// traversal and the split at repeated vertices see the touch. Decided exactly.
-std::vector<Insertion> self_touches(const Boundary& loops) {
-  // A sweep over the vertices in x. An edge enters at its left end, itself a vertex, so
-  // one sort serves both; it is tested against the vertices of the other loops until the
-  // sweep has passed its right end.
-  struct Vertex {
-    double x;
-    int loop;
-    int index;
-  };
-  struct Edge {
-    double xmax, ymin, ymax;
-    int loop;
-    int index;
-  };
-  std::size_t count = 0;
-  for (const Loop2& loop : loops) count += loop.size();
-  std::vector<Vertex> vertices;
-  vertices.reserve(count);
-  for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
-    for (int i = 0; i < static_cast<int>(loops[l].size()); ++i) {
-      vertices.push_back({loops[l][i].x, l, i});
-    }
-  }
-  std::sort(vertices.begin(), vertices.end(),
-            [](const Vertex& a, const Vertex& b) { return a.x < b.x; });
-  std::vector<Edge> active;
-  // Activates edge i of loop l (from vertex i to the next) when the sweep stands at its
-  // left end: at its start (at_start) or at its end. A vertical edge enters at its start,
-  // so each edge enters exactly once.
-  auto enter = [&](int l, int i, bool at_start) {
-    const Loop2& loop = loops[l];
-    const Point2& p = loop[i];
-    const Point2& q = loop[i + 1 == static_cast<int>(loop.size()) ? 0 : i + 1];
-    if ((p.x <= q.x) != at_start) return;
-    active.push_back({std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y), l, i});
-  };
-  std::vector<Insertion> found;
-  std::size_t next = 0;
-  for (const Vertex& vertex : vertices) {
-    for (; next < vertices.size() && vertices[next].x <= vertex.x; ++next) {
-      const Vertex& v = vertices[next];
-      const int n = static_cast<int>(loops[v.loop].size());
-      enter(v.loop, v.index, true);                              // the edge leaving v
-      enter(v.loop, v.index == 0 ? n - 1 : v.index - 1, false);  // the edge arriving at v
-    }
-    const Point2& p = loops[vertex.loop][vertex.index];
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < active.size(); ++k) {
-      // Kept unless the sweep has passed it; written without branches, as which edges
-      // drop out is unpredictable and the test is the whole cost of this loop.
-      const Edge e = active[k];
-      active[kept] = e;
-      kept += e.xmax >= p.x ? 1 : 0;
-      const bool candidate =
-          (e.xmax >= p.x) & (e.loop != vertex.loop) & (p.y >= e.ymin) & (p.y <= e.ymax);
-      if (!candidate) continue;
-      const Loop2& loop = loops[e.loop];
-      const Point2& a = loop[e.index];
-      const Point2& b = loop[(e.index + 1) % loop.size()];
-      if (p == a || p == b) continue;
-      if (orient2d(a, b, p) == Orientation::kCollinear) found.push_back({e.loop, e.index, {p}});
-    }
-    active.resize(kept);
-  }
-  return found;
-}
-
-// One loop of an operand with the intersection points inserted in order along each edge
-// (detail::AlongSegment). Each vertex remembers where it came from, because sides are decided on
-// the original edges: exact input, never a rounded crossing point.
-struct SplitLoop {
-  Loop2 points;
-  std::vector<int> original;  // index of the input vertex, or -1 for an inserted point
-  std::vector<int> edge;      // input edge that the edge leaving this vertex lies on
-  std::vector<char> node;     // whether the point is a node (looked up once, here)
-};
-using SplitBoundary = std::vector<SplitLoop>;
-
-// `nodes`, when given, marks which points are nodes: every inserted point is one (it was
-// inserted where the boundaries meet), an input vertex when it is in the set.
-SplitBoundary with_insertions(const Boundary& loops, std::vector<Insertion>& insertions,
-                              const std::unordered_set<Point2, Point2Hash>* nodes = nullptr) {
-  std::sort(insertions.begin(), insertions.end(), [](const Insertion& a, const Insertion& b) {
-    return a.loop != b.loop ? a.loop < b.loop : a.index < b.index;
-  });
-  SplitBoundary out(loops.size());
-  std::size_t k = 0;
-  for (int l = 0; l < static_cast<int>(loops.size()); ++l) {
-    const Loop2& loop = loops[l];
-    SplitLoop& result = out[l];
-    result.points.reserve(loop.size());
-    const int n = static_cast<int>(loop.size());
-    auto push = [&result, nodes](const Point2& p, int original, int edge) {
-      if (!result.points.empty() && result.points.back() == p) return;
-      result.points.push_back(p);
-      result.original.push_back(original);
-      result.edge.push_back(edge);
-      result.node.push_back(nodes != nullptr && (original < 0 || nodes->count(p) != 0));
-    };
-    for (int i = 0; i < n; ++i) {
-      const Point2& p = loop[i];
-      const Point2& q = loop[i + 1 == n ? 0 : i + 1];
-      push(p, i, i);
-      const std::size_t first = k;
-      while (k < insertions.size() && insertions[k].loop == l && insertions[k].index == i) ++k;
-      if (k == first) continue;
-      const detail::ExactlyAlongSegment along(p, q);
-      std::sort(insertions.begin() + static_cast<std::ptrdiff_t>(first),
-                insertions.begin() + static_cast<std::ptrdiff_t>(k),
-                [&](const Insertion& a, const Insertion& b) { return along(a.at, b.at); });
-      for (std::size_t j = first; j < k; ++j) {
-        if (insertions[j].at.point != q) push(insertions[j].at.point, -1, i);
-      }
-    }
-    while (result.points.size() > 1 && result.points.back() == result.points.front()) {
-      result.points.pop_back();
-      result.original.pop_back();
-      result.edge.pop_back();
-      result.node.pop_back();
-    }
-  }
-  return out;
-}
-
-Boundary self_noded(Boundary loops) {
-  if (loops.size() < 2) return loops;  // a simple loop touches no other
-  std::vector<Insertion> touches = self_touches(loops);
-  if (touches.empty()) return loops;
-  SplitBoundary split = with_insertions(loops, touches);
-  for (std::size_t l = 0; l < loops.size(); ++l) loops[l] = std::move(split[l].points);
-  return loops;
-}
-
-// How a boundary passes through a node, told in input geometry. At one of its own input
-// vertices (then the node is exact) it turns there: `from` is the previous input vertex,
-// `to` the next. Anywhere else the node was inserted into one of its input edges, and the
-// boundary runs straight along that edge from `from` to `to`.
-struct Pass {
-  bool at_vertex;
-  Point2 from;
-  Point2 to;
-};
-using PassMap = std::unordered_map<Point2, std::vector<Pass>, Point2Hash>;
-
-PassMap passes_through(const Boundary& loops, const SplitBoundary& split) {
-  PassMap passes;
-  for (std::size_t l = 0; l < split.size(); ++l) {
-    const Loop2& input = loops[l];
-    const SplitLoop& loop = split[l];
-    const int n = static_cast<int>(input.size());
-    for (std::size_t i = 0; i < loop.points.size(); ++i) {
-      if (!loop.node[i]) continue;
-      const int e = loop.edge[i];
-      if (loop.original[i] >= 0) {
-        const int v = loop.original[i];
-        passes[loop.points[i]].push_back({true, input[(v + n - 1) % n], input[(v + 1) % n]});
-      } else {
-        passes[loop.points[i]].push_back({false, input[e], input[(e + 1) % n]});
-      }
-    }
-  }
-  return passes;
-}
-
 enum class Side { kInside, kOutside, kSharedSame, kSharedOpposite };
 
-// Does c lie on the ray from v through b?
-bool on_ray(const Point2& v, const Point2& b, const Point2& c) {
-  if (orient2d(v, b, c) != Orientation::kCollinear) return false;
-  return (b.x - v.x) * (c.x - v.x) + (b.y - v.y) * (c.y - v.y) > 0.0;
-}
-
-// Is direction point w strictly inside the angle swept counter-clockwise at v from `to`
-// round to `from` (the region left of from -> v -> to)?
-bool in_sector(const Point2& v, const Pass& pass, const Point2& w) {
-  const Orientation corner = orient2d(pass.from, v, pass.to);
-  const bool left_of_next = orient2d(v, pass.to, w) == Orientation::kCounterClockwise;
-  const bool right_of_prev = orient2d(v, pass.from, w) == Orientation::kClockwise;
-  return corner == Orientation::kCounterClockwise ? left_of_next && right_of_prev
-                                                  : left_of_next || right_of_prev;
-}
-
-// Which side of the other operand the stretch leaving node v along the input edge
-// (e0 -> e1) lies on, judged against one pass of the other boundary. This is the exact
-// local form of the entry/exit test (a touch does not flip the state, a crossing does),
-// asked of input points wherever the node itself is a rounded crossing:
-//   - a pass straight along an input edge f: where v lies exactly on f, the stretch lies
-//     on e1's side of f (e0's if e1 is on f's line; on f itself if both are); where v is
-//     the rounded crossing of the stretch's edge with f, on e1's side; where v is off f
-//     (a rounded crossing with some other edge fell on it), on v's own side;
-//   - a pass turning at an input vertex v of the other operand (v exact): if v lies on the
-//     stretch's input edge, the sector test at v is exact. If not, v is only where the
-//     rounded crossing of the stretch's edge with one of the two edges at v fell, and the
-//     stretch lies on e1's side of the edge it crossed.
-Side side_against(const Point2& v, const Point2& e0, const Point2& e1, const Pass& pass) {
-  if (!pass.at_vertex) {
-    const Orientation s1 = orient2d(pass.from, pass.to, e1);
-    const Orientation s0 = orient2d(pass.from, pass.to, e0);
-    if (s1 == Orientation::kCollinear && s0 == Orientation::kCollinear) {
-      const double dot =
-          (e1.x - e0.x) * (pass.to.x - pass.from.x) + (e1.y - e0.y) * (pass.to.y - pass.from.y);
-      return dot > 0.0 ? Side::kSharedSame : Side::kSharedOpposite;
-    }
-    Orientation side;
-    const Orientation sv = orient2d(pass.from, pass.to, v);
-    if (sv == Orientation::kCollinear) {
-      side = s1 != Orientation::kCollinear ? s1 : s0;  // v on f: the stretch leaves it
-    } else if (s0 != Orientation::kCollinear && s1 != Orientation::kCollinear && s0 != s1 &&
-               orient2d(e0, e1, pass.from) != Orientation::kCollinear &&
-               orient2d(e0, e1, pass.to) != Orientation::kCollinear &&
-               orient2d(e0, e1, pass.from) != orient2d(e0, e1, pass.to) &&
-               crossing_point(e0, e1, pass.from, pass.to) == v) {
-      side = s1;  // v is the rounded crossing of the two: the stretch is past it
-    } else {
-      side = sv;  // v is off f (a crossing with another edge fell here): it starts on v's side
-    }
-    return side == Orientation::kCounterClockwise ? Side::kInside : Side::kOutside;
-  }
-  if (orient2d(e0, e1, v) == Orientation::kCollinear) {
-    if (on_ray(v, pass.to, e1)) return Side::kSharedSame;
-    if (on_ray(v, pass.from, e1)) return Side::kSharedOpposite;
-    return in_sector(v, pass, e1) ? Side::kInside : Side::kOutside;
-  }
-  // Does the stretch's input edge properly cross the input edge f0 -> f1?
-  auto crosses = [&](const Point2& f0, const Point2& f1) {
-    const Orientation a = orient2d(f0, f1, e0), b = orient2d(f0, f1, e1);
-    const Orientation c = orient2d(e0, e1, f0), d = orient2d(e0, e1, f1);
-    return a != Orientation::kCollinear && b != Orientation::kCollinear && a != b &&
-           c != Orientation::kCollinear && d != Orientation::kCollinear && c != d;
-  };
-  // Of the two edges at v, the one whose rounded crossing with the stretch's edge is v
-  // itself (a crossing with the other one, if any, made a node of its own); failing that,
-  // any one the stretch's edge crosses.
-  auto side_of = [&](const Point2& f0, const Point2& f1) {
-    return orient2d(f0, f1, e1) == Orientation::kCounterClockwise ? Side::kInside : Side::kOutside;
-  };
-  const bool crosses_in = crosses(pass.from, v), crosses_out = crosses(v, pass.to);
-  const bool lands_in = crosses_in && crossing_point(pass.from, v, e0, e1) == v;
-  const bool lands_out = crosses_out && crossing_point(v, pass.to, e0, e1) == v;
-  // Both crossings landed on v: the stretch cut across the corner and is past both, in
-  // the sector its direction points into.
-  if (lands_in && lands_out) return in_sector(v, pass, e1) ? Side::kInside : Side::kOutside;
-  if (lands_in) return side_of(pass.from, v);
-  if (lands_out) return side_of(v, pass.to);
-  if (crosses_in) return side_of(pass.from, v);
-  if (crosses_out) return side_of(v, pass.to);
-  const Point2 ahead{v.x + (e1.x - e0.x), v.y + (e1.y - e0.y)};
-  return in_sector(v, pass, ahead) ? Side::kInside : Side::kOutside;
-}
-
-// Is the direction just counter-clockwise of the ray v -> r in the left sector of `pass`?
-bool just_past_ray_in_sector(const Point2& v, const Point2& r, const Pass& pass) {
-  if (on_ray(v, pass.to, r)) return true;     // the sector starts at `to`
-  if (on_ray(v, pass.from, r)) return false;  // and ends at `from`
-  return in_sector(v, pass, r);
-}
-
-// Against all passes through v. One pass: its side. Several (loops touching at v, such as
-// a hole touching its outer loop, or two polygons of a set meeting at a point): the other
-// region near v is where the winding number is 1. Each pass adds one to the winding of
-// its left sector (less a constant for clockwise loops), so a direction is inside exactly
-// when it lies in as many left sectors as a direction known to be inside: the one just
-// counter-clockwise of a pass's outgoing edge, which has the region on its left.
-Side side_of_edge(const Point2& v, const Point2& e0, const Point2& e1,
-                  const std::vector<Pass>& passes) {
-  if (passes.size() == 1) return side_against(v, e0, e1, passes.front());
-  int count = 0;
-  for (const Pass& pass : passes) {
-    const Side s = side_against(v, e0, e1, pass);
-    if (s == Side::kSharedSame || s == Side::kSharedOpposite) return s;
-    if (s == Side::kInside) ++count;
-  }
-  int reference = 0;
-  for (const Pass& pass : passes) {
-    if (just_past_ray_in_sector(v, passes.front().to, pass)) ++reference;
-  }
-  return count >= reference ? Side::kInside : Side::kOutside;
-}
-
-// Several passes through v of which one was put there by a rounded crossing: crossings
-// less than a rounding apart (a boundary cutting through the thin tip of a spike) have
-// merged into one node, and no local test at v can tell in which order they were crossed.
-bool merged_crossings(const Point2& v, const std::vector<Pass>& passes) {
-  if (passes.size() < 2) return false;
-  return std::any_of(passes.begin(), passes.end(), [&v](const Pass& p) {
-    return !p.at_vertex && orient2d(p.from, p.to, v) != Orientation::kCollinear;
-  });
-}
-
-// The edges of one operand's boundary split by side of the other operand.
-struct ClassifiedEdges {
-  std::vector<DirectedEdge> inside, outside, shared_same, shared_opposite;
-};
-
-struct Segment {
-  Point2 from, to;
-  friend bool operator==(const Segment&, const Segment&) = default;
-};
-struct SegmentHash {
-  std::size_t operator()(const Segment& s) const noexcept {
-    const Point2Hash h;
-    return h(s.from) * 31u + h(s.to);
-  }
-};
-// The input edge a split edge lies on, in its operand's direction (region on its left).
-struct InputEdge {
-  Point2 from, to;
-};
-using SegmentMap = std::unordered_map<Segment, InputEdge, SegmentHash>;
-
-// The split edges of one operand that run from node to node: the only ones that can be
-// the very same segment as one of the other operand's.
-SegmentMap node_to_node_segments(const Boundary& loops, const SplitBoundary& split) {
-  SegmentMap out;
-  for (std::size_t l = 0; l < split.size(); ++l) {
-    const SplitLoop& loop = split[l];
-    const Loop2& input = loops[l];
-    const std::size_t n = loop.points.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (loop.node[i] && loop.node[(i + 1) % n]) {
-        const int e = loop.edge[i];
-        out.emplace(Segment{loop.points[i], loop.points[(i + 1) % n]},
-                    InputEdge{input[e], input[(e + 1) % input.size()]});
+// Both snapped operands as one plane graph: an id for every distinct vertex, and for
+// each operand which vertices it has, which of its edges cancel (run both ways along one
+// segment: a needle or crack of its region that the snapping closed, bounding nothing),
+// and, at the vertices both operands share (the nodes), its live edges there.
+class Overlay {
+ public:
+  explicit Overlay(const Boundary (&loops)[2]) : loops_(loops), index_(expected_points(loops)) {
+    for (int s = 0; s < 2; ++s) {
+      ids_[s].resize(loops[s].size());
+      for (std::size_t l = 0; l < loops[s].size(); ++l) {
+        for (const Point2& p : loops[s][l]) ids_[s][l].push_back(index_.id(p));
       }
     }
+    const std::size_t count = index_.size();
+    for (int s = 0; s < 2; ++s) {
+      occurrences_[s].assign(count, 0);
+      for (const auto& loop : ids_[s]) {
+        for (const std::size_t id : loop) {
+          occurrences_[s][id] = static_cast<std::uint8_t>(std::min(occurrences_[s][id] + 1, 2));
+        }
+      }
+    }
+    for (int s = 0; s < 2; ++s) cancel_opposite_edges(s);
+    for (int s = 0; s < 2; ++s) collect_node_edges(s);
   }
-  return out;
+
+  // The edges of operand s by side of the other operand. Shared stretches are told the
+  // same way from either operand.
+  struct Classified {
+    std::vector<DirectedEdge> inside, outside, shared_same, shared_opposite;
+  };
+  Classified classify(int s) const;
+
+ private:
+  // An edge of the other operand at a node: the far end, and whether it leaves the node.
+  struct Incident {
+    Point2 far;
+    bool leaves;
+  };
+
+  static std::size_t expected_points(const Boundary (&loops)[2]) {
+    std::size_t n = 0;
+    for (const Boundary& b : loops) {
+      for (const Loop2& l : b) n += l.size();
+    }
+    return n;
+  }
+
+  bool is_node(std::size_t id) const {
+    return occurrences_[0][id] != 0 && occurrences_[1][id] != 0;
+  }
+
+  // Marks the edges of operand s that run both ways along one segment. Such a pair either
+  // turns straight back at a vertex (a spike) or joins two vertices that the operand
+  // passes through more than once; only those are compared.
+  void cancel_opposite_edges(int s) {
+    struct Key {
+      std::size_t lo, hi;
+      bool forward;
+      std::size_t loop, index;
+    };
+    std::vector<Key> keys;
+    cancelled_[s].resize(loops_[s].size());
+    for (std::size_t l = 0; l < loops_[s].size(); ++l) {
+      const std::vector<std::size_t>& ids = ids_[s][l];
+      const std::size_t n = ids.size();
+      std::vector<char>& cancelled = cancelled_[s][l];
+      cancelled.assign(n, 0);
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t a = ids[i], b = ids[(i + 1) % n];
+        if (occurrences_[s][a] < 2 || occurrences_[s][b] < 2) continue;
+        keys.push_back({std::min(a, b), std::max(a, b), a < b, l, i});
+      }
+      // Spikes: at a vertex met once, the edges in and out are the same segment.
+      for (std::size_t i = 0; i < n && n >= 2; ++i) {
+        const std::size_t prev = (i + n - 1) % n, next = (i + 1) % n;
+        if (occurrences_[s][ids[i]] == 1 && ids[prev] == ids[next]) {
+          cancelled[prev] = 1;
+          cancelled[i] = 1;
+        }
+      }
+    }
+    if (keys.size() < 2) return;
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+      if (a.lo != b.lo) return a.lo < b.lo;
+      if (a.hi != b.hi) return a.hi < b.hi;
+      if (a.loop != b.loop) return a.loop < b.loop;
+      return a.index < b.index;
+    });
+    for (std::size_t g = 0; g < keys.size();) {
+      std::size_t end = g + 1;
+      while (end < keys.size() && keys[end].lo == keys[g].lo && keys[end].hi == keys[g].hi) ++end;
+      std::vector<const Key*> ways[2];
+      for (std::size_t k = g; k < end; ++k) {
+        if (!cancelled_[s][keys[k].loop][keys[k].index]) ways[keys[k].forward].push_back(&keys[k]);
+      }
+      for (std::size_t k = 0; k < std::min(ways[0].size(), ways[1].size()); ++k) {
+        cancelled_[s][ways[0][k]->loop][ways[0][k]->index] = 1;
+        cancelled_[s][ways[1][k]->loop][ways[1][k]->index] = 1;
+      }
+      g = end;
+    }
+  }
+
+  // For operand s, its live edges at every node, by node id (flat, counting sort).
+  void collect_node_edges(int s) {
+    std::vector<std::size_t>& first = first_[s];
+    first.assign(index_.size() + 1, 0);
+    auto each_live_edge_at_node = [&](auto&& visit) {
+      for (std::size_t l = 0; l < ids_[s].size(); ++l) {
+        const std::vector<std::size_t>& ids = ids_[s][l];
+        const std::size_t n = ids.size();
+        for (std::size_t i = 0; i < n; ++i) {
+          if (cancelled_[s][l][i]) continue;
+          const std::size_t a = ids[i], b = ids[(i + 1) % n];
+          if (is_node(a)) visit(a, Incident{index_.point(b), true});
+          if (is_node(b)) visit(b, Incident{index_.point(a), false});
+        }
+      }
+    };
+    each_live_edge_at_node([&first](std::size_t id, const Incident&) { ++first[id + 1]; });
+    for (std::size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
+    incident_[s].resize(first.back());
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    each_live_edge_at_node(
+        [&](std::size_t id, const Incident& e) { incident_[s][fill[id]++] = e; });
+  }
+
+  std::span<const Incident> incident(int s, std::size_t id) const {
+    return {incident_[s].data() + first_[s][id], first_[s][id + 1] - first_[s][id]};
+  }
+
+  Side side_at(std::size_t node, const Point2& w, int other) const;
+  bool bounds_properly(std::size_t node, int other) const;
+  Side side_of_untouched(int s, std::size_t l) const;
+
+  const Boundary (&loops_)[2];
+  detail::PointIndex index_;
+  std::vector<std::vector<std::size_t>> ids_[2];
+  std::vector<std::uint8_t> occurrences_[2];  // per vertex id: 0, 1, or 2 for more
+  std::vector<std::vector<char>> cancelled_[2];
+  std::vector<std::size_t> first_[2];
+  std::vector<Incident> incident_[2];
+};
+
+// Counter-clockwise rank of direction c around v from the ray v -> w: 0 along the ray,
+// 1 strictly left of it, 2 straight back, 3 strictly right.
+int counter_clockwise_rank(const Point2& v, const Point2& w, const Point2& c) {
+  switch (orient2d(v, w, c)) {
+    case Orientation::kCounterClockwise:
+      return 1;
+    case Orientation::kClockwise:
+      return 3;
+    case Orientation::kCollinear:
+      break;
+  }
+  // Collinear: the dot product's sign is far from its rounding.
+  const double dot = (w.x - v.x) * (c.x - v.x) + (w.y - v.y) * (c.y - v.y);
+  return dot > 0.0 ? 0 : 2;
 }
 
-// Where the other operand's boundary runs both ways along one segment, rounding has
-// closed a part of it to zero width: a needle of its region (the two input edges face
-// each other's region side) or a crack in it. The two copies bound nothing, and the
-// region around them is outside a needle, inside a crack. `forward` is the copy running
-// with the stretch, `backward` the other; the backward edge lies on the forward edge's
-// region side exactly for a needle. Empty when the input edges do not tell (the backward
-// edge crosses the forward edge's line).
-std::optional<Side> side_of_collapsed(const InputEdge& forward, const InputEdge& backward) {
-  const Orientation a = orient2d(forward.from, forward.to, backward.from);
-  const Orientation b = orient2d(forward.from, forward.to, backward.to);
-  const Orientation side = a == Orientation::kCollinear ? b : a;
-  if (side == Orientation::kCollinear || (b != Orientation::kCollinear && b != side)) {
-    return std::nullopt;
+// The side of the other operand (`other`) that the edge node -> w lies on, from the other
+// operand's live edges at the node alone: the plane graph is noded, so the edge meets
+// them nowhere else. Turning counter-clockwise from the edge, the first of them met has
+// the region on its left: the edge lies inside when that one arrives at the node (its
+// region is just clockwise of it), outside when it leaves (its region is beyond it). One
+// running along the edge itself is shared with it.
+Side Overlay::side_at(std::size_t node, const Point2& w, int other) const {
+  const Point2& v = index_.point(node);
+  const Incident* first = nullptr;
+  int first_rank = 4;
+  for (const Incident& e : incident(other, node)) {
+    const int rank = counter_clockwise_rank(v, w, e.far);
+    if (rank == 0) return e.leaves ? Side::kSharedSame : Side::kSharedOpposite;
+    if (first == nullptr || rank < first_rank ||
+        (rank == first_rank && rank != 2 &&
+         orient2d(v, first->far, e.far) == Orientation::kClockwise)) {
+      first = &e;
+      first_rank = rank;
+    }
   }
-  return side == Orientation::kCounterClockwise ? Side::kOutside : Side::kInside;
+  if (!bounds_properly(node, other)) {
+    // The other boundary does not pass through here as the boundary of a region does
+    // (snapping folded some of it onto itself): no local picture holds, so the edge is
+    // located exactly against all of it.
+    const Location where = detail::locate_midpoint(v, w, loops_[other]);
+    if (where != Location::kBoundary)
+      return where == Location::kInside ? Side::kInside : Side::kOutside;
+  }
+  return first->leaves ? Side::kOutside : Side::kInside;
 }
 
-ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
-                         const Boundary& other_loops, const PassMap& other_passes,
-                         const SegmentMap& other_segments) {
-  ClassifiedEdges out;
-  auto bucket = [&out](Side s) -> std::vector<DirectedEdge>& {
-    switch (s) {
+// Whether the other operand's live edges at the node alternate, around it, between
+// leaving and arriving, no two along the same ray: how the boundary of a region whose
+// winding number is 0 or 1 passes through a point.
+bool Overlay::bounds_properly(std::size_t node, int other) const {
+  const std::span<const Incident> edges = incident(other, node);
+  if (edges.size() == 2) {
+    if (edges[0].leaves == edges[1].leaves) return false;
+    const Point2& v = index_.point(node);
+    return counter_clockwise_rank(v, edges[0].far, edges[1].far) != 0;
+  }
+  if (edges.size() % 2 != 0) return false;
+  const Point2& v = index_.point(node);
+  std::vector<Incident> around(edges.begin(), edges.end());
+  const Point2 ray = around.front().far;
+  std::sort(around.begin() + 1, around.end(), [&](const Incident& a, const Incident& b) {
+    const int ra = counter_clockwise_rank(v, ray, a.far),
+              rb = counter_clockwise_rank(v, ray, b.far);
+    if (ra != rb) return ra < rb;
+    return ra != 2 && orient2d(v, a.far, b.far) == Orientation::kCounterClockwise;
+  });
+  for (std::size_t i = 0; i < around.size(); ++i) {
+    const Incident& a = around[i];
+    const Incident& b = around[(i + 1) % around.size()];
+    if (a.leaves == b.leaves || counter_clockwise_rank(v, a.far, b.far) == 0) return false;
+  }
+  return true;
+}
+
+// A loop of operand s that meets the other operand nowhere lies wholly on one side: the
+// side of any of its vertices that the other operand does not have (such a vertex lies
+// off its boundary, the graph being noded), else of the middle of an edge.
+Side Overlay::side_of_untouched(int s, std::size_t l) const {
+  const Boundary& other = loops_[1 - s];
+  const Loop2& loop = loops_[s][l];
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    if (occurrences_[1 - s][ids_[s][l][i]] != 0) continue;
+    const Location where = detail::locate(loop[i], other);
+    if (where != Location::kBoundary)
+      return where == Location::kInside ? Side::kInside : Side::kOutside;
+  }
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Location where = detail::locate_midpoint(loop[i], loop[(i + 1) % loop.size()], other);
+    if (where != Location::kBoundary)
+      return where == Location::kInside ? Side::kInside : Side::kOutside;
+  }
+  return Side::kOutside;  // on the other boundary throughout: only cancelled edges are left
+}
+
+Overlay::Classified Overlay::classify(int s) const {
+  Classified out;
+  auto bucket = [&out](Side side) -> std::vector<DirectedEdge>& {
+    switch (side) {
       case Side::kInside:
         return out.inside;
       case Side::kOutside:
@@ -562,59 +320,47 @@ ClassifiedEdges classify(const Boundary& loops, const SplitBoundary& split,
     }
     return out.shared_opposite;
   };
-  for (std::size_t l = 0; l < split.size(); ++l) {
-    const Loop2& input = loops[l];
-    const Loop2& loop = split[l].points;
+  const int other = 1 - s;
+  for (std::size_t l = 0; l < loops_[s].size(); ++l) {
+    const Loop2& loop = loops_[s][l];
+    const std::vector<std::size_t>& ids = ids_[s][l];
+    const std::vector<char>& cancelled = cancelled_[s][l];
     const std::size_t n = loop.size();
-    std::size_t first_node = n;
+    if (n < 2) continue;
+    // A node where the other operand has live edges: a side is decided there.
+    auto deciding = [&](std::size_t i) {
+      return is_node(ids[i]) && !incident(other, ids[i]).empty();
+    };
+    std::size_t start = n;
     for (std::size_t i = 0; i < n; ++i) {
-      if (split[l].node[i]) {
-        first_node = i;
+      if (deciding(i)) {
+        start = i;
         break;
       }
     }
-    if (first_node == n) {
-      // Untouched by the other boundary: the whole loop lies on one side.
-      const bool inside = detail::locate(loop[0], other_loops) == Location::kInside;
-      auto& dst = inside ? out.inside : out.outside;
-      for (std::size_t i = 0; i < n; ++i) dst.push_back({loop[i], loop[(i + 1) % n]});
-      continue;
-    }
-    // Each stretch from a node to the next lies on one side: decide it at its start.
-    std::vector<DirectedEdge>* dst = nullptr;
+    Side side = start == n ? side_of_untouched(s, l) : Side::kOutside;
+    if (start == n) start = 0;
+    // Between nodes the edges touch nothing of the other operand: each keeps the side of
+    // the edge before it. The side of an edge that is a piece of a shared segment is
+    // decided at whichever end is a node.
     for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t i = (first_node + k) % n;
-      const Point2& v = loop[i];
-      const Point2& w = loop[(i + 1) % n];
-      if (split[l].node[i]) {
-        const auto it = other_passes.find(v);
-        const int e = split[l].edge[i];
-        const Point2& e0 = input[e];
-        const Point2& e1 = input[(e + 1) % input.size()];
-        // The same segment in both boundaries (after rounding, whatever the input edges
-        // were) is shared: deciding it any other way would leave the two copies on
-        // different sides of a zero-width gap.
-        const auto same = other_segments.find({v, w});
-        const auto opposite = other_segments.find({w, v});
-        std::optional<Side> collapsed;
-        if (same != other_segments.end() && opposite != other_segments.end()) {
-          collapsed = side_of_collapsed(same->second, opposite->second);
+      const std::size_t i = (start + k) % n;
+      const std::size_t j = (i + 1) % n;
+      if (deciding(i)) {
+        side = side_at(ids[i], loop[j], other);
+      } else if (deciding(j)) {
+        side = side_at(ids[j], loop[i], other);
+        // Seen from the far end, a shared edge runs the other way.
+        if (side == Side::kSharedSame) {
+          side = Side::kSharedOpposite;
+        } else if (side == Side::kSharedOpposite) {
+          side = Side::kSharedSame;
         }
-        if (collapsed) {
-          dst = &bucket(*collapsed);
-        } else if (same != other_segments.end()) {
-          dst = &out.shared_same;
-        } else if (opposite != other_segments.end()) {
-          dst = &out.shared_opposite;
-        } else if (it != other_passes.end() && !merged_crossings(v, it->second)) {
-          dst = &bucket(side_of_edge(v, e0, e1, it->second));
-        } else {
-          // No usable local picture: decide at the middle of the stretch's first edge.
-          dst = detail::locate_midpoint(v, w, other_loops) == Location::kInside ? &out.inside
-                                                                                : &out.outside;
-        }
+      } else if (side == Side::kSharedSame || side == Side::kSharedOpposite) {
+        // Past a shared edge onto one that meets nothing: never, the graph being noded.
+        side = Side::kOutside;
       }
-      dst->push_back({v, w});
+      if (!cancelled[i]) bucket(side).push_back({loop[i], loop[j]});
     }
   }
   return out;
@@ -635,23 +381,17 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   PolygonSet2 a = normalized(subject);
   const PolygonSet2 b = normalized(clip_region);
   if (a.empty()) return result;
-  const Boundary a_loops = self_noded(boundary_of(a));
-  const Boundary b_loops = self_noded(boundary_of(b));
-  if (b.empty() || !overlap(bounds(a_loops), bounds(b_loops))) {
+  Boundary loops[2] = {boundary_of(a), boundary_of(b)};
+  if (b.empty() || !overlap(bounds(loops[0]), bounds(loops[1]))) {
     result.outside = std::move(a);
     return result;
   }
-
-  IntersectionFinder finder(a_loops, b_loops);
-  finder.run();
-  const SplitBoundary a_split = with_insertions(a_loops, finder.insertions[0], &finder.nodes);
-  const SplitBoundary b_split = with_insertions(b_loops, finder.insertions[1], &finder.nodes);
-  const PassMap a_passes = passes_through(a_loops, a_split);
-  const PassMap b_passes = passes_through(b_loops, b_split);
-  const SegmentMap a_segments = node_to_node_segments(a_loops, a_split);
-  const SegmentMap b_segments = node_to_node_segments(b_loops, b_split);
-  const ClassifiedEdges a_edges = classify(a_loops, a_split, b_loops, b_passes, b_segments);
-  const ClassifiedEdges b_edges = classify(b_loops, b_split, a_loops, a_passes, a_segments);
+  // Snapped together, the two boundaries form a plane graph in doubles, and every
+  // decision from here on is exact on it.
+  detail::snap_round(loops);
+  const Overlay overlay(loops);
+  const Overlay::Classified a_edges = overlay.classify(0);
+  const Overlay::Classified b_edges = overlay.classify(1);
 
   // subject ∩ clip: the subject inside the clip, the clip inside the subject, and the
   // shared stretches where both regions lie on the same side (taken once).
@@ -663,33 +403,8 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   std::vector<DirectedEdge> outside_edges = a_edges.outside;
   append_reversed(outside_edges, b_edges.inside);
   append(outside_edges, a_edges.shared_opposite);
-
-  // Rounded crossings may have moved stretches into contact: node them. A crossing an ulp
-  // beside a vertex goes to that vertex (and the edges it moved are noded). And a vertex the
-  // operands bring from earlier clips may lie a rounding off an edge it was made on,
-  // folding the traced boundary back along that edge: snap it onto the edge so the fold
-  // cancels (detail/snap.h). A snapped edge moved by a hair and may now cross a
-  // neighbour: node once more. Then trace.
-  auto is_input = [&a_loops, &b_loops](const Point2& p) {
-    auto on = [&p](const Loop2& loop) { return has_vertex(loop, p); };
-    return std::any_of(a_loops.begin(), a_loops.end(), on) ||
-           std::any_of(b_loops.begin(), b_loops.end(), on);
-  };
-  auto finish = [&finder, &is_input](std::vector<DirectedEdge> edges) {
-    std::unordered_set<Point2, Point2Hash> made;  // by the noding, beside the crossings
-    edges = detail::node_edges(std::move(edges), finder.crossings, nullptr, &made);
-    if (!made.empty()) made.insert(finder.crossings.begin(), finder.crossings.end());
-    std::unordered_set<Point2, Point2Hash> merged;
-    edges = detail::merge_close_vertices(std::move(edges), made.empty() ? finder.crossings : made,
-                                         is_input, merged, &finder.radii);
-    if (!merged.empty()) edges = detail::node_edges(std::move(edges), merged);
-    std::unordered_set<Point2, Point2Hash> snapped;
-    edges = detail::snap_vertices_onto_edges(std::move(edges), nullptr, &snapped);
-    if (!snapped.empty()) edges = detail::node_edges(std::move(edges), snapped);
-    return detail::assemble_polygons(edges);
-  };
-  result.inside = finish(std::move(inside_edges));
-  result.outside = finish(std::move(outside_edges));
+  result.inside = detail::assemble_polygons(inside_edges);
+  result.outside = detail::assemble_polygons(outside_edges);
   return result;
 }
 

@@ -4,28 +4,27 @@
 // 1978, section III): a concave subject with holes against a concave clip with holes,
 // giving both the inside pieces (subject ∩ clip) and the outside pieces (subject − clip).
 //
-// Method. Every crossing and touching point of the two boundaries is inserted into both
-// boundaries. Each stretch of a boundary between two such points lies wholly inside,
-// wholly outside, or along the other region; an exact local test at the stretch's first
-// point decides which (at a proper crossing this is the entry/exit alternation of the
-// paper; at a mere touch it correctly does not alternate). The pieces are then traced:
-// the subject's stretches inside the clip, switching at intersection points onto the
-// clip's stretches inside the subject (reversed, for the outside pieces). Where several
-// traced stretches meet at one point, the walk keeps to the tightest turn, and the loops
-// are split at repeated vertices, so every output loop is simple.
+// Method. The two boundaries are first snap rounded together (detail/snap_rounding.h):
+// every crossing and touching point is inserted into both, as a double, and the step is
+// repeated until the edges meet only at common vertices or as the very same segment.
+// Every later decision is then an exact predicate on that plane graph, with no rounded
+// point left to disagree with it. Each stretch of a boundary between two vertices the
+// boundaries share lies wholly inside, wholly outside, or along the other region; which,
+// is decided at the shared vertex from the other boundary's edges there alone (turning
+// counter-clockwise from the stretch, the first of them met has the region on its left:
+// the stretch is inside when that one arrives, outside when it leaves). That is the
+// entry/exit alternation of the paper, exact at a touch as at a crossing. The pieces are
+// then traced: the subject's stretches inside the clip, switching at shared vertices onto
+// the clip's stretches inside the subject (reversed, for the outside pieces). Where
+// several traced stretches meet at one point, the walk keeps to the tightest turn, and
+// the loops are split at repeated vertices, so every output loop is simple.
 //
 // Input. Any PolygonWithHoles2 / PolygonSet2 whose region is well formed: loops simple,
 // holes inside their outer loop, loops meeting at most at points. Orientation is free
 // (normalized on entry). Repeated vertices, zero-area spikes and collinear vertices are
-// removed first; loops left with no area are dropped.
-//
-// Near-degenerate input. Where rounded crossings fall on an input vertex, the side of a
-// stretch is judged by the input edges that made its node; where several crossings less
-// than a rounding apart merge into one node (a boundary cutting the thin tip of a spike),
-// by exact point location of the stretch's first edge. A clockwise loop that rounding
-// leaves outside every outer loop is a sliver within the rounding bound and is dropped.
-// Self-crossing loops are outside the contract (the result is then unspecified, but the call
-// returns).
+// removed first; loops left with no area are dropped. Self-crossing loops are outside
+// the contract (the result is then unspecified, but the call returns, and its loops are
+// still simple: the snapping nodes them too).
 //
 // Output. Polygons in the conventions of clipper/polygon.h: outer loops counter-
 // clockwise, holes clockwise and attached to the smallest outer loop that contains
@@ -33,37 +32,29 @@
 // straight on are kept: one may be where another loop touches it.
 //
 // Touching loops of one operand (a hole touching its outer loop, polygons of a set
-// meeting at a point) are found first and the touching point made a vertex of both. At a
-// point where several loops of the other operand meet, a stretch is inside where the
-// winding number is 1.
+// meeting at a point) are noded by the same snapping. Where the snapping has run one
+// operand's boundary both ways along a segment (a needle of its region, or a crack,
+// narrower than the resolution below), the two copies cancel: they bound nothing.
 //
-// Exactness and tolerance. Every decision (do two edges cross, does a point lie on an
-// edge, which side is a stretch on) is an exact predicate on the input doubles. Only new
-// intersection points are rounded: each lies within
-//     4u·min(|a1 − a0|, |b1 − b0|) + u·|P|,   u = 2^-53,
-// of the exact crossing P of edges a and b (the parameter is formed from two exact
-// orientation determinants, so the bound does not depend on the crossing angle).
-// Vertices of the inputs are passed through unchanged. Consequently the areas of the
-// pieces differ from the exact ones by at most the sum, over the constructed vertices,
-// of that displacement times the length of the adjacent edges.
+// Exactness and tolerance. Orientation and side tests are exact (predicates.h). New
+// points are the crossings, each coordinate within 5u of its own magnitude of the exact
+// crossing (u = 2^-53; detail/crossing.h), however long the edges and whatever the
+// angle. The one tolerance is the hot pixel of a point (detail/snap.h): the box of six
+// ulps of each coordinate's magnitude around it, derived from that bound. An edge passing
+// through a vertex's pixel is routed through the vertex; vertices in each other's pixels
+// become one; both move the boundary by at most a pixel there. The tolerance is relative
+// to the coordinates' magnitude where the point lies, not to the edge lengths or to
+// coordinates elsewhere: a feature of 1e-9 near the origin is kept beside coordinates of
+// 1e8.
 //
-// Rounding repaired before tracing (detail/edge_noding.h). A rounded crossing can land
-// across a nearby edge or past a vertex; the traced stretches are then noded again where
-// they cross, until none do. And a vertex brought in from an earlier clip, a crossing
-// rounded a hair off the edge it was made on, is taken as lying on any edge within twice
-// the bound above (8u·|edge| + 2u·|P|), so the boundary does not fold back along that edge
-// into a sliver. A crossing constructed within 2u·|P| of another vertex (where exact
-// arithmetic puts it on that vertex) is merged into it, so the boundary does not run out
-// and back through two points an ulp apart, and two crossings nearer each other than the
-// sum of their own error bounds become one (detail/vertex_merge.h). All of these move the
-// boundary by at most those bounds; the tolerances are those derived distances, nothing
-// else.
-//
-// Limit. The placement error of a crossing grows with the length of its edges (4u·L).
-// Where the other operand has features thinner than that along a long edge (a needle
-// 1e8 long crossed within 1e-8 of its other edge), rounded crossings can land out of
-// order and the pieces come out wrong; the fuzzer finds such inputs on raw doubles
-// (README, Limits). Snap rounding of the crossings would lift it.
+// Limit. Where a feature is narrower than the pixels around it (a needle a few ulps
+// wide), the snapping closes it up or folds it onto its neighbours, and some of those
+// folds leave the other operand's boundary running through one point more than twice or
+// over itself. Such a point is decided by exact point location of the stretch instead;
+// what is still inconsistent there is left out of the pieces (the tracing makes no loop
+// of edges that do not close) rather than closed by an edge that is not there. The
+// fuzzer still finds such inputs (README, Limits): the pieces are then valid but their
+// areas can be wrong by more than the pixels account for.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges

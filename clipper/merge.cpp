@@ -3,7 +3,7 @@
 #include <unordered_map>
 
 #include "clipper/detail/boundary_graph.h"
-#include "clipper/detail/edge_noding.h"
+#include "clipper/detail/snap_rounding.h"
 #include "clipper/normalize.h"
 
 namespace shadowgen::clipper {
@@ -26,13 +26,22 @@ struct EdgeKeyHash {
 
 PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons) {
   if (polygons.size() <= 1) return normalized(PolygonSet2(polygons.begin(), polygons.end()));
-  const PolygonSet2 input = normalized(PolygonSet2(polygons.begin(), polygons.end()));
+  // Snapped together (detail/snap_rounding.h), the pieces' boundaries meet only at
+  // common vertices: T-junctions, and seams whose vertices were rounded on either side of
+  // the common line, become runs of segments shared exactly, which cancel below.
+  std::vector<Loop2> loops[2];
+  for (const PolygonWithHoles2& p : normalized(PolygonSet2(polygons.begin(), polygons.end()))) {
+    loops[0].push_back(p.outer);
+    for (const Loop2& h : p.holes) loops[0].push_back(h);
+  }
+  detail::snap_round(loops);
   // Count each directed edge; a reversed copy cancels one.
   std::unordered_map<EdgeKey, int, EdgeKeyHash> count;
-  auto add_loop = [&count](const Loop2& loop) {
+  for (const Loop2& loop : loops[0]) {
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const Point2& a = loop[i];
       const Point2& b = loop[(i + 1) % loop.size()];
+      if (a == b) continue;
       const auto reverse = count.find({b, a});
       if (reverse != count.end() && reverse->second > 0) {
         --reverse->second;
@@ -40,15 +49,11 @@ PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons) {
         ++count[{a, b}];
       }
     }
-  };
-  for (const PolygonWithHoles2& p : input) {
-    add_loop(p.outer);
-    for (const Loop2& h : p.holes) add_loop(h);
   }
   std::vector<detail::DirectedEdge> edges;
   edges.reserve(count.size());
-  // Emit in input order so the result does not depend on hash-table order.
-  auto emit_loop = [&](const Loop2& loop) {
+  // Emitted in input order so the result does not depend on hash-table order.
+  for (const Loop2& loop : loops[0]) {
     for (std::size_t i = 0; i < loop.size(); ++i) {
       const Point2& a = loop[i];
       const Point2& b = loop[(i + 1) % loop.size()];
@@ -58,15 +63,8 @@ PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons) {
         edges.push_back({a, b});
       }
     }
-  };
-  for (const PolygonWithHoles2& p : input) {
-    emit_loop(p.outer);
-    for (const Loop2& h : p.holes) emit_loop(h);
   }
-  // What is left may still meet at T-junctions (a vertex of one piece on an edge of
-  // another, or within a rounding of it): split there, the overlapping stretches cancel
-  // too.
-  return detail::assemble_polygons(detail::snap_vertices_onto_edges(std::move(edges)));
+  return detail::assemble_polygons(edges);
 }
 
 }  // namespace shadowgen::clipper

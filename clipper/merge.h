@@ -9,12 +9,12 @@
 namespace shadowgen::clipper {
 
 // Merges disjoint polygons (interiors not overlapping) along the edges they share: an edge
-// p -> q of one and q -> p of another cancel. Edges that overlap only in part (a
-// T-junction) are first split where a vertex of one lies on the other or within a
-// rounding of it (edge_noding.h: twice the crossing error bound of clip.h), and cancel
-// there too. So pieces clipped apart join along seams their rounding left a hair apart;
-// the joined boundary moves by at most that bound. Where pieces meet otherwise, the
-// result may still hold several polygons where an exact union would hold one.
+// p -> q of one and q -> p of another cancel. The pieces are first snap rounded together
+// (detail/snap_rounding.h), so edges that overlap only in part (a T-junction) or along
+// seams whose vertices were rounded on either side of the common line, within a hot
+// pixel of each other, become runs of the same segments and cancel too; the joined
+// boundary moves by at most a pixel. Where pieces meet otherwise, the result may still
+// hold several polygons where an exact union would hold one.
 PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons);
 
 }  // namespace shadowgen::clipper

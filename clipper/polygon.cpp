@@ -53,7 +53,7 @@ double rounding_area_bound(const Loop2& loop) {
     perimeter += std::hypot(b.x - a.x, b.y - a.y);
     magnitude = std::max({magnitude, std::fabs(a.x), std::fabs(a.y)});
   }
-  return 8.0 * kUnit * (magnitude + 4.0 * perimeter) * perimeter;
+  return 18.0 * kUnit * (magnitude + 4.0 * perimeter) * perimeter;
 }
 
 }  // namespace shadowgen::clipper

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <queue>
 
 #include "clipper/clip.h"
@@ -34,8 +35,8 @@ enum class DepthOrder { kBehindOrTied, kInFront, kCrossing };
 
 class AreaSort {
  public:
-  AreaSort(const std::vector<Nearness>& nearness, HsrStats& stats)
-      : nearness_(nearness), stats_(stats) {}
+  AreaSort(const std::vector<Nearness>& nearness, const std::vector<char>& facing, HsrStats& stats)
+      : nearness_(nearness), facing_(facing), stats_(stats) {}
 
   void run(std::vector<Piece> pieces, std::vector<Fragment>& out) {
     out_ = &out;
@@ -134,6 +135,12 @@ class AreaSort {
       if (d > tol) ahead = true;
       if (d < -tol) behind = true;
     }
+    if (!ahead && !behind && facing_[piece.parent] && !facing_[front_parent]) {
+      // Tied everywhere (coplanar): the side seen from its front shows, whichever of the
+      // two is the template (the ground under a box's floor, seen into the box through
+      // the near plane), so the answer does not depend on the input order.
+      return DepthOrder::kInFront;
+    }
     if (!ahead) return DepthOrder::kBehindOrTied;
     return behind ? DepthOrder::kCrossing : DepthOrder::kInFront;
   }
@@ -212,6 +219,7 @@ class AreaSort {
   }
 
   const std::vector<Nearness>& nearness_;
+  const std::vector<char>& facing_;  // per polygon: seen from its front
   HsrStats& stats_;
   std::vector<Fragment>* out_ = nullptr;
 };
@@ -245,6 +253,7 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const
   stats.input_polygons = polygons.size();
   result.planes.resize(polygons.size());
   result.nearness.resize(polygons.size());
+  std::vector<char> facing(polygons.size(), 0);
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     result.planes[i] = plane_of(polygons[i]);
@@ -258,6 +267,8 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const
       continue;
     }
     result.nearness[i] = *nearness;
+    facing[i] = view.is_perspective() ? view.offset_from_eye(polygons[i].outer, normal) < 0.0
+                                      : glm::dot(normal, view.forward()) < 0.0;
     PolygonSet2 image = project_polygon(polygons[i], view);
     if (image.empty()) {
       ++stats.outside_view;
@@ -267,7 +278,7 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const
     for (PolygonWithHoles2& p : image) pieces.push_back({std::move(p), i});
   }
 
-  AreaSort(result.nearness, stats).run(std::move(pieces), result.fragments);
+  AreaSort(result.nearness, facing, stats).run(std::move(pieces), result.fragments);
   stats.fragments_before_merge = result.fragments.size();
   if (options.merge_fragments) result.fragments = merge_by_parent(std::move(result.fragments));
   // Pieces that meet exactly can get vertices an ulp apart from two chains of clips, each

@@ -20,7 +20,10 @@
 //
 // Depth ties (coplanar overlapping polygons, shared edges in 3D) go to the template:
 // differences of nearness within the rounding bound of evaluating the two planes count
-// as zero. That bound is relative, about 2^-48 of the magnitudes involved.
+// as zero. That bound is relative, about 2^-48 of the magnitudes involved. Where two
+// polygons tie over all of a piece and only one is seen from its front, that one shows,
+// whichever is the template, so coplanar pairs such as the ground and a box's floor do
+// not depend on the input order.
 //
 // Cost. Templates find the polygons they overlap through a uniform grid over image-space
 // bounding boxes (polygons wider than many cells are kept on a short list of their own),

@@ -89,11 +89,17 @@ class Tracer {
             best = c;
           }
         }
-        if (best == kNone || best == start) break;
+        if (best == kNone) {
+          // A dead end: the edges do not close here. No loop is made of them rather
+          // than one closed by an edge that is not there, which could cross others.
+          walk.points.clear();
+          break;
+        }
+        if (best == start) break;
         used_[best] = true;
         e = best;
       }
-      walks.push_back(std::move(walk));
+      if (!walk.points.empty()) walks.push_back(std::move(walk));
     }
     return walks;
   }

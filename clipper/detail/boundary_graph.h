@@ -14,7 +14,9 @@ struct DirectedEdge {
   Point2 to;
 };
 
-// Traces closed loops through the edges. Where several edges leave one point, the walk
+// Traces closed loops through the edges (a walk that ends where no edge leaves, which
+// edges whose every point has as many edges in as out never do, makes no loop). Where
+// several edges leave one point, the walk
 // takes the first one clockwise from the way it came in (the tightest turn around the
 // region on its left), so regions that only touch at a point become separate loops;
 // loops are then split at repeated vertices, rid of spikes (normalize.h's remove_spikes), and

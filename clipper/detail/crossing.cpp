@@ -34,6 +34,12 @@ Point2 crossing_point(const Point2& a_start, const Point2& a_end, const Point2& 
   const double o1 = std::fabs(orient2d_value(q0, q1, p1));
   const double t = o0 / (o0 + o1);
   Point2 p{p0.x + t * (p1.x - p0.x), p0.y + t * (p1.y - p0.y)};
+  // The parameter's error moves the point along the shorter segment by 4u of its length,
+  // and the rounding by u·|P|: within 5u of each coordinate's magnitude only where the
+  // segment is short beside the smaller coordinate. Elsewhere, exactly.
+  const double smaller = std::min(std::fabs(p.x), std::fabs(p.y));
+  const double bound = 4.0 * std::sqrt(std::min(la, lb)) + std::fabs(p.x) + std::fabs(p.y);
+  if (!(bound <= 4.0 * smaller)) p = crossing_point_exact(p0, p1, q0, q1);
   const double xlo = std::max(std::min(a0.x, a1.x), std::min(b0.x, b1.x));
   const double xhi = std::min(std::max(a0.x, a1.x), std::max(b0.x, b1.x));
   const double ylo = std::max(std::min(a0.y, a1.y), std::min(b0.y, b1.y));
@@ -41,41 +47,6 @@ Point2 crossing_point(const Point2& a_start, const Point2& a_end, const Point2& 
   p.x = std::clamp(p.x, xlo, xhi);
   p.y = std::clamp(p.y, ylo, yhi);
   return p;
-}
-
-ExactlyAlongSegment::ExactlyAlongSegment(const Point2& e0, const Point2& e1)
-    : e0_(e0), e1_(e1), along_(e0, e1), by_x_(std::fabs(e1.x - e0.x) >= std::fabs(e1.y - e0.y)) {}
-
-double ExactlyAlongSegment::rounding(const EdgePoint& p) const {
-  if (!p.crossing) return 0.0;
-  constexpr double u = 0x1p-53;
-  const double length = std::fabs(e1_.x - e0_.x) + std::fabs(e1_.y - e0_.y);
-  const double magnitude = std::fabs(p.point.x) + std::fabs(p.point.y);
-  return 4.0 * u * length + u * magnitude;  // 1-norms: above the Euclidean bound
-}
-
-// -1 when a's exact point comes first, 1 when b's does, 0 when they are the same point.
-int ExactlyAlongSegment::exact_order(const EdgePoint& a, const EdgePoint& b) const {
-  if (b.crossing) {
-    // a comes first when its exact point lies strictly on e0's side of b's segment.
-    const Orientation start = orient2d(b.f0, b.f1, e0_);
-    const Orientation side = a.crossing ? orient2d_crossing(b.f0, b.f1, e0_, e1_, a.f0, a.f1)
-                                        : orient2d(b.f0, b.f1, a.point);
-    if (side == Orientation::kCollinear) return 0;
-    return side == start ? -1 : 1;
-  }
-  if (a.crossing) return -exact_order(b, a);
-  if (a.point == b.point) return 0;
-  return along_(a.point, b.point) ? -1 : 1;  // both exactly on the segment
-}
-
-bool ExactlyAlongSegment::operator()(const EdgePoint& a, const EdgePoint& b) const {
-  const double ua = by_x_ ? a.point.x : a.point.y;
-  const double ub = by_x_ ? b.point.x : b.point.y;
-  if (std::fabs(ua - ub) > rounding(a) + rounding(b)) return along_(a.point, b.point);
-  const int order = exact_order(a, b);
-  if (order != 0) return order < 0;
-  return along_(a.point, b.point);
 }
 
 }  // namespace shadowgen::clipper::detail

@@ -10,11 +10,16 @@
 namespace shadowgen::clipper::detail {
 
 // Segments a0-a1 and b0-b1 must cross properly (each strictly separates the other's
-// endpoints). The parameter along the shorter segment is |o0| / (|o0| + |o1|), from two
-// exact orientation determinants of opposite sign rounded once each, so it is accurate
-// to a few ulps whatever the angle. The result is kept inside both segments' boxes and
-// does not depend on the order of the two segments or of their endpoints (an edge and
-// its reverse give the same point).
+// endpoints). Each coordinate of the result lies within 5u of its own magnitude,
+//     |x − P.x| ≤ 5u·|P.x|,  |y − P.y| ≤ 5u·|P.y|,   u = 2^-53,
+// of the exact crossing P, whatever the angle and however long the segments. Where the
+// shorter segment is short beside the smaller coordinate this comes from the parameter
+// along it, |o0| / (|o0| + |o1|) from two exact orientation determinants of opposite sign
+// rounded once each, accurate to a few ulps (error 4u·|segment| + u·(|P.x| + |P.y|));
+// elsewhere (long edges, crossings near an axis) from exact determinants throughout
+// (predicates.h). The
+// result is kept inside both segments' boxes and does not depend on the order of the two
+// segments or of their endpoints (an edge and its reverse give the same point).
 Point2 crossing_point(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1);
 
 // The order of points along the segment p -> q, for points on it or rounded crossings a
@@ -39,36 +44,6 @@ class AlongSegment {
 
  private:
   bool by_x_, main_ascending_, other_ascending_;
-};
-
-// A point inserted into the segment e0 -> e1: a vertex lying exactly on it, or the
-// rounded crossing with the segment f0-f1 (crossing true).
-struct EdgePoint {
-  Point2 point;
-  bool crossing = false;
-  Point2 f0{}, f1{};
-};
-
-// The exact order of such points along e0 -> e1: the order of the exact points they
-// stand for, not of their rounded coordinates. Two crossings of one edge less than a
-// rounding apart (an edge passing within an ulp of the other operand's vertex crosses
-// both of its edges) can round in the opposite order; traced in that order, the stretch
-// between them is taken for the one beyond, and the boundary is wrong far from there.
-// Points farther apart than their rounding (4u·|e| + u·|P| each, clip.h) are ordered by
-// AlongSegment, which agrees; closer ones by exact predicates (orient2d_crossing); the
-// same exact point, by AlongSegment again.
-class ExactlyAlongSegment {
- public:
-  ExactlyAlongSegment(const Point2& e0, const Point2& e1);
-  bool operator()(const EdgePoint& a, const EdgePoint& b) const;
-
- private:
-  double rounding(const EdgePoint& p) const;
-  int exact_order(const EdgePoint& a, const EdgePoint& b) const;
-
-  Point2 e0_, e1_;
-  AlongSegment along_;
-  bool by_x_;
 };
 
 }  // namespace shadowgen::clipper::detail

@@ -6,35 +6,53 @@
 #include "clipper/predicates.h"
 
 namespace shadowgen::clipper::detail {
+namespace {
 
-double snap_distance(const Point2& e0, const Point2& e1) {
-  constexpr double kUnit = 0x1p-53;
-  // Not hypot: coordinates are below 1e150 (predicates.h), so the squares cannot
-  // overflow, and sqrt is several times cheaper on this hot path.
-  const double dx = e1.x - e0.x, dy = e1.y - e0.y;
-  const double length = std::sqrt(dx * dx + dy * dy);
-  const double magnitude =
-      std::max({std::fabs(e0.x), std::fabs(e0.y), std::fabs(e1.x), std::fabs(e1.y)});
-  return 2.0 * (4.0 * kUnit * length + kUnit * magnitude);
+constexpr double kHalfWidth = 12.0 * 0x1p-53;
+
+bool in_pixel(const Point2& p, const Pixel& box) {
+  return p.x >= box.xmin && p.x <= box.xmax && p.y >= box.ymin && p.y <= box.ymax;
+}
+
+}  // namespace
+
+Pixel hot_pixel(const Point2& p) {
+  const double hx = kHalfWidth * std::fabs(p.x), hy = kHalfWidth * std::fabs(p.y);
+  return {p.x - hx, p.x + hx, p.y - hy, p.y + hy};
+}
+
+double snap_distance(const Point2& p) {
+  return kHalfWidth * std::max(std::fabs(p.x), std::fabs(p.y));
+}
+
+bool within_snap_distance(const Point2& p, const Point2& q) {
+  if (p == q) return false;
+  return in_pixel(q, hot_pixel(p)) || in_pixel(p, hot_pixel(q));
 }
 
 bool within_snap_distance(const Point2& v, const Point2& e0, const Point2& e1) {
   if (v == e0 || v == e1) return false;
   const double dx = e1.x - e0.x, dy = e1.y - e0.y;
-  const double length2 = dx * dx + dy * dy;
-  const double t = ((v.x - e0.x) * dx + (v.y - e0.y) * dy) / length2;
-  if (!(t > 0.0 && t < 1.0)) return false;
-  // |cross| / |edge| is the distance. The cross product in doubles is within
-  // 4u·permanent of the exact one (orient2d's filter); only where that leaves the
-  // comparison with the threshold open is it evaluated exactly.
-  const double threshold = snap_distance(e0, e1) * std::sqrt(length2);
-  const double left = dx * (v.y - e0.y), right = dy * (v.x - e0.x);
-  const double cross = std::fabs(left - right);
-  const double error = 0x1p-51 * (std::fabs(left) + std::fabs(right));
-  if (cross - error > threshold) return false;
-  if (orient2d(e0, e1, v) == Orientation::kCollinear) return true;
-  if (cross + error <= threshold) return true;
-  return std::fabs(orient2d_value(e0, e1, v)) <= threshold;
+  // Strictly between the ends by projection, measured from each end: from the far one
+  // alone, a point a hair before the near end (relative to the edge's length) rounds to
+  // the end itself.
+  const double from_start = (v.x - e0.x) * dx + (v.y - e0.y) * dy;
+  const double from_end = (e1.x - v.x) * dx + (e1.y - v.y) * dy;
+  if (!(from_start > 0.0 && from_end > 0.0)) return false;
+  const Pixel box = hot_pixel(v);
+  if (std::max(e0.x, e1.x) < box.xmin || std::min(e0.x, e1.x) > box.xmax ||
+      std::max(e0.y, e1.y) < box.ymin || std::min(e0.y, e1.y) > box.ymax) {
+    return false;
+  }
+  // The edge's line misses the box when all four corners lie strictly on one side. In
+  // doubles first: the corners' determinants far from zero are decided by the filter.
+  const Orientation o = orient2d(e0, e1, v);
+  if (o == Orientation::kCollinear) return true;
+  for (const Point2& corner : {Point2{box.xmin, box.ymin}, Point2{box.xmax, box.ymin},
+                               Point2{box.xmin, box.ymax}, Point2{box.xmax, box.ymax}}) {
+    if (orient2d(e0, e1, corner) != o) return true;
+  }
+  return false;
 }
 
 }  // namespace shadowgen::clipper::detail

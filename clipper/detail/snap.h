@@ -1,19 +1,34 @@
 #pragma once
 
-// The one tolerance of the clipper: how far a vertex may lie off an edge and still be
-// taken as lying on it. It is derived, not chosen: twice the error bound of one rounded
-// crossing point (clip.h), 2·(4u·|edge| + u·|P|) with u = 2^-53 and |P| the largest
-// coordinate magnitude of the edge. A vertex that an earlier clip constructed on an edge
-// lies within it; anything farther is a genuine feature and is left alone.
+// The one tolerance of the clipper: how near two points, or a point and an edge, may lie
+// and still be taken as meeting. Each point p owns a hot pixel, the box
+//     |x − p.x| ≤ 12u·|p.x|,  |y − p.y| ≤ 12u·|p.y|,   u = 2^-53,
+// six ulps of each coordinate's own magnitude: it does not grow with the length of an
+// edge, nor with the other coordinate, nor with coordinates elsewhere. It is derived,
+// not chosen: each coordinate of a rounded crossing lies within 5u of its own magnitude
+// of the exact one (detail/crossing.h), so the exact crossing lies in the rounded one's
+// pixel, and every edge passing through that pixel must be routed through the crossing,
+// or the rounding could carry it across that edge and turn the boundary between them
+// inside out. Anything farther is a genuine feature and is left alone.
 
 #include "clipper/point.h"
 
 namespace shadowgen::clipper::detail {
 
-double snap_distance(const Point2& e0, const Point2& e1);
+struct Pixel {
+  double xmin, xmax, ymin, ymax;
+};
+Pixel hot_pixel(const Point2& p);
 
-// Whether v lies strictly between the edge's ends (by projection) and within
-// snap_distance of the segment (exactly on it included).
+// The largest half-width of p's pixel: a margin for candidate searches.
+double snap_distance(const Point2& p);
+
+// Whether p and q (distinct) meet: one lies in the other's pixel.
+bool within_snap_distance(const Point2& p, const Point2& q);
+
+// Whether v lies strictly between the edge's ends (by projection) and the edge passes
+// through v's pixel (exactly through v included). Decided by exact orientation tests on
+// the pixel's corners.
 bool within_snap_distance(const Point2& v, const Point2& e0, const Point2& e1);
 
 }  // namespace shadowgen::clipper::detail

@@ -414,7 +414,8 @@ TEST(Clip, BothCrossingsOfACornerRoundedOntoIt) {
 // rounding off that edge (tests/clipper/regressions/vertex-a-rounding-off-the-subject-
 // edge.wkt). Exactly, the outside piece would run along the whole edge and fold back to
 // that vertex, a sliver of area ~1e-17 whose fold, lifted back into 3D, crosses itself.
-// The vertex is snapped onto the edge (edge_noding.h): the piece turns there instead.
+// The edge passes through the vertex's hot pixel and is routed through it
+// (detail/snap.h): the piece turns there instead.
 TEST(Clip, VertexARoundingOffAnEdgeIsTakenAsOnIt) {
   const Point2 a{-0.86647634128116846, -2.0078308440393733};
   const Point2 b{0.1956559480312316, -0.24372513135738061};

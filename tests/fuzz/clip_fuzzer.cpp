@@ -190,12 +190,15 @@ class ClipCase {
         out_each.add(twice_area(piece.outside), 1);
         tol_each += tolerance(piece.inside) + tolerance(piece.outside);
       }
+      // The overload drops pieces within their own rounding bound that a step made
+      // (clip.h); any such sliver of clip(S, C) may be missing from the sum.
+      const double droppable = 2 * (sliver_area(forward.inside) + sliver_area(forward.outside));
       expect_equal("multi-clip", "sum over P of area(P & (C ++ C)) = area(S & C)",
-                   {{&in_each, 1}, {&in_sc, -1}}, tol_each + tol_in_sc + 3 * vanished_piece_floor_,
-                   forward);
+                   {{&in_each, 1}, {&in_sc, -1}},
+                   tol_each + tol_in_sc + 3 * vanished_piece_floor_ + droppable, forward);
       expect_equal("multi-clip", "sum over P of area(P - (C ++ C)) = area(S - C)",
                    {{&out_each, 1}, {&out_sc, -1}},
-                   tol_each + tol_out_sc + 3 * vanished_piece_floor_, forward);
+                   tol_each + tol_out_sc + 3 * vanished_piece_floor_ + droppable, forward);
     }
 
     if (std::getenv("SHADOWGEN_FUZZ_VERBOSE") != nullptr) {
@@ -226,6 +229,17 @@ class ClipCase {
       const Point2& next = loop[(i + 1) % loop.size()];
       longest_edge_ = std::max(longest_edge_, std::hypot(next.x - loop[i].x, next.y - loop[i].y));
     }
+  }
+
+  // The area of the pieces no larger than their own rounding bound: the slivers the
+  // overload with a list of clips may drop.
+  static double sliver_area(const PolygonSet2& set) {
+    double total = 0.0;
+    for (const PolygonWithHoles2& polygon : set) {
+      const double a = std::fabs(clipper::area(polygon));
+      if (a <= clipper::rounding_area_bound(polygon.outer)) total += a;
+    }
+    return total;
   }
 
   // Pairs of a subject edge and a clip edge that share a point: at most the number of

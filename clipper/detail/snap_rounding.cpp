@@ -1,0 +1,391 @@
+#include "clipper/detail/snap_rounding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+
+#include "clipper/detail/close_pairs.h"
+#include "clipper/detail/crossing.h"
+#include "clipper/detail/snap.h"
+#include "clipper/predicates.h"
+
+namespace shadowgen::clipper::detail {
+namespace {
+
+// Rounds after which the snapping stops. A round looks only at what the previous one
+// changed; a second round finds something on near-degenerate input only, a third was
+// seen on adversarial input alone. The bound keeps the cost finite whatever the input.
+constexpr int kMaxRounds = 16;
+
+using PointSet = std::unordered_set<Point2, Point2Hash>;
+
+double distance(const Point2& p, const Point2& q) { return std::hypot(q.x - p.x, q.y - p.y); }
+
+bool properly_cross(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
+  const Orientation oa0 = orient2d(b0, b1, a0);
+  const Orientation oa1 = orient2d(b0, b1, a1);
+  if (oa0 == Orientation::kCollinear || oa1 == Orientation::kCollinear || oa0 == oa1) return false;
+  const Orientation ob0 = orient2d(a0, a1, b0);
+  const Orientation ob1 = orient2d(a0, a1, b1);
+  return ob0 != Orientation::kCollinear && ob1 != Orientation::kCollinear && ob0 != ob1;
+}
+
+// Whether v lies strictly between the ends of a0-a1 by projection and within d of it.
+bool within_distance(const Point2& v, const Point2& a0, const Point2& a1, double d) {
+  if (v == a0 || v == a1) return false;
+  const double dx = a1.x - a0.x, dy = a1.y - a0.y;
+  const double from_start = (v.x - a0.x) * dx + (v.y - a0.y) * dy;
+  const double from_end = (a1.x - v.x) * dx + (a1.y - v.y) * dy;
+  if (!(from_start > 0.0 && from_end > 0.0)) return false;
+  return std::fabs(orient2d_value(a0, a1, v)) <= d * std::sqrt(dx * dx + dy * dy);
+}
+
+// How far p lies from the line through a0 and a1, rounded up.
+double distance_to_line(const Point2& p, const Point2& a0, const Point2& a1) {
+  if (orient2d(a0, a1, p) == Orientation::kCollinear) return 0.0;
+  const double dx = a1.x - a0.x, dy = a1.y - a0.y;
+  return 1.0001 * std::fabs(orient2d_value(a0, a1, p)) / std::sqrt(dx * dx + dy * dy);
+}
+
+// An input edge, and the points it is routed through.
+struct Segment {
+  Point2 from, to;
+  Loop2 route;  // interior points, in order from `from` to `to`
+};
+
+// A piece of a route: the edge between two consecutive points of it.
+struct Piece {
+  Point2 from, to;
+  std::uint32_t segment;
+  std::uint32_t position;  // it ends at route[position], or at the segment's end
+  double margin;           // how far a point meeting it can lie from its box
+  double deviation;        // how far it may lie from its segment's line (at its ends, at most)
+  bool fresh;              // made or moved in the last round
+};
+
+bool in_box(const Point2& p, const Piece& e) {
+  return p.x >= std::min(e.from.x, e.to.x) - e.margin &&
+         p.x <= std::max(e.from.x, e.to.x) + e.margin &&
+         p.y >= std::min(e.from.y, e.to.y) - e.margin &&
+         p.y <= std::max(e.from.y, e.to.y) + e.margin;
+}
+
+// What one round finds: points each segment must be routed through, and vertices to
+// merge.
+struct Contacts {
+  std::vector<std::pair<std::uint32_t, Point2>> through;  // piece, point
+  std::vector<std::pair<Point2, Point2>> merges;
+  std::size_t crossings = 0;
+};
+
+class Finder {
+ public:
+  Finder(const std::vector<Piece>& pieces, const std::vector<Segment>& segments, Contacts& found)
+      : pieces_(pieces), segments_(segments), found_(found) {}
+
+  void find(std::size_t i, std::size_t j) {
+    const Piece& a = pieces_[i];
+    const Piece& b = pieces_[j];
+    // Vertices in each other's pixels become one: first, as the other contacts of the
+    // two pieces change with it. (Each asked, none skipped: every merge is recorded.)
+    const bool m0 = merge(a.from, b.from), m1 = merge(a.from, b.to);
+    const bool m2 = merge(a.to, b.from), m3 = merge(a.to, b.to);
+    if (m0 || m1 || m2 || m3) return;
+    // A vertex of one in the other's way: the other's segment is routed through it. The
+    // two then share that vertex and cannot cross: no crossing is made, which would only
+    // be rounded a hair from it (two nearly parallel edges, crossed again and again by
+    // the rounding of each new crossing, would never settle).
+    const bool s0 = snap(a.from, j), s1 = snap(a.to, j), s2 = snap(b.from, i), s3 = snap(b.to, i);
+    if (s0 || s1 || s2 || s3) return;
+    if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) return;
+    if (properly_cross(a.from, a.to, b.from, b.to)) cross(i, j);
+  }
+
+ private:
+  bool merge(const Point2& p, const Point2& q) {
+    if (!within_snap_distance(p, q)) return false;
+    found_.merges.emplace_back(p, q);
+    return true;
+  }
+
+  // Whether v lies in piece e's way: e passes through v's pixel (exactly through v
+  // included), or v lies between e and its segment's line, nearer e than e moved from it
+  // (e moved when routed through a vertex off its segment, by up to that vertex's pixel,
+  // which far from the origin is wider than the pixels of vertices it passes nearer the
+  // origin; such a vertex would otherwise end on the wrong side of e, and a needle of
+  // the input turn over there).
+  bool snap(const Point2& v, std::size_t piece) {
+    const Piece& e = pieces_[piece];
+    if (!in_box(v, e)) return false;
+    const Segment& s = segments_[e.segment];
+    const bool in_way = within_snap_distance(v, e.from, e.to) ||
+                        (e.deviation > 0.0 && within_distance(v, e.from, e.to, e.deviation) &&
+                         orient2d(s.from, s.to, v) != Orientation::kCollinear);
+    if (!in_way) return false;
+    found_.through.emplace_back(static_cast<std::uint32_t>(piece), v);
+    return true;
+  }
+
+  // The rounded crossing of two properly crossing pieces routes both segments through
+  // it. Where the segments themselves cross, near the pieces, their crossing is taken: it
+  // lies within rounding of both input lines, which the pieces' crossing need not. A
+  // crossing in the pixel of an endpoint of the pieces is that endpoint (the nearest,
+  // then the least): rounded there, nothing tells the two apart.
+  void cross(std::size_t i, std::size_t j) {
+    const Piece& a = pieces_[i];
+    const Piece& b = pieces_[j];
+    const Segment& sa = segments_[a.segment];
+    const Segment& sb = segments_[b.segment];
+    Point2 p = crossing_point(a.from, a.to, b.from, b.to);
+    if (a.deviation > 0.0 || b.deviation > 0.0) {
+      if (properly_cross(sa.from, sa.to, sb.from, sb.to)) {
+        const Point2 q = crossing_point(sa.from, sa.to, sb.from, sb.to);
+        if (in_box(q, a) && in_box(q, b)) p = q;
+      }
+    }
+    const Point2* nearest = nullptr;
+    double nearest_distance = INFINITY;
+    for (const Point2* end : {&a.from, &a.to, &b.from, &b.to}) {
+      if (*end != p && !within_snap_distance(p, *end)) continue;
+      const double d = distance(p, *end);
+      if (d < nearest_distance || (d == nearest_distance && *end < *nearest)) {
+        nearest = end;
+        nearest_distance = d;
+      }
+    }
+    if (nearest != nullptr) {
+      p = *nearest;
+    } else {
+      ++found_.crossings;
+    }
+    found_.through.emplace_back(static_cast<std::uint32_t>(i), p);
+    found_.through.emplace_back(static_cast<std::uint32_t>(j), p);
+  }
+
+  const std::vector<Piece>& pieces_;
+  const std::vector<Segment>& segments_;
+  Contacts& found_;
+};
+
+class SnapRounder {
+ public:
+  explicit SnapRounder(const std::vector<Loop2> (&loops)[2]) {
+    for (int side = 0; side < 2; ++side) {
+      for (const Loop2& loop : loops[side]) {
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+          segments_.push_back({loop[i], loop[i + 1 == loop.size() ? 0 : i + 1], {}});
+        }
+      }
+    }
+    changed_.assign(segments_.size(), 1);
+  }
+
+  SnapRoundingStats run() {
+    SnapRoundingStats stats;
+    for (int round = 0;; ++round) {
+      build_pieces();
+      Contacts found;
+      Finder finder(pieces_, segments_, found);
+      // Pairs of unchanged pieces were looked at when the younger of them was made.
+      for_each_close_pair(
+          pieces_, [this](std::size_t i) { return pieces_[i].margin; },
+          [this](std::size_t i) { return pieces_[i].fresh; },
+          [&finder](std::size_t i, std::size_t j) { finder.find(i, j); });
+      stats.crossings += found.crossings;
+      const bool merged = apply_merges(found.merges);
+      // Each point goes into the piece it was found on, once per segment: a point already
+      // on the route (where an earlier round put it) is a contact the route cannot
+      // resolve further, and is left as it is, so no two points can take turns.
+      struct Insertion {
+        std::uint32_t segment, position;
+        Point2 at;
+      };
+      std::vector<Insertion> insertions;
+      for (const auto& [piece, point] : found.through) {
+        const Piece& e = pieces_[piece];
+        const Segment& s = segments_[e.segment];
+        const Point2 r = resolve(point);
+        if (r == resolve(s.from) || r == resolve(s.to) ||
+            std::find(s.route.begin(), s.route.end(), r) != s.route.end()) {
+          continue;
+        }
+        insertions.push_back({e.segment, e.position, r});
+      }
+      const bool added = !insertions.empty();
+      insert(insertions);
+      if (!merged && !added) break;
+      if (round == kMaxRounds) {
+        stats.converged = false;
+        break;
+      }
+      ++stats.rounds;
+      stats.splits += insertions.size();
+      if (merged) {
+        std::fill(changed_.begin(), changed_.end(), 1);
+        resolve_routes();
+      }
+    }
+    return stats;
+  }
+
+  // The loops, each edge replaced by its route.
+  void write_back(std::vector<Loop2> (&loops)[2]) const {
+    std::size_t k = 0;
+    for (int side = 0; side < 2; ++side) {
+      for (Loop2& loop : loops[side]) {
+        const std::size_t n = loop.size();
+        Loop2 out;
+        out.reserve(n);
+        auto push = [&out](const Point2& p) {
+          if (out.empty() || out.back() != p) out.push_back(p);
+        };
+        for (std::size_t i = 0; i < n; ++i, ++k) {
+          const Segment& s = segments_[k];
+          push(resolve(s.from));
+          for (const Point2& p : s.route) push(p);
+        }
+        while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+        loop = std::move(out);
+      }
+      // Loops merged into a single point bound nothing.
+      std::erase_if(loops[side], [](const Loop2& loop) { return loop.size() < 2; });
+    }
+  }
+
+ private:
+  Point2 resolve(const Point2& p) const {
+    const auto it = to_.find(p);
+    return it == to_.end() ? p : it->second;
+  }
+
+  // The pieces of every route; those of routes changed in the last round are fresh.
+  void build_pieces() {
+    pieces_.clear();
+    for (std::uint32_t k = 0; k < segments_.size(); ++k) {
+      const Segment& s = segments_[k];
+      const bool fresh = changed_[k] != 0;
+      Point2 from = resolve(s.from);
+      std::uint32_t position = 0;
+      auto add = [&](const Point2& to) {
+        const std::uint32_t at = position++;
+        if (to == from) return;
+        const bool moved = from != s.from || to != s.to;
+        // A point within its pixel of the piece lies in the piece's box grown by that
+        // pixel, so its magnitude is at most a hair above the piece's own.
+        double deviation = 0.0;
+        if (moved) {
+          deviation = std::min(
+              std::max(distance_to_line(from, s.from, s.to), distance_to_line(to, s.from, s.to)),
+              2.0 * std::max(snap_distance(from), snap_distance(to)));
+        }
+        const double margin =
+            std::max(1.25 * std::max(snap_distance(from), snap_distance(to)), deviation);
+        pieces_.push_back({from, to, k, at, margin, deviation, fresh});
+        from = to;
+      };
+      for (const Point2& p : s.route) add(p);
+      add(resolve(s.to));
+    }
+    std::fill(changed_.begin(), changed_.end(), 0);
+  }
+
+  // Merges vertices in each other's pixels. Each goes to a partner of its own merge,
+  // never along a chain of them (a chain of vertices each within a pixel of the next
+  // spans more than a pixel, and a vertex carried that far can cross an edge and turn the
+  // boundary over): of two, the one with the wider pixel stays, then the least. Returns
+  // whether any vertex moved.
+  bool apply_merges(const std::vector<std::pair<Point2, Point2>>& merges) {
+    bool moved = false;
+    std::vector<std::pair<Point2, Point2>> pairs;
+    for (const auto& [p, q] : merges) {
+      const Point2 rp = resolve(p), rq = resolve(q);
+      if (rp == rq || !within_snap_distance(rp, rq)) continue;
+      pairs.emplace_back(std::min(rp, rq), std::max(rp, rq));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (const auto& [p, q] : pairs) {
+      const Point2 rp = resolve(p), rq = resolve(q);
+      if (rp == rq || !within_snap_distance(rp, rq)) continue;
+      const double sp = snap_distance(rp), sq = snap_distance(rq);
+      const bool keep_p = sp != sq ? sp > sq : rp < rq;
+      const Point2 stay = keep_p ? rp : rq, go = keep_p ? rq : rp;
+      // Whatever went to `go` goes on to `stay`, so resolve stays one lookup.
+      for (auto& entry : to_) {
+        if (entry.second == go) entry.second = stay;
+      }
+      to_[go] = stay;
+      moved = true;
+    }
+    return moved;
+  }
+
+  // Puts each point into its piece, points into one piece in order along it.
+  template <typename Insertion>
+  void insert(std::vector<Insertion>& insertions) {
+    std::sort(insertions.begin(), insertions.end(), [](const Insertion& a, const Insertion& b) {
+      return a.segment != b.segment ? a.segment < b.segment : a.position < b.position;
+    });
+    for (std::size_t g = 0; g < insertions.size();) {
+      const std::uint32_t k = insertions[g].segment;
+      std::size_t end = g;
+      while (end < insertions.size() && insertions[end].segment == k) ++end;
+      Segment& s = segments_[k];
+      Loop2 route;
+      route.reserve(s.route.size() + (end - g));
+      std::size_t next = g;
+      for (std::uint32_t position = 0; position <= s.route.size(); ++position) {
+        const Point2 from = position == 0 ? resolve(s.from) : s.route[position - 1];
+        const Point2 to = position == s.route.size() ? resolve(s.to) : s.route[position];
+        const std::size_t first = next;
+        while (next < end && insertions[next].position == position) ++next;
+        const AlongSegment along(from, to);
+        std::sort(insertions.begin() + static_cast<std::ptrdiff_t>(first),
+                  insertions.begin() + static_cast<std::ptrdiff_t>(next),
+                  [&along](const Insertion& a, const Insertion& b) { return along(a.at, b.at); });
+        for (std::size_t m = first; m < next; ++m) {
+          const Point2& p = insertions[m].at;
+          if ((route.empty() ? from : route.back()) != p && p != to) route.push_back(p);
+        }
+        if (position < s.route.size() && (route.empty() || route.back() != to)) route.push_back(to);
+      }
+      s.route = std::move(route);
+      changed_[k] = 1;
+      g = end;
+    }
+  }
+
+  // Every route with its merged points replaced, repeats and its own ends dropped.
+  void resolve_routes() {
+    for (Segment& s : segments_) {
+      const Point2 from = resolve(s.from), to = resolve(s.to);
+      Loop2 route;
+      route.reserve(s.route.size());
+      for (const Point2& p : s.route) {
+        const Point2 r = resolve(p);
+        if (r == from || r == to || (!route.empty() && route.back() == r)) continue;
+        route.push_back(r);
+      }
+      s.route = std::move(route);
+    }
+  }
+
+  std::vector<Segment> segments_;
+  std::vector<char> changed_;
+  std::vector<Piece> pieces_;
+  std::unordered_map<Point2, Point2, Point2Hash> to_;  // merged vertex -> the one it became
+};
+
+}  // namespace
+
+void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats) {
+  SnapRounder rounder(loops);
+  const SnapRoundingStats local = rounder.run();
+  rounder.write_back(loops);
+  if (stats != nullptr) *stats = local;
+}
+
+}  // namespace shadowgen::clipper::detail
