@@ -17,17 +17,19 @@
 //
 // Areas are exact (exact_area.h), so the only slack is the one clip.h grants: each
 // constructed vertex v lies within
-//     delta_v = 4u·L + u·|v|,   u = 2^-53, L = the longest input edge,
-// of its exact position, and moving it changes twice a loop's area by at most
-// delta_v·(|e_prev| + |e_next| + delta_v), e_prev and e_next its two edges. The tolerance
-// of an area identity is twice the sum of that over the output vertices involved (a
-// factor 2 of safety). A crossing may round onto an input vertex and be merged with it,
+//     delta_v = 4u·L + 17u·|v|,   u = 2^-53, L = the longest input edge,
+// of its exact position (its crossing's rounding, within its hot pixel of 12u of each
+// coordinate's magnitude, whose half-diagonal is below 17u·|v|), and moving it changes
+// twice a loop's area by at most delta_v·(|e_prev| + |e_next| + delta_v), e_prev and
+// e_next its two edges. The tolerance of an area identity is twice the sum of that over
+// the output vertices involved (a factor 2 of safety). A crossing may round onto an
+// input vertex and be merged with it,
 // so every output vertex counts as constructed, except in grid mode: there an exact
 // crossing that is not a grid point lies at least 1/512 from one, so an output vertex
 // equal to an input vertex is exact, and with no other vertex the areas must agree
 // exactly. In terms of the coordinates' magnitude M = max |coordinate|: L and every edge
-// are at most 2√2·M long and |v| ≤ √2·M, so the tolerance on an area is below 72·V·u·M²
-// for V output vertices (about 8e-15·V·M²). Off the grid a piece of the exact result may
+// are at most 2√2·M long and |v| ≤ √2·M, so the tolerance on an area is below 200·V·u·M²
+// for V output vertices (about 2.2e-14·V·M²). Off the grid a piece of the exact result may
 // also be thin enough to vanish when its crossings round; its area is bounded the same
 // way by its own constructed vertices, so each identity gets a floor of
 // 2·K·delta_max·(2L + delta_max), K being the number of subject and clip edges that meet,
@@ -136,7 +138,8 @@ class ClipCase {
       // (resolution.h), and counts as such a meeting.
       const double meeting_edges = static_cast<double>(
           count_meeting_edges() + count_sub_resolution_pairs(input.subject, input.clip));
-      const double delta_max = 4 * kUnitRoundoff * longest_edge_ + kUnitRoundoff * farthest_vertex_;
+      const double delta_max =
+          4 * kUnitRoundoff * longest_edge_ + 17 * kUnitRoundoff * farthest_vertex_;
       vanished_piece_floor_ = 2 * meeting_edges * delta_max * (2 * longest_edge_ + delta_max);
       // An input loop whose area is within its own rounding bound is, to the clipper, a
       // sliver rounding may have made, and may be dropped (clip.h): all of it may vanish.
@@ -349,7 +352,7 @@ class ClipCase {
         if (input_.mode == CoordinateMode::kGrid && input_vertices_.count(v) != 0) continue;
         const Point2& prev = loop[(i + n - 1) % n];
         const Point2& next = loop[(i + 1) % n];
-        const double delta = 4 * u * longest_edge_ + u * std::hypot(v.x, v.y);
+        const double delta = 4 * u * longest_edge_ + 17 * u * std::hypot(v.x, v.y);
         bound += delta * (std::hypot(v.x - prev.x, v.y - prev.y) +
                           std::hypot(next.x - v.x, next.y - v.y) + delta);
       }
