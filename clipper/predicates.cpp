@@ -192,6 +192,42 @@ int midpoint_sign(double a, double b, double c) {
 
 }  // namespace
 
+Orientation orient2d_crossing(const Point2& g0, const Point2& g1, const Point2& e0,
+                              const Point2& e1, const Point2& f0, const Point2& f1) {
+  // The crossing is X = e0 + t·(e1 − e0) with t = A / (A − B), A = [f0 f1 e0] and
+  // B = [f0 f1 e1] of opposite signs. [g0 g1 X] is affine in X, so
+  //     [g0 g1 X] = (A·G1 − B·G0) / (A − B),   G0 = [g0 g1 e0], G1 = [g0 g1 e1],
+  // and A − B has A's sign. The filter: each determinant is rounded once from its exact
+  // value (relative error 2^-52), each product and the difference once more, so the
+  // computed numerator is off by less than 4·2^-52·(|A·G1| + |B·G0|) (8 leaves room).
+  const Determinant ea = exact_determinant(f0, f1, e0), eb = exact_determinant(f0, f1, e1);
+  const Determinant eg0 = exact_determinant(g0, g1, e0), eg1 = exact_determinant(g0, g1, e1);
+  const double a = ea.approximate(), b = eb.approximate();
+  const double g0v = eg0.approximate(), g1v = eg1.approximate();
+  const double left = a * g1v, right = b * g0v;
+  const double numerator = left - right;
+  const double bound = 16.0 * kEpsilon * (std::fabs(left) + std::fabs(right));
+  double sign = 0.0;
+  if (numerator > bound || -numerator > bound) {
+    sign = numerator;
+  } else {
+    Expansion<2 * 16 * 16 * 2> e;
+    auto add_product = [&e](const Determinant& x, const Determinant& y, double s) {
+      for (double xi : x.terms()) {
+        for (double yi : y.terms()) {
+          const Pair p = two_product(s * xi, yi);
+          e.add(p.lo);
+          e.add(p.hi);
+        }
+      }
+    };
+    add_product(ea, eg1, 1.0);
+    add_product(eb, eg0, -1.0);
+    sign = e.sign();
+  }
+  return to_orientation(a > 0.0 ? sign : -sign);
+}
+
 Point2 crossing_point_exact(const Point2& a0, const Point2& a1, const Point2& b0,
                             const Point2& b1) {
   // X = (A·a1 − B·a0) / (A − B) with A = [b0 b1 a0] and B = [b0 b1 a1] of opposite

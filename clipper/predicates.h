@@ -32,6 +32,13 @@ Orientation orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3&
 // True when p lies on the closed segment [a, b] (exact).
 bool on_segment(const Point2& a, const Point2& b, const Point2& p);
 
+// Which side of the line g0 -> g1 the exact crossing point of the segments e0-e1 and
+// f0-f1 lies on, without constructing it. The segments must cross properly (each
+// strictly separates the other's endpoints). Exact in the same sense as orient2d, for
+// coordinates of magnitude up to about 1e75 (it multiplies pairs of determinants).
+Orientation orient2d_crossing(const Point2& g0, const Point2& g1, const Point2& e0,
+                              const Point2& e1, const Point2& f0, const Point2& f1);
+
 // The crossing point of the segments a0-a1 and b0-b1, which must cross properly (each
 // strictly separates the other's endpoints), from exact determinants: each coordinate
 // within 5u of its own magnitude of the exact one (u = 2^-53), however long the

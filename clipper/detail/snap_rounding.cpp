@@ -75,8 +75,17 @@ bool in_box(const Point2& p, const Piece& e) {
 
 // What one round finds: points each segment must be routed through, and vertices to
 // merge.
+// A point some piece must pass through. A crossing of two pieces that are whole input
+// edges keeps the other one, which orders it exactly among others on the same edge.
+struct Through {
+  std::uint32_t piece;
+  Point2 at;
+  bool crossing = false;
+  Point2 f0{}, f1{};
+};
+
 struct Contacts {
-  std::vector<std::pair<std::uint32_t, Point2>> through;  // piece, point
+  std::vector<Through> through;
   std::vector<std::pair<Point2, Point2>> merges;
   std::size_t crossings = 0;
 };
@@ -125,7 +134,7 @@ class Finder {
                         (e.deviation > 0.0 && within_distance(v, e.from, e.to, e.deviation) &&
                          orient2d(s.from, s.to, v) != Orientation::kCollinear);
     if (!in_way) return false;
-    found_.through.emplace_back(static_cast<std::uint32_t>(piece), v);
+    found_.through.push_back({static_cast<std::uint32_t>(piece), v});
     return true;
   }
 
@@ -161,14 +170,27 @@ class Finder {
     } else {
       ++found_.crossings;
     }
-    found_.through.emplace_back(static_cast<std::uint32_t>(i), p);
-    found_.through.emplace_back(static_cast<std::uint32_t>(j), p);
+    // Whole input edges on both sides: the exact crossing is known by its two edges.
+    const bool whole = a.from == sa.from && a.to == sa.to && b.from == sb.from && b.to == sb.to;
+    found_.through.push_back({static_cast<std::uint32_t>(i), p, whole, b.from, b.to});
+    found_.through.push_back({static_cast<std::uint32_t>(j), p, whole, a.from, a.to});
   }
 
   const std::vector<Piece>& pieces_;
   const std::vector<Segment>& segments_;
   Contacts& found_;
 };
+
+// Whether two rounded crossings on the edge from -> to lie within the sum of their
+// roundings (5u of each coordinate's magnitude, crossing.h) of each other in the
+// coordinate that varies most along it: then the rounding may have reversed their order.
+bool near_each_other(const Point2& a, const Point2& b, const Point2& from, const Point2& to) {
+  constexpr double k = 5.0 * 0x1p-53;
+  if (std::fabs(to.x - from.x) >= std::fabs(to.y - from.y)) {
+    return std::fabs(a.x - b.x) <= k * (std::fabs(a.x) + std::fabs(b.x));
+  }
+  return std::fabs(a.y - b.y) <= k * (std::fabs(a.y) + std::fabs(b.y));
+}
 
 class SnapRounder {
  public:
@@ -202,17 +224,21 @@ class SnapRounder {
       struct Insertion {
         std::uint32_t segment, position;
         Point2 at;
+        bool crossing;  // with the edge f0-f1, this piece being its whole input edge
+        Point2 f0, f1;
       };
       std::vector<Insertion> insertions;
-      for (const auto& [piece, point] : found.through) {
-        const Piece& e = pieces_[piece];
+      for (const Through& found_point : found.through) {
+        const Point2& point = found_point.at;
+        const Piece& e = pieces_[found_point.piece];
         const Segment& s = segments_[e.segment];
         const Point2 r = resolve(point);
         if (r == resolve(s.from) || r == resolve(s.to) ||
             std::find(s.route.begin(), s.route.end(), r) != s.route.end()) {
           continue;
         }
-        insertions.push_back({e.segment, e.position, r});
+        insertions.push_back({e.segment, e.position, r, found_point.crossing && r == point,
+                              found_point.f0, found_point.f1});
       }
       const bool added = !insertions.empty();
       insert(insertions);
@@ -343,9 +369,25 @@ class SnapRounder {
         const std::size_t first = next;
         while (next < end && insertions[next].position == position) ++next;
         const AlongSegment along(from, to);
-        std::sort(insertions.begin() + static_cast<std::ptrdiff_t>(first),
-                  insertions.begin() + static_cast<std::ptrdiff_t>(next),
-                  [&along](const Insertion& a, const Insertion& b) { return along(a.at, b.at); });
+        // Crossings of a whole input edge in the order of their exact points: rounded a
+        // hair apart along a long edge, they can land in the opposite order, and the
+        // pieces between them then cross the edges that made them. Farther apart than
+        // their rounding, the rounded order is the exact one. An insertion sort: the two
+        // orders together need not be a strict weak order, which std::sort requires.
+        const bool whole = from == s.from && to == s.to;
+        auto before = [&](const Insertion& a, const Insertion& b) {
+          if (whole && a.crossing && b.crossing && a.at != b.at &&
+              near_each_other(a.at, b.at, from, to)) {
+            const Orientation side = orient2d_crossing(b.f0, b.f1, from, to, a.f0, a.f1);
+            if (side != Orientation::kCollinear) return side == orient2d(b.f0, b.f1, from);
+          }
+          return along(a.at, b.at);
+        };
+        for (std::size_t m = first + 1; m < next; ++m) {
+          for (std::size_t q = m; q > first && before(insertions[q], insertions[q - 1]); --q) {
+            std::swap(insertions[q], insertions[q - 1]);
+          }
+        }
         for (std::size_t m = first; m < next; ++m) {
           const Point2& p = insertions[m].at;
           if ((route.empty() ? from : route.back()) != p && p != to) route.push_back(p);

@@ -20,7 +20,10 @@
 // passes nearer the origin; a vertex between the piece and its input line is routed in
 // too, or it would end on the wrong side and a thin needle of the input turn over.
 // Where two moved pieces cross and their input edges cross as well, the crossing of the
-// input edges is taken (within rounding of both input lines).
+// input edges is taken (within rounding of both input lines). Crossings on a whole input
+// edge that lie within their rounding of each other along it are put in the order of
+// their exact points (orient2d_crossing, predicates.h): a long edge's coordinate can
+// round by more than the thickness of what it crosses.
 //
 // Afterwards the boundaries form a plane graph whose vertices are doubles: which side of
 // the other operand an edge lies on, whether two edges are the same, where a loop turns,

@@ -147,5 +147,32 @@ TEST(CompareMidpoint, ExactWhereTheMidpointIsNoDouble) {
   EXPECT_EQ(compare_y(Midpoint2{{0.0, 1e300}, {0.0, 1e300}}, 1e300), 0);
 }
 
+// The crossing of the diagonal e with the segment f lies on a known point; the line g
+// through it, and one ulp beside it, tell the predicate's three answers apart.
+TEST(Orient2dCrossing, SideOfALineThroughTheExactCrossing) {
+  const Point2 e0{0.0, 0.0}, e1{3.0, 3.0};  // y = x
+  const Point2 f0{0.0, 2.0}, f1{2.0, 0.0};  // x + y = 2: crosses e at (1, 1)
+  const Point2 g0{1.0, -5.0};
+  EXPECT_EQ(orient2d_crossing(g0, {1.0, 7.0}, e0, e1, f0, f1), Orientation::kCollinear);
+  const double right = std::nextafter(1.0, 2.0), left = std::nextafter(1.0, 0.0);
+  // The line x = 1 + ulp, going up: (1, 1) lies to its left.
+  EXPECT_EQ(orient2d_crossing({right, -5.0}, {right, 7.0}, e0, e1, f0, f1),
+            Orientation::kCounterClockwise);
+  EXPECT_EQ(orient2d_crossing({left, -5.0}, {left, 7.0}, e0, e1, f0, f1), Orientation::kClockwise);
+  // Independent of the direction of e and f.
+  EXPECT_EQ(orient2d_crossing({left, -5.0}, {left, 7.0}, e1, e0, f1, f0), Orientation::kClockwise);
+}
+
+// A crossing that is no double: e: y = x/3 crosses f: x = 1 at (1, 1/3). The line
+// y = 1/3 rounded down passes below it, rounded up above it.
+TEST(Orient2dCrossing, ExactWhereTheCrossingIsNoDouble) {
+  const Point2 e0{0.0, 0.0}, e1{3.0, 1.0}, f0{1.0, -1.0}, f1{1.0, 1.0};
+  const double third = 1.0 / 3.0;  // below 1/3
+  const double above = std::nextafter(third, 1.0);
+  EXPECT_EQ(orient2d_crossing({0.0, third}, {2.0, third}, e0, e1, f0, f1),
+            Orientation::kCounterClockwise);
+  EXPECT_EQ(orient2d_crossing({0.0, above}, {2.0, above}, e0, e1, f0, f1), Orientation::kClockwise);
+}
+
 }  // namespace
 }  // namespace shadowgen::clipper
