@@ -43,11 +43,15 @@ bool within_distance(const Point2& v, const Point2& a0, const Point2& a1, double
   return std::fabs(orient2d_value(a0, a1, v)) <= d * std::sqrt(dx * dx + dy * dy);
 }
 
-// How far p lies from the line through a0 and a1, rounded up.
+// An upper bound on how far p lies from the line through a0 and a1. In doubles: the
+// cross product is within 4u·permanent of the exact one (orient2d's filter), which is
+// added rather than resolved, this being a tolerance on the path of every moved piece.
 double distance_to_line(const Point2& p, const Point2& a0, const Point2& a1) {
-  if (orient2d(a0, a1, p) == Orientation::kCollinear) return 0.0;
+  if (p == a0 || p == a1) return 0.0;
   const double dx = a1.x - a0.x, dy = a1.y - a0.y;
-  return 1.0001 * std::fabs(orient2d_value(a0, a1, p)) / std::sqrt(dx * dx + dy * dy);
+  const double left = dx * (p.y - a0.y), right = dy * (p.x - a0.x);
+  const double bound = std::fabs(left - right) + 0x1p-51 * (std::fabs(left) + std::fabs(right));
+  return 1.0001 * bound / std::sqrt(dx * dx + dy * dy);
 }
 
 // An input edge, and the points it is routed through.
@@ -283,6 +287,7 @@ class SnapRounder {
 
  private:
   Point2 resolve(const Point2& p) const {
+    if (to_.empty()) return p;  // no merges, the common case: no hashing
     const auto it = to_.find(p);
     return it == to_.end() ? p : it->second;
   }
