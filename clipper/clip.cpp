@@ -13,8 +13,6 @@
 namespace shadowgen::clipper {
 namespace {
 
-using detail::DirectedEdge;
-
 // One operand as the clipper sees it: every loop (outer and hole alike) oriented so the
 // region lies on its left.
 using Boundary = std::vector<Loop2>;
@@ -59,12 +57,37 @@ bool overlap(const Box& a, const Box& b) {
   return a.xmin <= b.xmax && b.xmin <= a.xmax && a.ymin <= b.ymax && b.ymin <= a.ymax;
 }
 
-void append(std::vector<DirectedEdge>& dst, const std::vector<DirectedEdge>& src) {
-  dst.insert(dst.end(), src.begin(), src.end());
-}
-
-void append_reversed(std::vector<DirectedEdge>& dst, const std::vector<DirectedEdge>& src) {
-  for (const DirectedEdge& e : src) dst.push_back({e.to, e.from});
+// Snaps all the pieces together and remakes each from its snapped loops. A step of the
+// clips in sequence may route its subject's boundary through a clip vertex within a
+// pixel of it, where that boundary is also the boundary of inside pieces an earlier step
+// made, which keep it as it was: pieces of different steps could then overlap by a
+// hair. Snapped together, every boundary two pieces share runs through the same
+// vertices, and each piece is the region its own snapped loops wind around.
+void conform(ClipResult& result) {
+  std::vector<Loop2> loops[2];
+  std::vector<std::size_t> first;  // per piece, its first loop
+  for (const PolygonSet2* set : {&result.inside, &result.outside}) {
+    for (const PolygonWithHoles2& p : *set) {
+      first.push_back(loops[0].size());
+      loops[0].push_back(p.outer);
+      for (const Loop2& h : p.holes) loops[0].push_back(h);
+    }
+  }
+  first.push_back(loops[0].size());
+  detail::snap_round(loops);
+  const std::size_t inside_count = result.inside.size();
+  ClipResult remade;
+  for (std::size_t k = 0; k + 1 < first.size(); ++k) {
+    std::vector<Loop2> piece[2];
+    for (std::size_t l = first[k]; l < first[k + 1]; ++l) {
+      if (!loops[0][l].empty()) piece[0].push_back(std::move(loops[0][l]));
+    }
+    PolygonSet2& into = k < inside_count ? remade.inside : remade.outside;
+    for (PolygonWithHoles2& p : detail::assemble_polygons(detail::overlay(piece).outside)) {
+      into.push_back(std::move(p));
+    }
+  }
+  result = std::move(remade);
 }
 
 }  // namespace
@@ -82,20 +105,9 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   // Snapped together, the two boundaries form a plane graph in doubles, and every
   // decision from here on is exact on it.
   detail::snap_round(loops);
-  const auto [a_edges, b_edges] = detail::classify_edges(loops);
-
-  // subject ∩ clip: the subject inside the clip, the clip inside the subject, and the
-  // shared stretches where both regions lie on the same side (taken once).
-  std::vector<DirectedEdge> inside_edges = a_edges.inside;
-  append(inside_edges, b_edges.inside);
-  append(inside_edges, a_edges.shared_same);
-  // subject − clip: the subject outside the clip, the clip inside the subject reversed,
-  // and the shared stretches where the clip lies on the far side.
-  std::vector<DirectedEdge> outside_edges = a_edges.outside;
-  append_reversed(outside_edges, b_edges.inside);
-  append(outside_edges, a_edges.shared_opposite);
-  result.inside = detail::assemble_polygons(inside_edges);
-  result.outside = detail::assemble_polygons(outside_edges);
+  const detail::OverlayEdges edges = detail::overlay(loops);
+  result.inside = detail::assemble_polygons(edges.inside);
+  result.outside = detail::assemble_polygons(edges.outside);
   return result;
 }
 
@@ -123,14 +135,19 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   };
   ClipResult result;
   result.outside = normalized(PolygonSet2{subject});
+  // Once a step has made inside pieces, every later step snaps their former neighbour,
+  // the subject's remains, again.
+  bool snapped_after_cut = false;
   for (const PolygonWithHoles2& c : clips) {
     if (result.outside.empty()) break;
+    snapped_after_cut = snapped_after_cut || !result.inside.empty();
     ClipResult step = clip(result.outside, PolygonSet2{c});
     drop_rounding_slivers(step.inside, result.outside, c);
     drop_rounding_slivers(step.outside, result.outside, c);
     for (PolygonWithHoles2& p : step.inside) result.inside.push_back(std::move(p));
     result.outside = std::move(step.outside);
   }
+  if (snapped_after_cut) conform(result);
   return result;
 }
 

@@ -8,16 +8,15 @@
 // every crossing and touching point is inserted into both, as a double, and the step is
 // repeated until the edges meet only at common vertices or as the very same segment.
 // Every later decision is then an exact predicate on that plane graph, with no rounded
-// point left to disagree with it. Each stretch of a boundary between two vertices the
-// boundaries share lies wholly inside, wholly outside, or along the other region; which,
-// is decided at the shared vertex from the other boundary's edges there alone (turning
-// counter-clockwise from the stretch, the first of them met has the region on its left:
-// the stretch is inside when that one arrives, outside when it leaves). That is the
-// entry/exit alternation of the paper, exact at a touch as at a crossing. The pieces are
-// then traced: the subject's stretches inside the clip, switching at shared vertices onto
-// the clip's stretches inside the subject (reversed, for the outside pieces). Where
-// several traced stretches meet at one point, the walk keeps to the tightest turn, and
-// the loops are split at repeated vertices, so every output loop is simple.
+// point left to disagree with it. Each face of the graph has a winding number for each
+// operand; crossing an edge changes them by the operands' net multiplicities along it,
+// so they spread exactly from edge to edge around each vertex (detail/overlay.h): the
+// entry/exit alternation of the paper, at a touch as at a crossing, and for a boundary
+// that snapping ran along one segment twice or folded onto itself. An edge bounds the
+// inside pieces where the faces on one side lie in both regions and those on the other
+// do not (the outside pieces likewise); the pieces are then traced. Where several
+// traced edges meet at one point, the walk keeps to the tightest turn, and the loops are
+// split at repeated vertices, so every output loop is simple.
 //
 // Input. Any PolygonWithHoles2 / PolygonSet2 whose region is well formed: loops simple,
 // holes inside their outer loop, loops meeting at most at points. Orientation is free
@@ -48,13 +47,9 @@
 // 1e8.
 //
 // Limit. Where a feature is narrower than the pixels around it (a needle a few ulps
-// wide), the snapping closes it up or folds it onto its neighbours, and some of those
-// folds leave the other operand's boundary running through one point more than twice or
-// over itself. Such a point is decided by exact point location of the stretch instead;
-// what is still inconsistent there is left out of the pieces (the tracing makes no loop
-// of edges that do not close) rather than closed by an edge that is not there. The
-// fuzzer still finds such inputs (README, Limits): the pieces are then valid but their
-// areas can be wrong by more than the pixels account for.
+// wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
+// count such folds as they are, so the pieces are the Boolean combination of the snapped
+// operands, which differ from the input by the pixels that moved them.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
@@ -78,7 +73,9 @@ ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_
 // subject ∩ (union of the clips), outside is subject − (union of the clips). The clips
 // may overlap each other. The outside pieces of one clip are clipped by the next; pieces
 // whose area is within the rounding bound of their vertices and that have a vertex the
-// step constructed (slivers that only rounding made) are dropped along the way.
+// step constructed (slivers that only rounding made) are dropped along the way. The
+// pieces of all steps are snapped together at the end, so pieces that share a boundary
+// share its vertices and do not overlap.
 ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips);
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b);

@@ -13,8 +13,9 @@ namespace shadowgen::clipper {
 // (detail/snap_rounding.h), so edges that overlap only in part (a T-junction) or along
 // seams whose vertices were rounded on either side of the common line, within a hot
 // pixel of each other, become runs of the same segments and cancel too; the joined
-// boundary moves by at most a pixel. Where pieces meet otherwise, the result may still
-// hold several polygons where an exact union would hold one.
+// boundary moves by at most a pixel. The result bounds the points some piece covers
+// (pieces that do overlap, by rounding or otherwise, are joined as a union would), as
+// few polygons as the snapped boundaries allow.
 PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons);
 
 }  // namespace shadowgen::clipper

@@ -1,21 +1,27 @@
 #pragma once
 
-// Which side of the other operand each edge of the snapped boundaries lies on: the
-// classification half of the clipper, exact on the plane graph that snap rounding left
-// (snap_rounding.h).
+// The Boolean combination of the snapped boundaries: the classification half of the
+// clipper, exact on the plane graph that snap rounding left (snap_rounding.h).
 //
-// An operand's edges that run both ways along one segment cancel (a needle or crack of
-// its region that the snapping closed, bounding nothing). Each stretch of a boundary
-// between two vertices both operands share lies on one side; it is decided at such a
-// vertex from the other operand's live edges there alone: turning counter-clockwise from
-// the stretch, the first of them met has the region on its left, so the stretch is
-// inside when that one arrives, outside when it leaves, and shared when it runs along the
-// stretch. Where the other operand's edges at the vertex do not alternate between
-// arriving and leaving (snapping folded its boundary onto itself there), the stretch is
-// located exactly against the whole other boundary instead. A loop that shares no vertex
-// with the other operand is located at one of its vertices.
+// Both operands' loops become one graph: a vertex for every distinct point, an edge for
+// every distinct segment, carrying each operand's net multiplicity along it (how many
+// times its loops run one way along the segment minus the other way). Snapping can make
+// a loop run along a segment twice, or both ways (a needle of its region closed up), or
+// fold back on itself; net multiplicities count all of that as it is.
+//
+// Every face of the graph then has a winding number for each operand, and crossing an
+// edge from its right to its left adds the edge's multiplicities. Around a vertex the
+// windings of the sectors between its edges follow from one another that way, so they
+// spread from vertex to vertex along the edges, exactly (no geometry beyond the order of
+// edges around a vertex, by orient2d). Each connected part of the graph starts from the
+// sector left of its lowest-leftmost vertex, which lies outside all of the part's own
+// loops: its winding numbers are those of that vertex against the other parts' loops,
+// found by exact point location.
+//
+// A point lies in an operand's region where that operand's winding number is positive.
+// An edge bounds the intersection (or the difference) where that holds of the faces on
+// one side and not the other, and runs with the region on its left.
 
-#include <array>
 #include <vector>
 
 #include "clipper/detail/boundary_graph.h"
@@ -23,12 +29,15 @@
 
 namespace shadowgen::clipper::detail {
 
-struct ClassifiedEdges {
-  std::vector<DirectedEdge> inside, outside, shared_same, shared_opposite;
+struct OverlayEdges {
+  std::vector<DirectedEdge> inside;   // bounding subject ∩ clip
+  std::vector<DirectedEdge> outside;  // bounding subject − clip
 };
 
-// loops[0], loops[1]: the snapped loops of the two operands, each with its region on the
-// left. Returns each operand's live edges by side of the other.
-std::array<ClassifiedEdges, 2> classify_edges(const std::vector<Loop2> (&loops)[2]);
+// loops[0], loops[1]: the snapped loops of the subject and the clip, each with its
+// region on the left. Edges where snapping left the graph unnoded (two edges crossing,
+// or running along one another without sharing their ends) are not detected here; the
+// faces around them get the windings of whichever side the spreading reached first.
+OverlayEdges overlay(const std::vector<Loop2> (&loops)[2]);
 
 }  // namespace shadowgen::clipper::detail

@@ -72,4 +72,8 @@ Location locate_midpoint(const Point2& a, const Point2& b, const std::vector<Loo
   return locate_in_loops(Midpoint2{a, b}, loops);
 }
 
+bool add_winding_number(const Point2& p, const Loop2& loop, int& winding) {
+  return accumulate_winding(p, loop, winding);
+}
+
 }  // namespace shadowgen::clipper::detail

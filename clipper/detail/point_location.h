@@ -23,4 +23,8 @@ Location locate(const Point2& p, const std::vector<Loop2>& loops);
 Location locate_midpoint(const Point2& a, const Point2& b, const Loop2& loop);
 Location locate_midpoint(const Point2& a, const Point2& b, const std::vector<Loop2>& loops);
 
+// Adds the loop's winding number around p (counter-clockwise turns positive) to
+// `winding`; returns false, leaving it partly added, when p lies on the loop.
+bool add_winding_number(const Point2& p, const Loop2& loop, int& winding);
+
 }  // namespace shadowgen::clipper::detail

@@ -43,15 +43,21 @@ bool within_distance(const Point2& v, const Point2& a0, const Point2& a1, double
   return std::fabs(orient2d_value(a0, a1, v)) <= d * std::sqrt(dx * dx + dy * dy);
 }
 
-// An upper bound on how far p lies from the line through a0 and a1. In doubles: the
-// cross product is within 4u·permanent of the exact one (orient2d's filter), which is
-// added rather than resolved, this being a tolerance on the path of every moved piece.
+// An upper bound on how far p lies from the line through a0 and a1. First in doubles: the
+// cross product is within 4u·permanent of the exact one (orient2d's filter), added rather
+// than resolved, this being a tolerance on the path of every moved piece. Along a long
+// edge that slack (u times the edge's length) can exceed the pixels of the points the
+// piece passes, and a band that wide would route the piece through vertices it never
+// came near: then the cross product is taken rounded once from its exact value.
 double distance_to_line(const Point2& p, const Point2& a0, const Point2& a1) {
   if (p == a0 || p == a1) return 0.0;
   const double dx = a1.x - a0.x, dy = a1.y - a0.y;
+  const double length = std::sqrt(dx * dx + dy * dy);
   const double left = dx * (p.y - a0.y), right = dy * (p.x - a0.x);
   const double bound = std::fabs(left - right) + 0x1p-51 * (std::fabs(left) + std::fabs(right));
-  return 1.0001 * bound / std::sqrt(dx * dx + dy * dy);
+  const double coarse = 1.0001 * bound / length;
+  if (coarse <= snap_distance(p)) return coarse;
+  return 1.0001 * std::fabs(orient2d_value(a0, a1, p)) / length;
 }
 
 // An input edge, and the points it is routed through.
@@ -155,8 +161,12 @@ class Finder {
     Point2 p = crossing_point(a.from, a.to, b.from, b.to);
     if (a.deviation > 0.0 || b.deviation > 0.0) {
       if (properly_cross(sa.from, sa.to, sb.from, sb.to)) {
+        // Unless both segments already pass through it: then the pieces cross somewhere
+        // else, where a piece moved across the other, and that crossing is the one to make.
         const Point2 q = crossing_point(sa.from, sa.to, sb.from, sb.to);
-        if (in_box(q, a) && in_box(q, b)) p = q;
+        if (in_box(q, a) && in_box(q, b) && !(passes_through(sa, q) && passes_through(sb, q))) {
+          p = q;
+        }
       }
     }
     const Point2* nearest = nullptr;
@@ -178,6 +188,12 @@ class Finder {
     const bool whole = a.from == sa.from && a.to == sa.to && b.from == sb.from && b.to == sb.to;
     found_.through.push_back({static_cast<std::uint32_t>(i), p, whole, b.from, b.to});
     found_.through.push_back({static_cast<std::uint32_t>(j), p, whole, a.from, a.to});
+  }
+
+  // Whether p is an end of the segment or on its route (as the route is before merging).
+  static bool passes_through(const Segment& s, const Point2& p) {
+    return p == s.from || p == s.to ||
+           std::find(s.route.begin(), s.route.end(), p) != s.route.end();
   }
 
   const std::vector<Piece>& pieces_;
@@ -278,10 +294,9 @@ class SnapRounder {
           for (const Point2& p : s.route) push(p);
         }
         while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+        if (out.size() < 2) out.clear();  // merged into a single point: bounds nothing
         loop = std::move(out);
       }
-      // Loops merged into a single point bound nothing.
-      std::erase_if(loops[side], [](const Loop2& loop) { return loop.size() < 2; });
     }
   }
 

@@ -52,7 +52,7 @@ struct SnapRoundingStats {
 // The loops of both operands (loops[0] the subject's, loops[1] the clip's, each running
 // with its region on the left), snapped in place. A loop may come back with spikes,
 // repeated vertices or edges run both ways (a needle of its region closed by the
-// snapping); loops snapped to a single point are removed.
+// snapping); a loop snapped to a single point comes back empty, in its place.
 void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats = nullptr);
 
 }  // namespace shadowgen::clipper::detail
