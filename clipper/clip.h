@@ -38,8 +38,8 @@
 // Exactness and tolerance. Orientation and side tests are exact (predicates.h). New
 // points are the crossings, each coordinate within 5u of its own magnitude of the exact
 // crossing (u = 2^-53; detail/crossing.h), however long the edges and whatever the
-// angle. The one tolerance is the hot pixel of a point (detail/snap.h): the box of six
-// ulps of each coordinate's magnitude around it, derived from that bound. An edge passing
+// angle. The one tolerance is the hot pixel of a point (detail/snap.h): the square of six
+// ulps of its largest coordinate's magnitude around it, derived from that bound. An edge passing
 // through a vertex's pixel is routed through the vertex; vertices in each other's pixels
 // become one; both move the boundary by at most a pixel there. The tolerance is relative
 // to the coordinates' magnitude where the point lies, not to the edge lengths or to

@@ -33,7 +33,7 @@ double area(const PolygonWithHoles2& polygon);
 double area(const PolygonSet2& polygons);
 
 // How much area the rounding of a loop's constructed vertices can account for: each moves
-// by at most its hot pixel, 12u of each coordinate's magnitude (clip.h), sweeping at most
+// by at most its hot pixel, 12u of its largest coordinate's magnitude (clip.h), sweeping at most
 // that times the perimeter, below 18u·(max |coordinate| + 4·perimeter)·perimeter in all
 // (u = 2^-53; the perimeter term covers loops far smaller than their coordinates' scale,
 // which is what the pixel is measured in). A loop of smaller

@@ -17,8 +17,8 @@ bool in_pixel(const Point2& p, const Pixel& box) {
 }  // namespace
 
 Pixel hot_pixel(const Point2& p) {
-  const double hx = kHalfWidth * std::fabs(p.x), hy = kHalfWidth * std::fabs(p.y);
-  return {p.x - hx, p.x + hx, p.y - hy, p.y + hy};
+  const double h = snap_distance(p);
+  return {p.x - h, p.x + h, p.y - h, p.y + h};
 }
 
 double snap_distance(const Point2& p) {

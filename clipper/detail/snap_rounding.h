@@ -9,7 +9,7 @@
 // moves that edge by a hair, and the moved pieces may then meet others, so the step
 // repeats on the new pieces until none meets another except at a common endpoint or as
 // the very same segment: iterated snap rounding (Hobby 1999; Halperin and Packer 2002),
-// with doubles for the grid and hot pixels of six ulps of each coordinate's own
+// with doubles for the grid and hot pixels of six ulps of each point's own
 // magnitude. Each input edge keeps its route, the points it passes through in order; a
 // point found in the way of a piece goes into that piece, and into a route at most once,
 // so no two points can take turns splitting each other.

@@ -18,8 +18,8 @@
 // Areas are exact (exact_area.h), so the only slack is the one clip.h grants: each
 // constructed vertex v lies within
 //     delta_v = 4u·L + 17u·|v|,   u = 2^-53, L = the longest input edge,
-// of its exact position (its crossing's rounding, within its hot pixel of 12u of each
-// coordinate's magnitude, whose half-diagonal is below 17u·|v|), and moving it changes
+// of its exact position (its crossing's rounding, within its hot pixel of 12u of its
+// largest coordinate's magnitude, whose half-diagonal is below 17u·|v|), and moving it changes
 // twice a loop's area by at most delta_v·(|e_prev| + |e_next| + delta_v), e_prev and
 // e_next its two edges. The tolerance of an area identity is twice the sum of that over
 // the output vertices involved (a factor 2 of safety). A crossing may round onto an
