@@ -142,10 +142,27 @@ class Finder {
     const Segment& s = segments_[e.segment];
     const bool in_way = within_snap_distance(v, e.from, e.to) ||
                         (e.deviation > 0.0 && within_distance(v, e.from, e.to, e.deviation) &&
-                         orient2d(s.from, s.to, v) != Orientation::kCollinear);
+                         between_piece_and_line(v, e, s));
     if (!in_way) return false;
     found_.through.push_back({static_cast<std::uint32_t>(piece), v});
     return true;
+  }
+
+  // Whether v lies off the segment's line on the side the piece moved to, and on the
+  // line's side of the piece: where the piece's move could have carried it across v.
+  // Vertices beyond the piece are not routed in, or each round would carry the piece a
+  // pixel further out.
+  static bool between_piece_and_line(const Point2& v, const Piece& e, const Segment& s) {
+    const Orientation moved = orient2d(s.from, s.to, e.from) != Orientation::kCollinear
+                                  ? orient2d(s.from, s.to, e.from)
+                                  : orient2d(s.from, s.to, e.to);
+    const Orientation side = orient2d(s.from, s.to, v);
+    if (side == Orientation::kCollinear || side != moved) return false;
+    // The line lies on the side of the piece where the segment's ends off it lie.
+    Orientation line = orient2d(e.from, e.to, s.from);
+    if (line == Orientation::kCollinear) line = orient2d(e.from, e.to, s.to);
+    const Orientation of_v = orient2d(e.from, e.to, v);
+    return line == Orientation::kCollinear || of_v == Orientation::kCollinear || of_v == line;
   }
 
   // The rounded crossing of two properly crossing pieces routes both segments through
