@@ -49,7 +49,12 @@
 // Limit. Where a feature is narrower than the pixels around it (a needle a few ulps
 // wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
 // count such folds as they are, so the pieces are the Boolean combination of the snapped
-// operands, which differ from the input by the pixels that moved them.
+// operands, which differ from the input by the pixels that moved them. The iterated
+// snapping does not always end with edges meeting only at vertices: a route passes a
+// point once, and where it would have to pass one twice (vertices a few ulps apart,
+// each outside the others' pixels) an edge can be left through a vertex. The pieces
+// are then still valid loops, but their areas can be wrong by more than the pixels
+// account for (README, Limits).
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
