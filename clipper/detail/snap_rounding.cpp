@@ -255,30 +255,72 @@ class SnapRounder {
           [&finder](std::size_t i, std::size_t j) { finder.find(i, j); });
       stats.crossings += found.crossings;
       const bool merged = apply_merges(found.merges);
-      // Each point goes into the piece it was found on, once per segment: a point already
-      // on the route (where an earlier round put it) is a contact the route cannot
-      // resolve further, and is left as it is, so no two points can take turns.
+      // Each point goes into the piece it was found on, once per segment, so no two
+      // points can take turns. A point the route already passes elsewhere (where an
+      // earlier round put it) means the route comes back to it: the stretch between,
+      // a sliver loop narrower than the pixels it passes, is cut out (one cut per
+      // route and round, and no insertions into that route in the same round).
       struct Insertion {
         std::uint32_t segment, position;
         Point2 at;
         bool crossing;  // with the edge f0-f1, this piece being its whole input edge
         Point2 f0, f1;
       };
+      struct Cut {
+        std::uint32_t segment;
+        std::size_t first, last;  // route[first, last) goes
+      };
       std::vector<Insertion> insertions;
+      std::vector<Cut> cuts;
       for (const Through& found_point : found.through) {
         const Point2& point = found_point.at;
         const Piece& e = pieces_[found_point.piece];
         const Segment& s = segments_[e.segment];
         const Point2 r = resolve(point);
-        if (r == resolve(s.from) || r == resolve(s.to) ||
-            std::find(s.route.begin(), s.route.end(), r) != s.route.end()) {
+        // Its place on the route extended by the segment's ends: 0 for the start,
+        // j + 1 for route[j], route.size() + 1 for the end. The piece runs from place
+        // e.position to place e.position + 1.
+        std::size_t place = s.route.size() + 2;
+        if (r == resolve(s.from)) {
+          place = 0;
+        } else if (r == resolve(s.to)) {
+          place = s.route.size() + 1;
+        } else {
+          const auto it = std::find(s.route.begin(), s.route.end(), r);
+          if (it != s.route.end()) place = static_cast<std::size_t>(it - s.route.begin()) + 1;
+        }
+        if (place == s.route.size() + 2) {
+          insertions.push_back({e.segment, e.position, r, found_point.crossing && r == point,
+                                found_point.f0, found_point.f1});
           continue;
         }
-        insertions.push_back({e.segment, e.position, r, found_point.crossing && r == point,
-                              found_point.f0, found_point.f1});
+        const std::size_t p = e.position;
+        const Cut cut = place <= p ? Cut{e.segment, place, p} : Cut{e.segment, p, place - 1};
+        if (cut.first < cut.last) cuts.push_back(cut);
       }
-      const bool added = !insertions.empty();
+      if (!cuts.empty()) {
+        std::sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) {
+          // The shortest cut of a route first: it removes the least.
+          if (a.segment != b.segment) return a.segment < b.segment;
+          if (a.last - a.first != b.last - b.first) return a.last - a.first < b.last - b.first;
+          return a.first < b.first;
+        });
+        cuts.erase(std::unique(cuts.begin(), cuts.end(),
+                               [](const Cut& a, const Cut& b) { return a.segment == b.segment; }),
+                   cuts.end());
+        std::vector<char> cut_here(segments_.size(), 0);
+        for (const Cut& cut : cuts) cut_here[cut.segment] = 1;
+        std::erase_if(insertions,
+                      [&cut_here](const Insertion& in) { return cut_here[in.segment]; });
+      }
+      const bool added = !insertions.empty() || !cuts.empty();
       insert(insertions);
+      for (const Cut& cut : cuts) {
+        Loop2& route = segments_[cut.segment].route;
+        route.erase(route.begin() + static_cast<std::ptrdiff_t>(cut.first),
+                    route.begin() + static_cast<std::ptrdiff_t>(cut.last));
+        changed_[cut.segment] = 1;
+      }
       if (!merged && !added) break;
       if (round == kMaxRounds) {
         stats.converged = false;
