@@ -49,12 +49,10 @@
 // Limit. Where a feature is narrower than the pixels around it (a needle a few ulps
 // wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
 // count such folds as they are, so the pieces are the Boolean combination of the snapped
-// operands, which differ from the input by the pixels that moved them. The iterated
-// snapping does not always end with edges meeting only at vertices: a route passes a
-// point once, and where it would have to pass one twice (vertices a few ulps apart,
-// each outside the others' pixels) an edge can be left through a vertex. The pieces
-// are then still valid loops, but their areas can be wrong by more than the pixels
-// account for (README, Limits).
+// operands, which differ from the input by the pixels that moved them. The snapping is
+// iterated (at most 16 rounds), and nothing proves that it always ends with edges
+// meeting only at vertices; where it did not, the pieces would still be valid loops but
+// their areas could be wrong by more than the pixels account for (README, Limits).
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
@@ -76,11 +74,10 @@ ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_
 
 // One subject against several clip polygons, as hidden-surface removal needs: inside is
 // subject ∩ (union of the clips), outside is subject − (union of the clips). The clips
-// may overlap each other. The outside pieces of one clip are clipped by the next; pieces
-// whose area is within the rounding bound of their vertices and that have a vertex the
-// step constructed (slivers that only rounding made) are dropped along the way. The
-// pieces of all steps are snapped together at the end, so pieces that share a boundary
-// share its vertices and do not overlap.
+// may overlap each other. They are one operand of a single snap rounding and overlay:
+// their winding numbers add up, and the union is where the sum is positive. So every
+// piece comes from the same snapped graph, and pieces that share a boundary share its
+// vertices and do not overlap. Clips whose boxes miss the subject's are left out.
 ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips);
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b);

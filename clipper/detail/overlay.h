@@ -35,9 +35,11 @@ struct OverlayEdges {
 };
 
 // loops[0], loops[1]: the snapped loops of the subject and the clip, each with its
-// region on the left. Edges where snapping left the graph unnoded (two edges crossing,
-// or running along one another without sharing their ends) are not detected here; the
-// faces around them get the windings of whichever side the spreading reached first.
+// region on the left. The clip's loops may be those of several overlapping polygons:
+// their winding numbers add up, and the clip is their union. Edges where snapping left the graph
+// unnoded (two edges crossing, or running along one another without sharing their ends) are not
+// detected here; the faces around them get the windings of whichever side the spreading reached
+// first.
 OverlayEdges overlay(const std::vector<Loop2> (&loops)[2]);
 
 }  // namespace shadowgen::clipper::detail
