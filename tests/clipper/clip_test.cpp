@@ -224,10 +224,11 @@ TEST(ClipAgainstSet, OverlappingClipsCountOnce) {
   ExpectWellFormed(r.outside);
 }
 
-// Found by the fuzzer (grid): against the clips twice over, the third step routed the
-// subject's remains through a clip vertex, (-5, -5), within a pixel of an edge they
-// shared with an inside piece of the first step, which kept the edge straight: the two
-// inside pieces overlapped by a hair. The pieces are now snapped together at the end.
+// Found by the fuzzer (grid): against the clips twice over, clipped step by step, the
+// third step routed the subject's remains through a clip vertex, (-5, -5), within a
+// pixel of an edge they shared with an inside piece of the first step, which kept the
+// edge straight: the two inside pieces overlapped by a hair. All pieces now come from
+// one snapped graph.
 TEST(ClipAgainstSet, PiecesOfDifferentStepsDoNotOverlap) {
   const PolygonWithHoles2 subject{{{-6, -6}, {6, -6}, {6, 6}, {3, 6}},
                                   {{{-2, -2}, {2, -2}, {2, 2}}}};
