@@ -30,16 +30,25 @@ struct Box {
   double xmin, xmax, ymin, ymax;
 };
 
+void extend(Box& b, const Loop2& loop) {
+  for (const Point2& p : loop) {
+    b.xmin = std::min(b.xmin, p.x);
+    b.xmax = std::max(b.xmax, p.x);
+    b.ymin = std::min(b.ymin, p.y);
+    b.ymax = std::max(b.ymax, p.y);
+  }
+}
+
 Box bounds(const Boundary& loops) {
   Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
-  for (const Loop2& l : loops) {
-    for (const Point2& p : l) {
-      b.xmin = std::min(b.xmin, p.x);
-      b.xmax = std::max(b.xmax, p.x);
-      b.ymin = std::min(b.ymin, p.y);
-      b.ymax = std::max(b.ymax, p.y);
-    }
-  }
+  for (const Loop2& l : loops) extend(b, l);
+  return b;
+}
+
+// A polygon's holes lie inside its outer loop: the outer loop's box is the polygon's.
+Box bounds(const PolygonWithHoles2& p) {
+  Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  extend(b, p.outer);
   return b;
 }
 
@@ -47,12 +56,9 @@ bool overlap(const Box& a, const Box& b) {
   return a.xmin <= b.xmax && b.xmin <= a.xmax && a.ymin <= b.ymax && b.ymin <= a.ymax;
 }
 
-}  // namespace
-
-ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
+// The clip of operands already normalized.
+ClipResult clip_normalized(PolygonSet2 a, const PolygonSet2& b) {
   ClipResult result;
-  PolygonSet2 a = normalized(subject);
-  const PolygonSet2 b = normalized(clip_region);
   if (a.empty()) return result;
   Boundary loops[2] = {boundary_of(a), boundary_of(b)};
   if (b.empty() || !overlap(bounds(loops[0]), bounds(loops[1]))) {
@@ -68,6 +74,12 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   return result;
 }
 
+}  // namespace
+
+ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
+  return clip_normalized(normalized(subject), normalized(clip_region));
+}
+
 ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_region) {
   return clip(PolygonSet2{subject}, PolygonSet2{clip_region});
 }
@@ -78,14 +90,14 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   // snap rounding and one overlay then give every piece, all from the same snapped
   // graph, so pieces that share a boundary share its vertices. Clips whose boxes miss
   // the subject's cannot meet it and are left out.
-  const PolygonSet2 s = normalized(PolygonSet2{subject});
+  PolygonSet2 s = normalized(PolygonSet2{subject});
   if (s.empty()) return {};
-  const Box box = bounds(boundary_of(s));
+  const Box box = bounds(s.front());  // one polygon in, at most one out
   PolygonSet2 near;
   for (const PolygonWithHoles2& c : clips) {
-    if (overlap(box, bounds(Boundary{c.outer}))) near.push_back(c);
+    if (overlap(box, bounds(c))) near.push_back(c);
   }
-  return clip(s, near);
+  return clip_normalized(std::move(s), normalized(near));
 }
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b) { return clip(a, b).inside; }

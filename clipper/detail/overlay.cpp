@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -44,6 +45,7 @@ class Graph {
   void collect_incidence();
   void spread_windings();
   Winding windings_outside_part(std::uint32_t seed, std::uint32_t part) const;
+  void collect_boxes();
   void spread_around(std::uint32_t v, std::uint32_t from_edge, std::vector<std::uint32_t>& todo);
 
   std::span<std::uint32_t> edges_at(std::uint32_t v) {
@@ -65,6 +67,10 @@ class Graph {
   std::vector<std::uint32_t> first_;      // per vertex: its slice of incidence_
   std::vector<std::uint32_t> incidence_;  // edge indices, counter-clockwise around each vertex
   std::vector<std::uint32_t> part_;       // per vertex: its connected part
+  struct Box {
+    double xmin, xmax, ymin, ymax;
+  };
+  std::vector<Box> boxes_[2];  // per loop, made once the graph has several parts
 };
 
 std::size_t point_count(const Boundary (&loops)[2]) {
@@ -187,10 +193,29 @@ Winding Graph::windings_outside_part(std::uint32_t seed, std::uint32_t part) con
   for (int s = 0; s < 2; ++s) {
     for (std::size_t l = 0; l < loops_[s].size(); ++l) {
       if (ids_[s][l].empty() || part_[ids_[s][l].front()] == part) continue;
+      // A loop winds around no point outside its box.
+      const Box& b = boxes_[s][l];
+      if (p.x < b.xmin || p.x > b.xmax || p.y < b.ymin || p.y > b.ymax) continue;
       add_winding_number(p, loops_[s][l], w[s]);
     }
   }
   return w;
+}
+
+void Graph::collect_boxes() {
+  for (int s = 0; s < 2; ++s) {
+    boxes_[s].clear();
+    for (const Loop2& loop : loops_[s]) {
+      Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
+      for (const Point2& q : loop) {
+        b.xmin = std::min(b.xmin, q.x);
+        b.xmax = std::max(b.xmax, q.x);
+        b.ymin = std::min(b.ymin, q.y);
+        b.ymax = std::max(b.ymax, q.y);
+      }
+      boxes_[s].push_back(b);
+    }
+  }
 }
 
 void Graph::spread_windings() {
@@ -221,6 +246,7 @@ void Graph::spread_windings() {
     }
     seeds.push_back(seed);
   }
+  if (seeds.size() > 1) collect_boxes();  // parts are located against each other
   std::vector<char> done(count, 0);
   std::vector<std::uint32_t> todo;  // pairs: a vertex, and an edge of it already known
   for (std::uint32_t part = 0; part < seeds.size(); ++part) {

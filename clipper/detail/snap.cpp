@@ -30,15 +30,16 @@ bool within_snap_distance(const Point2& p, const Point2& q) {
   return in_pixel(q, hot_pixel(p)) || in_pixel(p, hot_pixel(q));
 }
 
-bool within_snap_distance(const Point2& v, const Point2& e0, const Point2& e1) {
+bool projects_inside(const Point2& v, const Point2& e0, const Point2& e1) {
   if (v == e0 || v == e1) return false;
   const double dx = e1.x - e0.x, dy = e1.y - e0.y;
-  // Strictly between the ends by projection, measured from each end: from the far one
-  // alone, a point a hair before the near end (relative to the edge's length) rounds to
-  // the end itself.
   const double from_start = (v.x - e0.x) * dx + (v.y - e0.y) * dy;
   const double from_end = (e1.x - v.x) * dx + (e1.y - v.y) * dy;
-  if (!(from_start > 0.0 && from_end > 0.0)) return false;
+  return from_start > 0.0 && from_end > 0.0;
+}
+
+bool within_snap_distance(const Point2& v, const Point2& e0, const Point2& e1) {
+  if (!projects_inside(v, e0, e1)) return false;
   const Pixel box = hot_pixel(v);
   if (std::max(e0.x, e1.x) < box.xmin || std::min(e0.x, e1.x) > box.xmax ||
       std::max(e0.y, e1.y) < box.ymin || std::min(e0.y, e1.y) > box.ymax) {

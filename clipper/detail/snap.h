@@ -32,6 +32,11 @@ double snap_distance(const Point2& p);
 // Whether p and q (distinct) meet: one lies in the other's pixel.
 bool within_snap_distance(const Point2& p, const Point2& q);
 
+// Whether v projects strictly between the ends of e0-e1, measured from each end: from
+// the far one alone, a point a hair before the near end (relative to the edge's length)
+// rounds to the end itself. False at the ends.
+bool projects_inside(const Point2& v, const Point2& e0, const Point2& e1);
+
 // Whether v lies strictly between the edge's ends (by projection) and the edge passes
 // through v's pixel (exactly through v included). Decided by exact orientation tests on
 // the pixel's corners.

@@ -35,11 +35,8 @@ bool properly_cross(const Point2& a0, const Point2& a1, const Point2& b0, const 
 
 // Whether v lies strictly between the ends of a0-a1 by projection and within d of it.
 bool within_distance(const Point2& v, const Point2& a0, const Point2& a1, double d) {
-  if (v == a0 || v == a1) return false;
+  if (!projects_inside(v, a0, a1)) return false;
   const double dx = a1.x - a0.x, dy = a1.y - a0.y;
-  const double from_start = (v.x - a0.x) * dx + (v.y - a0.y) * dy;
-  const double from_end = (a1.x - v.x) * dx + (a1.y - v.y) * dy;
-  if (!(from_start > 0.0 && from_end > 0.0)) return false;
   return std::fabs(orient2d_value(a0, a1, v)) <= d * std::sqrt(dx * dx + dy * dy);
 }
 
