@@ -1,7 +1,8 @@
-// The JTS overlay corpus (../shared/peer-suites/jts-overlay, the files GEOS runs too):
-// every case whose operands A and B are both areal is clipped, clip(A, B) and
-// clip(B, A), and checked against CGAL's exact intersection and difference. JTS's own
-// expected results are not used: the truth is recomputed exactly.
+// The JTS overlay corpus (the test XML files GEOS runs too), kept in the repository as
+// tests/clipper/peer_suite/cases/: every case whose operands A and B are both areal,
+// written by peer_suite/convert.py (origin and licence in peer_suite/README.md). Each is
+// clipped, clip(A, B) and clip(B, A), and checked against CGAL's exact intersection and
+// difference. JTS's own expected results are not used: the truth is recomputed exactly.
 //
 // Tolerance: 1e-9 × max(area A, area B). Many of these cases are GIS data far from the
 // origin (coordinates up to ~1e6, features a few units wide, thousands of vertices). The
@@ -24,7 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
-#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,11 +46,12 @@ using clipper::Point2;
 constexpr double kRelativeTolerance = 1e-9;
 constexpr int kExpectedArealCases = 172;
 constexpr int kExpectedWkbCases = 31;
+constexpr int kExpectedEmptyOperandCases = 15;
 // The slowest case takes under a second in Release; an order of magnitude more for the
 // sanitizer build, and a wide margin on top.
 constexpr std::chrono::seconds kCaseTimeLimit{60};
 
-const fs::path kSuiteDir = SHADOWGEN_PEER_SUITE_DIR;
+const fs::path kCaseDir = fs::path(SHADOWGEN_PEER_SUITE_DIR) / "cases";
 
 struct PeerCase {
   std::string name;  // file stem and case number, e.g. "general__TestOverlayAA#3"
@@ -62,76 +64,71 @@ ParsedGeometry read_geometry(const std::string& text) {
   return looks_like_wkb_hex(text) ? read_wkb_hex(text) : read_wkt(text);
 }
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Removes every `open ... close` block (comments, descriptions).
-std::string without_blocks(std::string text, const std::string& open, const std::string& close) {
-  for (std::size_t start; (start = text.find(open)) != std::string::npos;) {
-    const std::size_t end = text.find(close, start);
-    text.erase(start, end == std::string::npos ? std::string::npos : end + close.size() - start);
-  }
-  return text;
-}
-
-// The text of the first <tag>...</tag> element, CDATA markers removed; empty if none.
-std::string element(const std::string& text, const std::string& tag, bool* found) {
-  const std::string open = "<" + tag + ">";
-  const std::size_t start = text.find(open);
-  const std::size_t end = text.find("</" + tag + ">", start);
-  *found = start != std::string::npos && end != std::string::npos;
-  if (!*found) return {};
-  std::string body = text.substr(start + open.size(), end - start - open.size());
-  for (const char* marker : {"<![CDATA[", "]]>"}) {
-    for (std::size_t at; (at = body.find(marker)) != std::string::npos;) {
-      body.erase(at, std::string(marker).size());
+// One file per JTS source file, named after it (general__TestOverlayAA.txt); in each,
+// "case <n>" (n: the case's number in the XML file), then "a <operand>" and
+// "b <operand>", one geometry per line, as WKT or hex WKB. "#" lines are comments.
+// Anything else is an error: a damaged file must not quietly lose cases.
+std::vector<PeerCase> load_file(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  const std::string stem = path.stem().string();
+  std::vector<PeerCase> cases;
+  std::string a;
+  int number = 0;
+  int line_number = 0;
+  const auto fail = [&](const std::string& what) {
+    throw std::runtime_error(path.string() + ":" + std::to_string(line_number) + ": " + what);
+  };
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (line.empty() || line.front() == '#') continue;
+    if (line.rfind("case ", 0) == 0) {
+      if (number != 0) fail("case " + std::to_string(number) + " has no operand b");
+      const std::string digits = line.substr(5);
+      const bool all_digits =
+          !digits.empty() && digits.size() <= 6 &&
+          std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+      number = all_digits ? std::stoi(digits) : 0;
+      if (number == 0) fail("expected a positive case number after \"case\"");
+    } else if (line.rfind("a ", 0) == 0 && number != 0 && a.empty()) {
+      a = line.substr(2);
+    } else if (line.rfind("b ", 0) == 0 && !a.empty()) {
+      const std::string b = line.substr(2);
+      PeerCase c{stem + "#" + std::to_string(number), read_geometry(a), read_geometry(b),
+                 looks_like_wkb_hex(a) || looks_like_wkb_hex(b)};
+      cases.push_back(std::move(c));
+      number = 0;
+      a.clear();
+    } else {
+      fail("expected \"case <n>\", then \"a <geometry>\", then \"b <geometry>\"");
     }
   }
-  return body;
+  if (number != 0) fail("the file ends inside case " + std::to_string(number));
+  return cases;
 }
 
-// Hand-written scanning, enough for these files: <case> elements holding <a> and <b>
-// with WKT text (which may span lines); <desc> (sometimes CDATA) and comments dropped.
 std::vector<PeerCase> load_cases(int* files) {
   std::vector<fs::path> paths;
-  for (const fs::directory_entry& entry : fs::directory_iterator(kSuiteDir / "xml")) {
-    if (entry.path().extension() == ".xml") paths.push_back(entry.path());
+  for (const fs::directory_entry& entry : fs::directory_iterator(kCaseDir)) {
+    if (entry.path().extension() == ".txt") paths.push_back(entry.path());
   }
   std::sort(paths.begin(), paths.end());
   *files = static_cast<int>(paths.size());
   std::vector<PeerCase> cases;
   for (const fs::path& path : paths) {
-    std::string text = without_blocks(read_file(path), "<!--", "-->");
-    text = without_blocks(text, "<desc>", "</desc>");
-    int number = 0;
-    for (std::size_t at = 0; (at = text.find("<case>", at)) != std::string::npos;) {
-      const std::size_t end = text.find("</case>", at);
-      const std::string body = text.substr(at, end - at);
-      at = end;
-      ++number;
-      bool has_a = false;
-      bool has_b = false;
-      const std::string a = element(body, "a", &has_a);
-      const std::string b = element(body, "b", &has_b);
-      if (!has_a || !has_b) continue;
-      PeerCase c{path.stem().string() + "#" + std::to_string(number), {}, {}, false};
-      c.a = read_geometry(a);
-      c.b = read_geometry(b);
-      c.wkb = looks_like_wkb_hex(a) || looks_like_wkb_hex(b);
-      cases.push_back(std::move(c));
-    }
+    for (PeerCase& c : load_file(path)) cases.push_back(std::move(c));
   }
   return cases;
 }
 
 TEST(PeerSuite, CorpusIsPresent) {
-  ASSERT_TRUE(fs::is_directory(kSuiteDir / "xml"))
-      << "the JTS overlay peer suite is missing: expected its XML files in " << kSuiteDir / "xml"
-      << " (beside the repository, at ../shared/peer-suites/jts-overlay/xml)";
+  ASSERT_TRUE(fs::is_directory(kCaseDir))
+      << "the JTS overlay peer suite is missing: expected its case files in " << kCaseDir
+      << " (tests/clipper/peer_suite/cases in the repository)";
+  int files = 0;
+  EXPECT_EQ(load_cases(&files).size(),
+            static_cast<std::size_t>(kExpectedArealCases + kExpectedWkbCases +
+                                     kExpectedEmptyOperandCases));
 }
 
 // A hang must name its case rather than wait for CTest's timeout: the work runs on a
@@ -155,8 +152,7 @@ auto within_time_limit(const std::string& name, Work work) {
 // result is then unspecified, but the call returns), not checked; their number is
 // asserted, so the corpus cannot drift unnoticed.
 void RunArealCases(bool wkb, int expected_cases, int expected_outside_contract) {
-  ASSERT_TRUE(fs::is_directory(kSuiteDir / "xml"))
-      << "the JTS overlay peer suite is missing: " << kSuiteDir / "xml";
+  ASSERT_TRUE(fs::is_directory(kCaseDir)) << "the JTS overlay peer suite is missing: " << kCaseDir;
   int files = 0;
   const std::vector<PeerCase> cases = load_cases(&files);
   const char* label = wkb ? "peer suite (WKB inputs)" : "peer suite";
@@ -220,9 +216,9 @@ void RunArealCases(bool wkb, int expected_cases, int expected_outside_contract) 
   const int checked = areal - outside_contract;
   std::printf(
       "%s: %d/%d areal cases pass (%d of them outside clip()'s input contract, run only; "
-      "%d files, %d cases with two operands)\n",
-      label, checked - failures.count(), areal, outside_contract, files,
-      static_cast<int>(cases.size()));
+      "%d cases with two areal operands in %d files)\n",
+      label, checked - failures.count(), areal, outside_contract, static_cast<int>(cases.size()),
+      files);
   std::printf(
       "%s: worst relative area error %.3g (%s), tolerance %.0e; worst error/derived "
       "bound %.3g; largest derived bound %.3g of max(area A, area B); slowest case %.2f s "
@@ -235,13 +231,13 @@ void RunArealCases(bool wkb, int expected_cases, int expected_outside_contract) 
   EXPECT_EQ(failures.count(), 0) << "of " << checked << " areal cases checked";
 }
 
-// The README: CGAL finds all 172 WKT cases' inputs valid. (Three have a hole touching the
-// outer loop inside an edge, which CGAL's is_valid_polygon_with_holes rejects but OGC and
-// clip() allow; the oracle handles them.)
+// CGAL finds all 172 WKT cases' inputs valid (peer_suite/README.md). (Three have a hole
+// touching the outer loop inside an edge, which CGAL's is_valid_polygon_with_holes rejects
+// but OGC and clip() allow; the oracle handles them.)
 TEST(PeerSuite, ArealCasesMatchExactOverlay) { RunArealCases(false, kExpectedArealCases, 0); }
 
-// Some files give their inputs as hex WKB (PostGIS style) rather than WKT; the README's
-// count of 172 is of the WKT cases. These 31 run under the same checks; one of them,
+// Some files give their inputs as hex WKB (PostGIS style) rather than WKT; the count
+// of 172 is of the WKT cases. These 31 run under the same checks; one of them,
 // misc__TestOverlay#5, has an outer loop that crosses itself (CGAL agrees), outside
 // clip()'s contract.
 TEST(PeerSuite, WkbArealCasesMatchExactOverlay) { RunArealCases(true, kExpectedWkbCases, 1); }
@@ -249,8 +245,7 @@ TEST(PeerSuite, WkbArealCasesMatchExactOverlay) { RunArealCases(true, kExpectedW
 // The cases where an operand is POLYGON EMPTY or MULTIPOLYGON EMPTY (not among the 172):
 // nothing inside, the subject unchanged outside.
 TEST(PeerSuite, EmptyOperands) {
-  ASSERT_TRUE(fs::is_directory(kSuiteDir / "xml"))
-      << "the JTS overlay peer suite is missing: " << kSuiteDir / "xml";
+  ASSERT_TRUE(fs::is_directory(kCaseDir)) << "the JTS overlay peer suite is missing: " << kCaseDir;
   int files = 0;
   int count = 0;
   for (const PeerCase& c : load_cases(&files)) {
@@ -267,7 +262,7 @@ TEST(PeerSuite, EmptyOperands) {
     ExpectValid(swapped.outside);
   }
   std::printf("peer suite: %d cases with an empty areal operand\n", count);
-  EXPECT_GT(count, 0);
+  EXPECT_EQ(count, kExpectedEmptyOperandCases);
 }
 
 }  // namespace
