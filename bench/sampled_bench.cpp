@@ -1,4 +1,4 @@
-// The accuracy ladder (../shared/design/ARCHITECTURE.md): time against lit-area error,
+// The accuracy ladder (docs/architecture.md): time against lit-area error,
 // shadowgen's exact result next to two sampled estimators with a resolution knob, on the
 // same scenes and lights, in one run.
 //
@@ -33,7 +33,7 @@
 #include "bench/scenes/city.h"
 #include "bench/scenes/cube_grid.h"
 #include "bench/scenes/scene_lit_areas.h"
-#include "shadowgen/generate.h"
+#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::bench {
 namespace {

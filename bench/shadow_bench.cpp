@@ -37,7 +37,7 @@
 #include "bench/scenes/city.h"
 #include "bench/scenes/cube_grid.h"
 #include "bench/scenes/scene_lit_areas.h"
-#include "shadowgen/generate.h"
+#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::bench {
 namespace {

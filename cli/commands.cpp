@@ -1,4 +1,4 @@
-#include "cli/commands.h"
+#include "commands.h"
 
 #include <iostream>
 #include <set>
@@ -6,13 +6,13 @@
 #include <system_error>
 
 #include "cli/progress.h"
-#include "shadowgen/atomic_file.h"
-#include "shadowgen/database.h"
-#include "shadowgen/document.h"
-#include "shadowgen/generate.h"
-#include "shadowgen/input_error.h"
-#include "shadowgen/report.h"
-#include "shadowgen/scene_reader.h"
+#include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/database.h"
+#include "shadowgen/json/document.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/output/report.h"
+#include "shadowgen/scene/scene_reader.h"
 
 namespace shadowgen::cli {
 namespace {

@@ -4,14 +4,14 @@
 #include <string>
 #include <system_error>
 
-#include "cli/commands.h"
-#include "shadowgen/atomic_file.h"
-#include "shadowgen/database.h"
-#include "shadowgen/document.h"
-#include "shadowgen/generate.h"
-#include "shadowgen/input_error.h"
-#include "shadowgen/obj_export.h"
-#include "shadowgen/scene_reader.h"
+#include "commands.h"
+#include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/database.h"
+#include "shadowgen/json/document.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/output/obj_export.h"
+#include "shadowgen/scene/scene_reader.h"
 
 namespace shadowgen::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "cli/commands.h"
+#include "commands.h"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <ostream>
 #include <string>
 
-#include "shadowgen/generate.h"
+#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::cli {
 

@@ -1,13 +1,13 @@
 #include <glm/vec3.hpp>
 #include <string>
 
-#include "cli/commands.h"
-#include "shadowgen/camera.h"
-#include "shadowgen/database.h"
-#include "shadowgen/document.h"
-#include "shadowgen/input_error.h"
-#include "shadowgen/render.h"
-#include "shadowgen/svg_writer.h"
+#include "commands.h"
+#include "shadowgen/view/camera.h"
+#include "shadowgen/output/database.h"
+#include "shadowgen/json/document.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/view/render.h"
+#include "shadowgen/view/svg_writer.h"
 
 namespace shadowgen::cli {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "clipper/polygon.h"
 
-namespace shadowgen::hsr {
+namespace shadowgen::clipper {
 
 // An axis-aligned image-space bounding box.
 struct Box2 {
@@ -36,4 +36,4 @@ inline Box2 box_of(const clipper::PolygonWithHoles2& p) {
   return b;
 }
 
-}  // namespace shadowgen::hsr
+}  // namespace shadowgen::clipper

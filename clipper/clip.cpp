@@ -5,9 +5,9 @@
 #include <span>
 #include <vector>
 
-#include "clipper/detail/boundary_graph.h"
-#include "clipper/detail/overlay.h"
-#include "clipper/detail/snap_rounding.h"
+#include "detail/boundary_graph.h"
+#include "detail/overlay.h"
+#include "detail/snap_rounding.h"
 #include "clipper/normalize.h"
 
 namespace shadowgen::clipper {

@@ -1,8 +1,8 @@
 #include "clipper/merge.h"
 
-#include "clipper/detail/boundary_graph.h"
-#include "clipper/detail/overlay.h"
-#include "clipper/detail/snap_rounding.h"
+#include "detail/boundary_graph.h"
+#include "detail/overlay.h"
+#include "detail/snap_rounding.h"
 #include "clipper/normalize.h"
 
 namespace shadowgen::clipper {

@@ -1,10 +1,10 @@
-#include "shadowgen/detail/segment_contact.h"
+#include "clipper/segment_contact.h"
 
 #include <algorithm>
 
 #include "clipper/predicates.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::clipper {
 
 namespace {
 
@@ -45,4 +45,4 @@ SegmentContact segment_contact(const Point2& a, const Point2& b, const Point2& c
   return {};
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::clipper

@@ -4,7 +4,7 @@
 
 #include "clipper/point.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::clipper {
 
 enum class Contact {
   kNone,     // disjoint
@@ -22,4 +22,4 @@ struct SegmentContact {
 SegmentContact segment_contact(const clipper::Point2& a, const clipper::Point2& b,
                                const clipper::Point2& c, const clipper::Point2& d);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::clipper

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/triangulate.h"
+#include "clipper/triangulate.h"
 
 #include <algorithm>
 #include <limits>
@@ -7,9 +7,9 @@
 
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
-#include "shadowgen/detail/segment_contact.h"
+#include "clipper/segment_contact.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::clipper {
 
 namespace {
 
@@ -426,4 +426,4 @@ std::optional<std::vector<Triangle>> triangulate(std::span<const clipper::Loop2>
   return EarClipper().run(loops);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::clipper

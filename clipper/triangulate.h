@@ -18,7 +18,7 @@
 
 #include "clipper/polygon.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::clipper {
 
 using Triangle = std::array<std::size_t, 3>;
 
@@ -29,4 +29,4 @@ using Triangle = std::array<std::size_t, 3>;
 // bridge to some hole could be found, which valid input does not produce.
 std::optional<std::vector<Triangle>> triangulate(std::span<const clipper::Loop2> loops);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::clipper

@@ -1,11 +1,11 @@
-#include "shadowgen/area.h"
+#include "hsr/area.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
 
-#include "shadowgen/detail/collinearity.h"
+#include "hsr/collinearity.h"
 
-namespace shadowgen {
+namespace shadowgen::hsr {
 
 namespace {
 
@@ -13,9 +13,9 @@ namespace {
 // in space. The sums run relative to the loop's first vertex, so far from the origin the
 // products do not cancel. A loop whose vertices are collinear (decided exactly) has area
 // exactly 0, not the rounding noise the sums would leave.
-double loop_area(const hsr::Loop3& loop) {
+double loop_area(const Loop3& loop) {
   const std::size_t n = loop.size();
-  if (n < 3 || detail::all_collinear(loop)) return 0.0;
+  if (n < 3 || all_collinear(loop)) return 0.0;
   const glm::dvec3 o = loop[0];
   glm::dvec3 normal(0.0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -30,17 +30,17 @@ double loop_area(const hsr::Loop3& loop) {
 
 }  // namespace
 
-double area(const hsr::Polygon3& polygon) {
+double area(const Polygon3& polygon) {
   double a = loop_area(polygon.outer);
-  for (const hsr::Loop3& hole : polygon.holes) a -= loop_area(hole);
+  for (const Loop3& hole : polygon.holes) a -= loop_area(hole);
   // Holes lie inside the outer loop, so only rounding can take the difference below 0.
   return std::max(a, 0.0);
 }
 
-double area(std::span<const hsr::Polygon3> polygons) {
+double area(std::span<const Polygon3> polygons) {
   double sum = 0.0;
-  for (const hsr::Polygon3& p : polygons) sum += area(p);
+  for (const Polygon3& p : polygons) sum += area(p);
   return sum;
 }
 
-}  // namespace shadowgen
+}  // namespace shadowgen::hsr

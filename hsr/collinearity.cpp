@@ -1,8 +1,8 @@
-#include "shadowgen/detail/collinearity.h"
+#include "hsr/collinearity.h"
 
 #include "clipper/predicates.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::hsr {
 
 namespace {
 
@@ -50,4 +50,4 @@ bool all_collinear(std::span<const glm::dvec3> points) {
   return true;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::hsr

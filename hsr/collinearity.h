@@ -5,7 +5,7 @@
 #include <glm/vec3.hpp>
 #include <span>
 
-namespace shadowgen::detail {
+namespace shadowgen::hsr {
 
 // Number of distinct points, counted up to three (0, 1, 2 or 3): enough to tell a loop
 // that has fewer than three distinct vertices.
@@ -17,4 +17,4 @@ int distinct_points_up_to_3(std::span<const glm::dvec3> points);
 // Returns at the first triple that is not collinear, so it costs O(1) on ordinary loops.
 bool all_collinear(std::span<const glm::dvec3> points);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::hsr

@@ -7,9 +7,9 @@
 
 #include "clipper/clip.h"
 #include "clipper/merge.h"
-#include "hsr/box2.h"
+#include "clipper/box.h"
 #include "hsr/convex_window.h"
-#include "hsr/detail/half_plane.h"
+#include "detail/half_plane.h"
 #include "hsr/spatial_grid.h"
 
 namespace shadowgen::hsr {
@@ -40,10 +40,10 @@ class AreaSort {
 
   void run(std::vector<Piece> pieces, std::vector<Fragment>& out) {
     out_ = &out;
-    Box2 extent;
-    for (const Piece& p : pieces) extent.add(box_of(p.shape));
+    clipper::Box2 extent;
+    for (const Piece& p : pieces) extent.add(clipper::box_of(p.shape));
     SpatialGrid grid(extent, pieces.size());
-    std::vector<Box2> boxes;
+    std::vector<clipper::Box2> boxes;
     std::vector<bool> alive;
     // Rough depth sort: nearest first, by each piece's nearest vertex; ties by parent so
     // the order does not depend on the input order more than the geometry does.
@@ -55,7 +55,7 @@ class AreaSort {
     std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
     auto add = [&](Piece piece) {
       const std::size_t id = pieces.size();
-      boxes.push_back(box_of(piece.shape));
+      boxes.push_back(clipper::box_of(piece.shape));
       alive.push_back(true);
       grid.insert(id, boxes.back());
       const double key = nearest(piece);
@@ -65,7 +65,7 @@ class AreaSort {
     std::vector<Piece> initial = std::move(pieces);
     pieces.clear();
     for (Piece& p : initial) {
-      const Box2 box = box_of(p.shape);
+      const clipper::Box2 box = clipper::box_of(p.shape);
       if (!grid.is_wide(box)) {
         add(std::move(p));
         continue;
@@ -73,7 +73,7 @@ class AreaSort {
       // A polygon spanning much of the image (a ground plane) would be clipped by every
       // template over it, each time in whole: cut it into tiles first, so each template
       // clips only the tiles it covers. Tiles of one parent merge again at the end.
-      for (const Box2& t : grid.tiles(box, kTileBlock)) {
+      for (const clipper::Box2& t : grid.tiles(box, kTileBlock)) {
         const PolygonWithHoles2 rect{
             {{t.xmin, t.ymin}, {t.xmax, t.ymin}, {t.xmax, t.ymax}, {t.xmin, t.ymax}}, {}};
         ++stats_.clips;
@@ -93,7 +93,7 @@ class AreaSort {
       ++stats_.templates;
       const Piece template_piece = pieces[t];
       const ConvexWindow template_window(template_piece.shape);
-      const Box2 tbox = boxes[t];
+      const clipper::Box2 tbox = boxes[t];
       candidates.clear();
       grid.query(tbox, candidates);
       std::vector<Piece> inside;
@@ -152,7 +152,7 @@ class AreaSort {
     const Nearness& np = nearness_[piece.parent];
     const Nearness& nt = nearness_[front_parent];
     const PolygonWithHoles2 half =
-        detail::half_plane_in_box(np.a - nt.a, np.b - nt.b, np.c - nt.c, box_of(piece.shape));
+        detail::half_plane_in_box(np.a - nt.a, np.b - nt.b, np.c - nt.c, clipper::box_of(piece.shape));
     if (half.outer.empty()) return;
     ++stats_.clips;
     for (PolygonWithHoles2& p : clipper::clip(piece.shape, half).inside) {

@@ -13,7 +13,7 @@
 
 #include "clipper/point.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::hsr {
 
 struct PlaneChart {
   int dropped_axis = 2;
@@ -39,4 +39,4 @@ inline PlaneChart chart_facing(const glm::dvec3& normal) {
   return {ay >= ax ? 1 : 0};
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::hsr

@@ -3,7 +3,7 @@
 
 #include "clipper/clip.h"
 #include "clipper/normalize.h"
-#include "hsr/detail/half_plane.h"
+#include "detail/half_plane.h"
 #include "hsr/hidden_surface.h"
 
 namespace shadowgen::hsr {
@@ -112,7 +112,7 @@ clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view) 
     const double fx = f[i] - f[k] * n[i] / n[k];
     const double fy = f[j] - f[k] * n[j] / n[k];
     const double f0 = f[k] * chart.plane.offset / n[k] - view.near();
-    Box2 box;
+    clipper::Box2 box;
     for (const clipper::Point2& q : flat.outer) box.add(q);
     const clipper::PolygonWithHoles2 keep = detail::half_plane_in_box(fx, fy, f0, box);
     const clipper::PolygonSet2 front = clipper::intersection({flat}, {keep});

@@ -5,7 +5,7 @@
 
 namespace shadowgen::hsr {
 
-SpatialGrid::SpatialGrid(const Box2& extent, std::size_t expected_items) : extent_(extent) {
+SpatialGrid::SpatialGrid(const clipper::Box2& extent, std::size_t expected_items) : extent_(extent) {
   const double w = extent.xmax - extent.xmin, h = extent.ymax - extent.ymin;
   const double cells = static_cast<double>(std::max<std::size_t>(expected_items, 1));
   if (w > 0.0 && h > 0.0) {
@@ -18,7 +18,7 @@ SpatialGrid::SpatialGrid(const Box2& extent, std::size_t expected_items) : exten
   cells_.resize(static_cast<std::size_t>(nx_) * ny_);
 }
 
-bool SpatialGrid::cell_range(const Box2& box, int& x0, int& y0, int& x1, int& y1) const {
+bool SpatialGrid::cell_range(const clipper::Box2& box, int& x0, int& y0, int& x1, int& y1) const {
   auto clamp_cell = [](double v, int n) {
     return static_cast<int>(std::clamp(std::floor(v), 0.0, static_cast<double>(n - 1)));
   };
@@ -29,7 +29,7 @@ bool SpatialGrid::cell_range(const Box2& box, int& x0, int& y0, int& x1, int& y1
   return !box.empty();
 }
 
-void SpatialGrid::insert(std::size_t item, const Box2& box) {
+void SpatialGrid::insert(std::size_t item, const clipper::Box2& box) {
   if (item >= seen_.size()) {
     seen_.resize(item + 1, 0);
     is_wide_.resize(item + 1, false);
@@ -47,14 +47,14 @@ void SpatialGrid::insert(std::size_t item, const Box2& box) {
   }
 }
 
-bool SpatialGrid::is_wide(const Box2& box) const {
+bool SpatialGrid::is_wide(const clipper::Box2& box) const {
   int x0, y0, x1, y1;
   if (!cell_range(box, x0, y0, x1, y1)) return false;
   return static_cast<std::size_t>(x1 - x0 + 1) * (y1 - y0 + 1) > kMaxCells;
 }
 
-std::vector<Box2> SpatialGrid::tiles(const Box2& box, int block) const {
-  std::vector<Box2> out;
+std::vector<clipper::Box2> SpatialGrid::tiles(const clipper::Box2& box, int block) const {
+  std::vector<clipper::Box2> out;
   int x0, y0, x1, y1;
   if (!cell_range(box, x0, y0, x1, y1)) return out;
   // Grid lines computed one way only, so neighbouring tiles share their sides exactly.
@@ -66,7 +66,7 @@ std::vector<Box2> SpatialGrid::tiles(const Box2& box, int block) const {
   };
   for (int j = y0 - y0 % block; j <= y1; j += block) {
     for (int i = x0 - x0 % block; i <= x1; i += block) {
-      Box2 t;
+      clipper::Box2 t;
       t.xmin = i == 0 ? std::min(box.xmin, extent_.xmin) : line_x(i);
       t.ymin = j == 0 ? std::min(box.ymin, extent_.ymin) : line_y(j);
       t.xmax = i + block >= nx_ ? std::max(box.xmax, extent_.xmax) : line_x(i + block);
@@ -87,7 +87,7 @@ void SpatialGrid::erase_wide(std::size_t item) {
   }
 }
 
-void SpatialGrid::query(const Box2& box, std::vector<std::size_t>& out) {
+void SpatialGrid::query(const clipper::Box2& box, std::vector<std::size_t>& out) {
   if (++stamp_ == 0) {
     std::fill(seen_.begin(), seen_.end(), 0);
     stamp_ = 1;

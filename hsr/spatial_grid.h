@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "hsr/box2.h"
+#include "clipper/box.h"
 
 namespace shadowgen::hsr {
 
@@ -16,26 +16,26 @@ class SpatialGrid {
   // A grid of about `expected_items` cells over `extent`. Items wider than kMaxCells
   // cells are kept on a separate list that every query returns, so one huge polygon (a
   // ground plane) does not fill every cell again each time it is clipped.
-  SpatialGrid(const Box2& extent, std::size_t expected_items);
+  SpatialGrid(const clipper::Box2& extent, std::size_t expected_items);
 
-  void insert(std::size_t item, const Box2& box);
+  void insert(std::size_t item, const clipper::Box2& box);
   // Forgets an item of the wide list (cell entries of dead items are left for the caller
   // to skip: they cost one look each).
   void erase_wide(std::size_t item);
   // Appends, once each, the items whose cells meet `box` (a superset of the overlapping).
-  void query(const Box2& box, std::vector<std::size_t>& out);
+  void query(const clipper::Box2& box, std::vector<std::size_t>& out);
 
   // True when `box` would go to the wide list.
-  bool is_wide(const Box2& box) const;
+  bool is_wide(const clipper::Box2& box) const;
   // Rectangles of block × block cells, aligned with the grid, covering `box`: cutting a
   // wide polygon along them keeps each piece local.
-  std::vector<Box2> tiles(const Box2& box, int block) const;
+  std::vector<clipper::Box2> tiles(const clipper::Box2& box, int block) const;
 
  private:
   static constexpr std::size_t kMaxCells = 64;
-  bool cell_range(const Box2& box, int& x0, int& y0, int& x1, int& y1) const;
+  bool cell_range(const clipper::Box2& box, int& x0, int& y0, int& x1, int& y1) const;
 
-  Box2 extent_;
+  clipper::Box2 extent_;
   int nx_ = 1, ny_ = 1;
   double sx_ = 1.0, sy_ = 1.0;
   std::vector<std::vector<std::size_t>> cells_;

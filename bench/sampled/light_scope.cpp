@@ -6,8 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "shadowgen/area.h"
-#include "shadowgen/detail/light_views.h"
+#include "hsr/area.h"
+#include "shadowgen/shadows/light_views.h"
 
 namespace shadowgen::bench {
 
@@ -30,7 +30,7 @@ LightScope light_scope(const Scene& scene, const Light& light) {
     f.area = area(face.parts[0]);
     const bool present =
         light.type == LightType::kDirectional || !light.range ||
-        detail::distance_to_polygon(light.position, face.parts[0], hsr::plane_of(face.parts[0])) <=
+        distance_to_polygon(light.position, face.parts[0], hsr::plane_of(face.parts[0])) <=
             light.range->end;
     const double facing = light.type == LightType::kDirectional
                               ? -glm::dot(f.normal, light.direction)

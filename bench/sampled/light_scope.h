@@ -9,7 +9,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen::bench {
 

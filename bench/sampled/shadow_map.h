@@ -1,7 +1,7 @@
 #pragma once
 
 // Sampled lit-area estimator 1: a shadow map (Williams 1978, the depth-buffer method
-// the papers in ../shared/papers/ compare against). The faces in the light's scope are
+// the shadow-volume papers compare against). The faces in the light's scope are
 // rasterised from the light into a depth buffer of map_size × map_size texels (texel
 // centres tested against each convex face's image; a directional light gets one
 // orthographic map fitted to the scope's bounding box, a point light a cube map of six
@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen::bench {
 

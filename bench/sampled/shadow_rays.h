@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen::bench {
 

@@ -18,7 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen::bench {
 

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "shadowgen/area.h"
+#include "hsr/area.h"
 
 namespace shadowgen::bench {
 

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "shadowgen/generate.h"
+#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::bench {
 

@@ -1,10 +1,10 @@
-#include "clipper/detail/boundary_graph.h"
+#include "boundary_graph.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "clipper/detail/point_index.h"
-#include "clipper/detail/point_location.h"
+#include "point_index.h"
+#include "point_location.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 

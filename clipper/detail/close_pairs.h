@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "clipper/detail/boundary_graph.h"
+#include "boundary_graph.h"
 
 namespace shadowgen::clipper::detail {
 

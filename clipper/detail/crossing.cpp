@@ -1,4 +1,4 @@
-#include "clipper/detail/crossing.h"
+#include "crossing.h"
 
 #include <algorithm>
 #include <cmath>

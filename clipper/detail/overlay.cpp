@@ -1,4 +1,4 @@
-#include "clipper/detail/overlay.h"
+#include "overlay.h"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 #include <limits>
 #include <span>
 
-#include "clipper/detail/point_index.h"
-#include "clipper/detail/point_location.h"
+#include "point_index.h"
+#include "point_location.h"
 #include "clipper/predicates.h"
 
 namespace shadowgen::clipper::detail {

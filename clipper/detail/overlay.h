@@ -24,7 +24,7 @@
 
 #include <vector>
 
-#include "clipper/detail/boundary_graph.h"
+#include "boundary_graph.h"
 #include "clipper/polygon.h"
 
 namespace shadowgen::clipper::detail {

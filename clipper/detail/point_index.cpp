@@ -1,4 +1,4 @@
-#include "clipper/detail/point_index.h"
+#include "point_index.h"
 
 namespace shadowgen::clipper::detail {
 

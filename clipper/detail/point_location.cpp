@@ -1,4 +1,4 @@
-#include "clipper/detail/point_location.h"
+#include "point_location.h"
 
 #include "clipper/predicates.h"
 

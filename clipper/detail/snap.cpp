@@ -1,4 +1,4 @@
-#include "clipper/detail/snap.h"
+#include "snap.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "clipper/detail/snap_rounding.h"
+#include "snap_rounding.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <unordered_set>
 #include <utility>
 
-#include "clipper/detail/close_pairs.h"
-#include "clipper/detail/crossing.h"
-#include "clipper/detail/snap.h"
+#include "close_pairs.h"
+#include "crossing.h"
+#include "snap.h"
 #include "clipper/predicates.h"
 
 namespace shadowgen::clipper::detail {

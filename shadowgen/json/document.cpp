@@ -1,4 +1,4 @@
-#include "shadowgen/document.h"
+#include "shadowgen/json/document.h"
 
 #include <fstream>
 #include <iterator>
@@ -7,8 +7,8 @@
 #include <sstream>
 #include <system_error>
 
-#include "shadowgen/detail/json_text.h"
-#include "shadowgen/input_error.h"
+#include "shadowgen/json/json_text.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
 namespace {

@@ -2,7 +2,7 @@
 
 // A shadowgen JSON file as the command line meets it: a scene (`shadowgen-scene/1`) or a
 // shadowed database (`shadowgen-shadowed/1`), told apart by the top-level "format" key
-// (../shared/spec/scene-format.md).
+// (docs/scene-format.md).
 
 #include <filesystem>
 #include <string>

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/json_text.h"
+#include "shadowgen/json/json_text.h"
 
 #include <array>
 #include <charconv>

@@ -22,11 +22,7 @@ class InputError : public std::runtime_error {
 
  private:
   static std::string format(const std::string& file, const std::string& face_id,
-                            const std::string& problem) {
-    std::string s = file;
-    if (!face_id.empty()) s += ": face '" + face_id + "'";
-    return s + ": " + problem;
-  }
+                            const std::string& problem);
   std::string file_, face_id_, problem_;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// The scene as shadowgen models it (../shared/spec/scene-format.md, `shadowgen-scene/1`):
+// The scene as shadowgen models it (docs/scene-format.md, `shadowgen-scene/1`):
 // faces in 3D with their ids, lights and optional views.
 
 #include <cstddef>
@@ -12,6 +12,10 @@
 #include "hsr/polygon3.h"
 
 namespace shadowgen {
+
+// Relative planarity tolerance: a polygon is planar when every vertex lies within
+// kPlanarityTolerance × (its largest extent) of its best-fit plane.
+inline constexpr double kPlanarityTolerance = 1e-9;
 
 // One face of the scene. Its front side is the side from which the outer loop of each
 // part runs counter-clockwise. A planar face has one part; a non-planar polygon is split

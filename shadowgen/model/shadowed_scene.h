@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "hsr/polygon3.h"
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen {
 

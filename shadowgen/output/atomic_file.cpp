@@ -1,4 +1,4 @@
-#include "shadowgen/atomic_file.h"
+#include "shadowgen/output/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "shadowgen/database.h"
+#include "shadowgen/output/database.h"
 
 #include <cmath>
 #include <cstddef>
@@ -10,10 +10,10 @@
 #include <unordered_set>
 #include <utility>
 
-#include "shadowgen/atomic_file.h"
-#include "shadowgen/detail/json_text.h"
-#include "shadowgen/document.h"
-#include "shadowgen/input_error.h"
+#include "shadowgen/output/atomic_file.h"
+#include "shadowgen/json/json_text.h"
+#include "shadowgen/json/document.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
 namespace {

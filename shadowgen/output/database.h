@@ -41,7 +41,7 @@
 #include <filesystem>
 #include <string>
 
-#include "shadowgen/shadowed_scene.h"
+#include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen {
 

@@ -1,4 +1,4 @@
-#include "shadowgen/obj_export.h"
+#include "shadowgen/output/obj_export.h"
 
 #include <algorithm>
 #include <array>
@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "clipper/predicates.h"
-#include "shadowgen/area.h"
-#include "shadowgen/detail/plane_chart.h"
-#include "shadowgen/detail/triangulate.h"
-#include "shadowgen/light_regions.h"
+#include "hsr/area.h"
+#include "hsr/plane_chart.h"
+#include "clipper/triangulate.h"
+#include "shadowgen/shadows/light_regions.h"
 
 namespace shadowgen {
 namespace {
@@ -73,7 +73,7 @@ class FaceBlock {
 
 struct Part {
   hsr::Plane3 plane;
-  detail::PlaneChart chart;
+  hsr::PlaneChart chart;
 };
 
 // The part whose plane the region polygon lies in: the one whose normal its own normal
@@ -175,7 +175,7 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
     for (const hsr::Polygon3& p : face.parts) {
       const hsr::Plane3 plane = hsr::plane_of(p);
       if (plane.normal != glm::dvec3(0.0))
-        parts.push_back({plane, detail::chart_facing(plane.normal)});
+        parts.push_back({plane, hsr::chart_facing(plane.normal)});
     }
 
     FaceBlock block(vertex_count, normal_count);
@@ -198,14 +198,14 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
         }
         std::vector<clipper::Point2> flat;
         for (const clipper::Loop2& loop : loops) flat.insert(flat.end(), loop.begin(), loop.end());
-        const std::optional<std::vector<detail::Triangle>> triangles = detail::triangulate(loops);
+        const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
         if (!triangles) {
           throw std::runtime_error("face '" + face.id + "': a region of light set '" +
                                    light_set_name(scene, region.lights) +
                                    "' could not be split into triangles");
         }
         const std::size_t n = block.normal(part.plane.normal);
-        for (const detail::Triangle& t : *triangles) {
+        for (const clipper::Triangle& t : *triangles) {
           if (clipper::orient2d(flat[t[0]], flat[t[1]], flat[t[2]]) ==
               clipper::Orientation::kCollinear) {
             continue;  // no area

@@ -41,8 +41,8 @@
 #include <string>
 #include <string_view>
 
-#include "shadowgen/scene.h"
-#include "shadowgen/shadowed_scene.h"
+#include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen {
 

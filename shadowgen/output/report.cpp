@@ -1,4 +1,4 @@
-#include "shadowgen/report.h"
+#include "shadowgen/output/report.h"
 
 #include <algorithm>
 #include <array>
@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "shadowgen/area.h"
-#include "shadowgen/detail/json_text.h"
+#include "hsr/area.h"
+#include "shadowgen/json/json_text.h"
 
 namespace shadowgen {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "shadowgen/shadowed_scene.h"
+#include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen {
 

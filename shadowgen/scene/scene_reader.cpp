@@ -1,4 +1,4 @@
-#include "shadowgen/scene_reader.h"
+#include "shadowgen/scene/scene_reader.h"
 
 #include <array>
 #include <cmath>
@@ -10,9 +10,9 @@
 #include <unordered_map>
 #include <utility>
 
-#include "shadowgen/detail/face_builder.h"
-#include "shadowgen/input_error.h"
-#include "shadowgen/mesh_reader.h"
+#include "detail/face_builder.h"
+#include "shadowgen/model/input_error.h"
+#include "detail/mesh_reader.h"
 
 namespace shadowgen {
 
@@ -364,7 +364,7 @@ class SceneParser {
       }
     }
     result_.scene.faces.push_back(detail::build_face(
-        std::move(polygon), {id, file_, detail::FaceKind::kPolygon}, options_, result_.warnings));
+        std::move(polygon), {id, file_, detail::FaceKind::kPolygon}, options_.strict, result_.warnings));
   }
 
   void read_mesh_entry(const json& entry, const Where& where) {
@@ -385,7 +385,7 @@ class SceneParser {
       mesh.key("file").fail("mesh file '" + file + "' not found (looked for '" +
                             mesh_path.string() + "')");
     }
-    const MeshSoup soup = read_mesh(mesh_path, id);
+    const detail::MeshSoup soup = detail::read_mesh(mesh_path, id);
     const std::string mesh_file = mesh_path.string();
     if (soup.faces.empty()) {
       result_.warnings.push_back(
@@ -402,7 +402,7 @@ class SceneParser {
     }
 
     for (std::size_t k = 0; k < soup.faces.size(); ++k) {
-      const MeshFaceRecord& record = soup.faces[k];
+      const detail::MeshFaceRecord& record = soup.faces[k];
       const std::string face_id = id + "/" + std::to_string(k);
       const std::string at_line =
           record.line > 0 ? " (line " + std::to_string(record.line) + ")" : "";
@@ -437,7 +437,7 @@ class SceneParser {
       }
       result_.scene.faces.push_back(
           detail::build_face(std::move(polygon), {face_id, mesh_file, detail::FaceKind::kMeshFace},
-                             options_, result_.warnings));
+                             options_.strict, result_.warnings));
     }
   }
 

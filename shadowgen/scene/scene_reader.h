@@ -1,9 +1,9 @@
 #pragma once
 
-// Reading a `shadowgen-scene/1` file (../shared/spec/scene-format.md): JSON polygons with
+// Reading a `shadowgen-scene/1` file (docs/scene-format.md): JSON polygons with
 // holes and mesh files (OBJ, OFF, PLY, STL) with optional transforms. JSON coordinates
 // keep full double precision; OFF and PLY meshes go through OpenMesh, whose readers pass
-// vertices through single precision (shadowgen/mesh_reader.h).
+// vertices through single precision (shadowgen/scene/detail/mesh_reader.h).
 // Every problem is an InputError naming the file, the face id and what is wrong; nothing
 // is returned half-read.
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen {
 
@@ -19,10 +19,6 @@ struct ReadOptions {
   // Non-planar polygons are an error instead of being split into triangles.
   bool strict = false;
 };
-
-// Relative planarity tolerance: a polygon is planar when every vertex lies within
-// kPlanarityTolerance × (its largest extent) of its best-fit plane.
-inline constexpr double kPlanarityTolerance = 1e-9;
 
 struct ReadResult {
   Scene scene;

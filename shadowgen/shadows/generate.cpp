@@ -1,4 +1,4 @@
-#include "shadowgen/generate.h"
+#include "shadowgen/shadows/generate.h"
 
 #include <algorithm>
 #include <atomic>
@@ -12,14 +12,14 @@
 #include <unordered_map>
 
 #include "clipper/merge.h"
-#include "hsr/box2.h"
+#include "clipper/box.h"
 #include "hsr/convex_window.h"
 #include "hsr/hidden_surface.h"
 #include "hsr/spatial_grid.h"
-#include "shadowgen/detail/coplanar_groups.h"
-#include "shadowgen/detail/grazing_light.h"
-#include "shadowgen/detail/light_views.h"
-#include "shadowgen/detail/part_plane.h"
+#include "detail/coplanar_groups.h"
+#include "detail/grazing_light.h"
+#include "shadowgen/shadows/light_views.h"
+#include "detail/part_plane.h"
 
 namespace shadowgen {
 namespace {
@@ -114,7 +114,7 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
   considered.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (light.type == LightType::kPoint && light.range &&
-        detail::distance_to_polygon(light.position, parts.polygons[i], parts.planes[i]) >
+        distance_to_polygon(light.position, parts.polygons[i], parts.planes[i]) >
             light.range->end) {
       ++stats.faces_culled_range;
       continue;
@@ -139,7 +139,7 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     planes = planes_in_range;
   }
 
-  const std::vector<hsr::View> views = detail::light_views(light, polygons, planes, parts.centre);
+  const std::vector<hsr::View> views = light_views(light, polygons, planes, parts.centre);
   stats.frusta = views.size();
   for (const hsr::View& view : views) {
     hsr::VisibleSurfaces visible = hsr::remove_hidden_surfaces(polygons, view);
@@ -169,12 +169,12 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
         const clipper::PolygonWithHoles2* shape;
       };
       std::vector<Owned> pieces;
-      std::vector<hsr::Box2> boxes;
-      hsr::Box2 extent;
+      std::vector<clipper::Box2> boxes;
+      clipper::Box2 extent;
       for (std::size_t m : members) {
         for (const auto& piece : seen[m]) {
           pieces.push_back({m, &piece});
-          boxes.push_back(hsr::box_of(piece));
+          boxes.push_back(clipper::box_of(piece));
           extent.add(boxes.back());
         }
       }
@@ -186,10 +186,10 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
         if (!faces_light(planes[k], light)) continue;
         const clipper::PolygonSet2 image = hsr::project_polygon(polygons[k], view);
         if (image.empty()) continue;
-        hsr::Box2 box;
+        clipper::Box2 box;
         std::vector<hsr::ConvexWindow> windows;
         for (const auto& p : image) {
-          box.add(hsr::box_of(p));
+          box.add(clipper::box_of(p));
           windows.emplace_back(p);
         }
         near.clear();

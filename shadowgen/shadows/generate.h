@@ -23,8 +23,8 @@
 #include <functional>
 #include <vector>
 
-#include "shadowgen/scene.h"
-#include "shadowgen/shadowed_scene.h"
+#include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen {
 

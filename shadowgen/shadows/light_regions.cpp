@@ -1,4 +1,4 @@
-#include "shadowgen/light_regions.h"
+#include "shadowgen/shadows/light_regions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +13,9 @@
 #include "clipper/clip.h"
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
-#include "shadowgen/area.h"
-#include "shadowgen/detail/plane_chart.h"
-#include "shadowgen/scene_reader.h"
+#include "hsr/area.h"
+#include "hsr/plane_chart.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen {
 namespace {
@@ -26,7 +26,7 @@ using LightSet = std::vector<std::size_t>;
 class PartChart {
  public:
   PartChart(const hsr::Polygon3& part, const hsr::Plane3& plane)
-      : chart_(detail::chart_facing(plane.normal)), plane_(plane), origin_(part.outer[0]) {
+      : chart_(hsr::chart_facing(plane.normal)), plane_(plane), origin_(part.outer[0]) {
     const int d = chart_.dropped_axis;
     // The chart keeps a loop's turning sense exactly when the normal's dropped component is
     // positive (plane_chart.h); otherwise loops are reversed on the way back to 3D.
@@ -84,7 +84,7 @@ class PartChart {
     return out;
   }
 
-  detail::PlaneChart chart_;
+  hsr::PlaneChart chart_;
   hsr::Plane3 plane_;
   glm::dvec3 origin_;
   bool reversed_ = false;

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "hsr/polygon3.h"
-#include "shadowgen/scene.h"
-#include "shadowgen/shadowed_scene.h"
+#include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen {
 

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/light_views.h"
+#include "shadowgen/shadows/light_views.h"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
-namespace shadowgen::detail {
+namespace shadowgen {
 namespace {
 
 double distance_to_segment(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
@@ -93,4 +93,4 @@ std::vector<hsr::View> light_views(const Light& light, std::span<const hsr::Poly
   return views;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen

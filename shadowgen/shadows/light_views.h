@@ -7,9 +7,9 @@
 
 #include "hsr/polygon3.h"
 #include "hsr/view.h"
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen {
 
 // Directional light: one orthographic view along its direction, centred on `centre`.
 // Point light: the 90-degree frusta along ±x, ±y, ±z around it that contain part of some
@@ -24,4 +24,4 @@ std::vector<hsr::View> light_views(const Light& light, std::span<const hsr::Poly
 double distance_to_polygon(const glm::dvec3& p, const hsr::Polygon3& polygon,
                            const hsr::Plane3& plane);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen

@@ -1,4 +1,4 @@
-#include "shadowgen/camera.h"
+#include "shadowgen/view/camera.h"
 
 #include <algorithm>
 #include <cmath>

@@ -31,7 +31,7 @@
 
 #include "clipper/polygon.h"
 #include "hsr/view.h"
-#include "shadowgen/scene.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen {
 

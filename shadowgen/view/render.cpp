@@ -1,4 +1,4 @@
-#include "shadowgen/render.h"
+#include "shadowgen/view/render.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <unordered_map>
 
 #include "clipper/clip.h"
-#include "shadowgen/light_regions.h"
+#include "shadowgen/shadows/light_regions.h"
 
 namespace shadowgen {
 namespace {

@@ -52,8 +52,8 @@
 
 #include "clipper/polygon.h"
 #include "hsr/hidden_surface.h"
-#include "shadowgen/camera.h"
-#include "shadowgen/shadowed_scene.h"
+#include "shadowgen/view/camera.h"
+#include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen {
 

@@ -1,11 +1,11 @@
-#include "shadowgen/svg_writer.h"
+#include "shadowgen/view/svg_writer.h"
 
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <string_view>
 
-#include "shadowgen/atomic_file.h"
+#include "shadowgen/output/atomic_file.h"
 
 namespace shadowgen {
 namespace {

@@ -19,7 +19,7 @@
 #include <filesystem>
 #include <string>
 
-#include "shadowgen/render.h"
+#include "shadowgen/view/render.h"
 
 namespace shadowgen {
 

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "shadowgen/generate.h"
-#include "shadowgen/report.h"
-#include "shadowgen/scene_reader.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/output/report.h"
+#include "shadowgen/scene/scene_reader.h"
 #include "tests/cli/cli_harness.h"
 #include "tests/support/obj_text.h"
 

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/face_builder.h"
+#include "face_builder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <utility>
 
 #include "clipper/predicates.h"
-#include "shadowgen/detail/collinearity.h"
-#include "shadowgen/detail/loop_validation.h"
-#include "shadowgen/detail/plane_chart.h"
-#include "shadowgen/detail/triangulate.h"
-#include "shadowgen/input_error.h"
+#include "hsr/collinearity.h"
+#include "loop_validation.h"
+#include "hsr/plane_chart.h"
+#include "clipper/triangulate.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
 
@@ -31,9 +31,9 @@ bool finite(const glm::dvec3& v) {
 // A chart for a loop whose Newell normal came out zero (its signed areas cancel, as in a
 // figure-eight, or underflow): any chart in which it is not collinear; validation then
 // finds what is wrong with it.
-PlaneChart chart_without_normal(const hsr::Loop3& loop) {
+hsr::PlaneChart chart_without_normal(const hsr::Loop3& loop) {
   for (int axis : {2, 0, 1}) {
-    const PlaneChart chart{axis};
+    const hsr::PlaneChart chart{axis};
     const clipper::Point2 a = chart(loop[0]);
     for (std::size_t i = 1; i < loop.size(); ++i) {
       const clipper::Point2 b = chart(loop[i]);
@@ -49,7 +49,7 @@ PlaneChart chart_without_normal(const hsr::Loop3& loop) {
   return {};
 }
 
-clipper::Loop2 to_chart(const hsr::Loop3& loop, const PlaneChart& chart) {
+clipper::Loop2 to_chart(const hsr::Loop3& loop, const hsr::PlaneChart& chart) {
   clipper::Loop2 out;
   out.reserve(loop.size());
   for (const glm::dvec3& p : loop) out.push_back(chart(p));
@@ -120,7 +120,7 @@ std::string face_message(const std::string& file, const std::string& face_id,
   return InputError(file, face_id, what).what();
 }
 
-Face build_face(hsr::Polygon3 polygon, const FaceSource& source, const ReadOptions& options,
+Face build_face(hsr::Polygon3 polygon, const FaceSource& source, bool strict,
                 std::vector<std::string>& warnings) {
   auto fail = [&](const std::string& what) { throw InputError(source.file, source.id, what); };
   auto warn = [&](const std::string& what) {
@@ -139,15 +139,15 @@ Face build_face(hsr::Polygon3 polygon, const FaceSource& source, const ReadOptio
       fail("hole " + std::to_string(k) + " has " + std::to_string(polygon.holes[k].size()) +
            " vertices; at least 3 are needed");
     }
-    if (distinct_points_up_to_3(polygon.holes[k]) < 3) {
+    if (hsr::distinct_points_up_to_3(polygon.holes[k]) < 3) {
       fail("hole " + std::to_string(k) + " has fewer than 3 distinct vertices");
     }
   }
 
   // Degenerate faces are kept as given.
-  const bool too_few = distinct_points_up_to_3(polygon.outer) < 3;
+  const bool too_few = hsr::distinct_points_up_to_3(polygon.outer) < 3;
   if (too_few && !mesh) fail(outer_name + " has fewer than 3 distinct vertices");
-  if (too_few || all_collinear(polygon.outer)) {
+  if (too_few || hsr::all_collinear(polygon.outer)) {
     if (!polygon.holes.empty()) {
       fail("the outer loop has no area (its vertices are collinear), so no hole can lie in it");
     }
@@ -162,7 +162,7 @@ Face build_face(hsr::Polygon3 polygon, const FaceSource& source, const ReadOptio
   {
     std::vector<hsr::Loop3> holes;
     for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
-      if (all_collinear(polygon.holes[k])) {
+      if (hsr::all_collinear(polygon.holes[k])) {
         warn("hole " + std::to_string(k) + " has no area (collinear vertices): ignored");
         continue;
       }
@@ -181,14 +181,14 @@ Face build_face(hsr::Polygon3 polygon, const FaceSource& source, const ReadOptio
              : "a vertex lies " + short_number(flat.deviation) + " from the best-fit plane, " +
                    short_number(flat.deviation / flat.extent) +
                    " of the face's extent; tolerance " + short_number(kPlanarityTolerance);
-  if (!planar && options.strict) fail("not planar (" + how_far + ")");
+  if (!planar && strict) fail("not planar (" + how_far + ")");
 
   // A planar face is checked in its exact chart; a non-planar one in its projection on
   // the best-fit plane, where it will be triangulated (a coordinate chart could fold it).
   std::vector<clipper::Loop2> loops;
   if (planar) {
-    const PlaneChart chart =
-        has_normal ? chart_facing(normal) : chart_without_normal(polygon.outer);
+    const hsr::PlaneChart chart =
+        has_normal ? hsr::chart_facing(normal) : chart_without_normal(polygon.outer);
     loops.push_back(to_chart(polygon.outer, chart));
     for (const hsr::Loop3& hole : polygon.holes) loops.push_back(to_chart(hole, chart));
   } else {
@@ -210,16 +210,16 @@ Face build_face(hsr::Polygon3 polygon, const FaceSource& source, const ReadOptio
     return face;
   }
 
-  const std::optional<std::vector<Triangle>> triangles = triangulate(loops);
+  const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
   if (!triangles) fail("not planar (" + how_far + "), and could not be split into triangles");
 
   std::vector<glm::dvec3> vertices(polygon.outer);
   for (const hsr::Loop3& hole : polygon.holes) {
     vertices.insert(vertices.end(), hole.begin(), hole.end());
   }
-  for (const Triangle& t : *triangles) {
+  for (const clipper::Triangle& t : *triangles) {
     hsr::Loop3 corners{vertices[t[0]], vertices[t[1]], vertices[t[2]]};
-    if (all_collinear(corners)) continue;  // no area in 3D either: adds nothing
+    if (hsr::all_collinear(corners)) continue;  // no area in 3D either: adds nothing
     face.parts.push_back({std::move(corners), {}});
   }
   warn("not planar (" + how_far + "): split into " + std::to_string(face.parts.size()) +

@@ -1,7 +1,7 @@
 #pragma once
 
 // From loops as a file gives them to a scene Face: the checks and normalisations that the
-// scene format (../shared/spec/scene-format.md) asks of JSON polygons and mesh faces
+// scene format (docs/scene-format.md) asks of JSON polygons and mesh faces
 // alike.
 //
 //   - A loop needs at least 3 vertices (an error otherwise).
@@ -27,8 +27,7 @@
 #include <vector>
 
 #include "hsr/polygon3.h"
-#include "shadowgen/scene.h"
-#include "shadowgen/scene_reader.h"
+#include "shadowgen/model/scene.h"
 
 namespace shadowgen::detail {
 
@@ -41,7 +40,7 @@ struct FaceSource {
 };
 
 // Throws InputError naming source.file and source.id; appends warnings to `warnings`.
-Face build_face(hsr::Polygon3 polygon, const FaceSource& source, const ReadOptions& options,
+Face build_face(hsr::Polygon3 polygon, const FaceSource& source, bool strict,
                 std::vector<std::string>& warnings);
 
 // "file: face 'id': what", the form of InputError's messages.

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/loop_validation.h"
+#include "loop_validation.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
-#include "shadowgen/detail/segment_contact.h"
+#include "clipper/segment_contact.h"
 
 namespace shadowgen::detail {
 
@@ -160,8 +160,8 @@ class Checker {
   }
 
   std::optional<std::string> check_pair(const Edge& e0, const Edge& f0) {
-    const SegmentContact m = segment_contact(e0.a, e0.b, f0.a, f0.b);
-    if (m.contact == Contact::kNone) return std::nullopt;
+    const clipper::SegmentContact m = clipper::segment_contact(e0.a, e0.b, f0.a, f0.b);
+    if (m.contact == clipper::Contact::kNone) return std::nullopt;
     // Lower loop first, so the outer loop is named first.
     const bool swap = f0.loop < e0.loop || (f0.loop == e0.loop && f0.index < e0.index);
     const Edge& e = swap ? f0 : e0;
@@ -170,7 +170,7 @@ class Checker {
       const std::size_t n = loops_[e.loop].points.size();
       const bool adjacent = (e.index + 1) % n == f.index || (f.index + 1) % n == e.index;
       if (adjacent) {
-        if (m.contact != Contact::kOverlap) return std::nullopt;  // their shared vertex
+        if (m.contact != clipper::Contact::kOverlap) return std::nullopt;  // their shared vertex
         const std::size_t shared = (e.index + 1) % n == f.index ? f.index : e.index;
         return names_[e.loop] + " doubles back on itself at vertex " + vertex_name(e.loop, shared);
       }
@@ -179,10 +179,10 @@ class Checker {
     }
     const std::string edges = "(edge " + edge_name(e) + " of " + names_[e.loop] + ", edge " +
                               edge_name(f) + " of " + names_[f.loop] + ")";
-    if (m.contact == Contact::kCross) {
+    if (m.contact == clipper::Contact::kCross) {
       return names_[f.loop] + " crosses " + names_[e.loop] + " " + edges;
     }
-    if (m.contact == Contact::kOverlap) {
+    if (m.contact == clipper::Contact::kOverlap) {
       return names_[f.loop] + " runs along " + names_[e.loop] + " " + edges +
              "; loops may touch only at points";
     }

@@ -1,6 +1,6 @@
 // The project's only translation unit that includes OpenMesh.
 
-#include "shadowgen/mesh_reader.h"
+#include "mesh_reader.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/Options.hh>
@@ -11,11 +11,11 @@
 #include <iterator>
 #include <sstream>
 
-#include "shadowgen/detail/obj_reader.h"
-#include "shadowgen/detail/stl_reader.h"
-#include "shadowgen/input_error.h"
+#include "obj_reader.h"
+#include "stl_reader.h"
+#include "shadowgen/model/input_error.h"
 
-namespace shadowgen {
+namespace shadowgen::detail {
 
 namespace {
 
@@ -171,4 +171,4 @@ MeshSoup read_mesh(const std::filesystem::path& file, const std::string& mesh_id
   return read_with_openmesh(file, ext);
 }
 
-}  // namespace shadowgen
+}  // namespace shadowgen::detail

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowgen {
+namespace shadowgen::detail {
 
 struct MeshFaceRecord {
   std::vector<std::int64_t> vertices;  // 0-based; may be out of range (the caller checks)
@@ -42,4 +42,4 @@ struct MeshSoup {
 // at fault) when the file cannot be read or parsed.
 MeshSoup read_mesh(const std::filesystem::path& file, const std::string& mesh_id);
 
-}  // namespace shadowgen
+}  // namespace shadowgen::detail

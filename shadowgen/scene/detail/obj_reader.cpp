@@ -1,10 +1,10 @@
-#include "shadowgen/detail/obj_reader.h"
+#include "obj_reader.h"
 
 #include <charconv>
 #include <cmath>
 #include <vector>
 
-#include "shadowgen/input_error.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
 

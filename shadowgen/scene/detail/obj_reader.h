@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "shadowgen/mesh_reader.h"
+#include "mesh_reader.h"
 
 namespace shadowgen::detail {
 

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/stl_reader.h"
+#include "stl_reader.h"
 
 #include <bit>
 #include <cctype>
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <vector>
 
-#include "shadowgen/input_error.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
 

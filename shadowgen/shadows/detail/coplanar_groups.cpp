@@ -1,4 +1,4 @@
-#include "shadowgen/detail/coplanar_groups.h"
+#include "coplanar_groups.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/grazing_light.h"
+#include "grazing_light.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "clipper/clip.h"
 #include "clipper/normalize.h"
-#include "shadowgen/detail/plane_lifter.h"
+#include "plane_lifter.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -45,7 +45,7 @@ clipper::PolygonWithHoles2 grown_box(const clipper::Loop2& loop) {
 struct FaceFrame {
   glm::dvec3 origin;
   glm::dvec3 normal;
-  PlaneChart chart;
+  hsr::PlaneChart chart;
   double height(const glm::dvec3& p) const { return glm::dot(normal, p - origin); }
 };
 
@@ -156,7 +156,7 @@ std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
                                                 std::span<const hsr::Plane3> planes,
                                                 std::span<const int> coplanar, const Light& light) {
   const hsr::Polygon3& face = polygons[part];
-  const FaceFrame frame{face.outer.front(), planes[part].normal, chart_facing(planes[part].normal)};
+  const FaceFrame frame{face.outer.front(), planes[part].normal, hsr::chart_facing(planes[part].normal)};
   const double sine = grazing_sine(face, planes[part], light);
   PlaneLifter lifter(planes[part], frame.origin);
   const clipper::PolygonWithHoles2 region = lifter.flatten(face);

@@ -1,4 +1,4 @@
-#include "shadowgen/detail/part_plane.h"
+#include "part_plane.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "clipper/clip.h"
 #include "clipper/merge.h"
-#include "shadowgen/detail/plane_lifter.h"
+#include "plane_lifter.h"
 
 namespace shadowgen::detail {
 

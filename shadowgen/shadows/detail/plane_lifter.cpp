@@ -1,11 +1,11 @@
-#include "shadowgen/detail/plane_lifter.h"
+#include "plane_lifter.h"
 
 #include <algorithm>
 
 namespace shadowgen::detail {
 
 PlaneLifter::PlaneLifter(const hsr::Plane3& plane, const glm::dvec3& origin)
-    : chart_(chart_facing(plane.normal)), plane_(plane), origin_(origin) {}
+    : chart_(hsr::chart_facing(plane.normal)), plane_(plane), origin_(origin) {}
 
 clipper::Loop2 PlaneLifter::flatten(const hsr::Loop3& loop) {
   clipper::Loop2 out;

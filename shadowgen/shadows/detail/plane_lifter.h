@@ -14,7 +14,7 @@
 
 #include "clipper/polygon.h"
 #include "hsr/polygon3.h"
-#include "shadowgen/detail/plane_chart.h"
+#include "hsr/plane_chart.h"
 
 namespace shadowgen::detail {
 
@@ -33,12 +33,12 @@ class PlaneLifter {
   // p − origin for a point of the plane given by its chart coordinates.
   glm::dvec3 offset_on_plane(const clipper::Point2& q) const;
   const glm::dvec3& origin() const { return origin_; }
-  const PlaneChart& chart() const { return chart_; }
+  const hsr::PlaneChart& chart() const { return chart_; }
 
  private:
   hsr::Loop3 lift(const clipper::Loop2& loop) const;
 
-  PlaneChart chart_;
+  hsr::PlaneChart chart_;
   hsr::Plane3 plane_;
   glm::dvec3 origin_;
   std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> known_;

@@ -1,13 +1,13 @@
 // Telling a scene from a shadowed database (shadowgen/document.h) by the "format" key,
 // without building the document.
 
-#include "shadowgen/document.h"
+#include "shadowgen/json/document.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "shadowgen/input_error.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
 namespace {

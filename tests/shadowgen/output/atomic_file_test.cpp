@@ -1,7 +1,7 @@
 // Whole-file output (shadowgen/atomic_file.h): the destination holds the old or the new
 // content, never a part, and no temporary file is left behind.
 
-#include "shadowgen/atomic_file.h"
+#include "shadowgen/output/atomic_file.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -2,7 +2,7 @@
 // clear messages for malformed files. Scenes are built by hand so that these tests do
 // not depend on shadow generation.
 
-#include "shadowgen/database.h"
+#include "shadowgen/output/database.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "shadowgen/input_error.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
 namespace {

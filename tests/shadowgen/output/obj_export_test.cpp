@@ -3,7 +3,7 @@
 // light-set region, lit and shadowed parts add up to the face, names and colours are as
 // documented, vertices read back bit for bit, and the output is deterministic.
 
-#include "shadowgen/obj_export.h"
+#include "shadowgen/output/obj_export.h"
 
 #include <gtest/gtest.h>
 
@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "clipper/predicates.h"
-#include "shadowgen/area.h"
-#include "shadowgen/detail/plane_chart.h"
-#include "shadowgen/generate.h"
-#include "shadowgen/light_regions.h"
+#include "hsr/area.h"
+#include "hsr/plane_chart.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/shadows/light_regions.h"
 #include "tests/shadowgen/hand_scenes.h"
 #include "tests/support/obj_text.h"
 
@@ -124,7 +124,7 @@ Worst ExpectObjMatches(const ShadowedScene& s, const ObjFiles& files, double tol
     for (const test::ObjTriangle& t : group.triangles) {
       const test::Vec3 n = t.normals[0];
       EXPECT_NEAR(test::dot(n, n), 1.0, 1e-12);
-      const detail::PlaneChart chart = detail::chart_facing({n[0], n[1], n[2]});
+      const hsr::PlaneChart chart = hsr::chart_facing({n[0], n[1], n[2]});
       auto at = [&chart, &t](int k) {
         const test::Vec3& v = t.corners[static_cast<std::size_t>(k)];
         return chart(glm::dvec3(v[0], v[1], v[2]));

@@ -2,7 +2,7 @@
 // table for people to the byte. Scenes are built by hand so that these tests do not depend
 // on shadow generation.
 
-#include "shadowgen/report.h"
+#include "shadowgen/output/report.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "shadowgen/area.h"
+#include "hsr/area.h"
 
 namespace shadowgen {
 namespace {

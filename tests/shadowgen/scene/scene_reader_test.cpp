@@ -1,8 +1,8 @@
 // Tests of shadowgen/scene_reader.h: the scene format's contract
-// (../shared/spec/scene-format.md) as the reader keeps it. Malformed scenes come as a
+// (docs/scene-format.md) as the reader keeps it. Malformed scenes come as a
 // table; mesh files are written into a temporary folder per test run.
 
-#include "shadowgen/scene_reader.h"
+#include "shadowgen/scene/scene_reader.h"
 
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -22,10 +22,10 @@
 
 #include "clipper/polygon.h"
 #include "hsr/polygon3.h"
-#include "shadowgen/area.h"
-#include "shadowgen/detail/loop_validation.h"
-#include "shadowgen/detail/triangulate.h"
-#include "shadowgen/input_error.h"
+#include "hsr/area.h"
+#include "shadowgen/scene/detail/loop_validation.h"
+#include "clipper/triangulate.h"
+#include "shadowgen/model/input_error.h"
 #include "tests/support/cgal_oracle.h"
 
 namespace shadowgen {
@@ -997,7 +997,7 @@ double signed_area(const clipper::Point2& a, const clipper::Point2& b, const cli
 
 // Every triangle turns like the outer loop, and their areas add up to the polygon's.
 void expect_triangulation(const std::vector<clipper::Loop2>& loops, std::size_t expected_count) {
-  const auto triangles = detail::triangulate(loops);
+  const auto triangles = clipper::triangulate(loops);
   ASSERT_TRUE(triangles);
   EXPECT_EQ(triangles->size(), expected_count);
   std::vector<clipper::Point2> all;
@@ -1051,7 +1051,7 @@ TEST(Triangulate, HolesAreBridged) {
 
 TEST(Triangulate, HolesTouchingTheOuterLoopAndEachOther) {
   const clipper::Loop2 outer{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
-  const auto triangles = detail::triangulate(
+  const auto triangles = clipper::triangulate(
       std::vector<clipper::Loop2>{outer, {{0, 5}, {3, 6}, {3, 4}}, {{3, 6}, {5, 8}, {5, 5}}});
   ASSERT_TRUE(triangles);
   expect_triangulation({outer, {{0, 5}, {3, 6}, {3, 4}}, {{3, 6}, {5, 8}, {5, 5}}},
@@ -1173,7 +1173,7 @@ TEST(Triangulate, RandomHolesTouchingTheBoundaryAndEachOther) {
     std::vector<std::string> names(loops.size(), "loop");
     if (detail::check_loops(loops, names).problem) continue;
     ++triangulated;
-    const auto triangles = detail::triangulate(loops);
+    const auto triangles = clipper::triangulate(loops);
     ASSERT_TRUE(triangles);
     std::vector<clipper::Point2> all;
     for (const auto& loop : loops) all.insert(all.end(), loop.begin(), loop.end());

@@ -3,7 +3,7 @@
 // regions are disjoint and cover the face, and the regions holding a light add up to that
 // light's lit area.
 
-#include "shadowgen/light_regions.h"
+#include "shadowgen/shadows/light_regions.h"
 
 #include <gtest/gtest.h>
 
@@ -19,9 +19,9 @@
 
 #include "clipper/clip.h"
 #include "clipper/normalize.h"
-#include "shadowgen/area.h"
-#include "shadowgen/detail/plane_chart.h"
-#include "shadowgen/generate.h"
+#include "hsr/area.h"
+#include "hsr/plane_chart.h"
+#include "shadowgen/shadows/generate.h"
 #include "tests/shadowgen/hand_scenes.h"
 #include "tests/support/cgal_oracle.h"
 
@@ -99,7 +99,7 @@ struct Worst {
 std::string lit_problem(const ShadowedScene& shadowed, std::size_t face) {
   for (std::size_t l = 0; l < shadowed.lit[face].size(); ++l) {
     for (const hsr::Polygon3& polygon : shadowed.lit[face][l]) {
-      const detail::PlaneChart chart = detail::chart_facing(hsr::plane_of(polygon).normal);
+      const hsr::PlaneChart chart = hsr::chart_facing(hsr::plane_of(polygon).normal);
       clipper::PolygonWithHoles2 p;
       for (const glm::dvec3& v : polygon.outer) p.outer.push_back(chart(v));
       for (const hsr::Loop3& h : polygon.holes) {
@@ -178,7 +178,7 @@ Worst ExpectPartition(const ShadowedScene& shadowed, double tolerance) {
     // face (of one region or of two) overlap.
     for (const hsr::Polygon3& part : face.parts) {
       const hsr::Plane3 plane = hsr::plane_of(part);
-      const detail::PlaneChart chart = detail::chart_facing(plane.normal);
+      const hsr::PlaneChart chart = hsr::chart_facing(plane.normal);
       const double scale = std::abs(plane.normal[chart.dropped_axis]);
       std::vector<clipper::PolygonWithHoles2> images;
       for (const LightRegion& r : regions) {

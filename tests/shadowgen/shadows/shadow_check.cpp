@@ -1,13 +1,13 @@
-#include "tests/shadowgen/shadow_check.h"
+#include "tests/shadowgen/shadows/shadow_check.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
 
-#include "shadowgen/generate.h"
-#include "shadowgen/report.h"
-#include "tests/shadowgen/shadow_oracle.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/output/report.h"
+#include "tests/shadowgen/shadows/shadow_oracle.h"
 
 namespace shadowgen::test {
 namespace {

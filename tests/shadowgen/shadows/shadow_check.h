@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "shadowgen/scene.h"
-#include "shadowgen/shadowed_scene.h"
+#include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen::test {
 

@@ -12,12 +12,12 @@
 #include <set>
 #include <sstream>
 
-#include "shadowgen/database.h"
-#include "shadowgen/generate.h"
-#include "shadowgen/report.h"
-#include "tests/shadowgen/shadow_check.h"
-#include "tests/shadowgen/shadow_oracle.h"
-#include "tests/shadowgen/shadow_scenes.h"
+#include "shadowgen/output/database.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/output/report.h"
+#include "tests/shadowgen/shadows/shadow_check.h"
+#include "tests/shadowgen/shadows/shadow_oracle.h"
+#include "tests/shadowgen/shadows/shadow_scenes.h"
 
 namespace shadowgen::test {
 namespace {

@@ -2,7 +2,7 @@
 // construction). 3D constructions are done in CGAL's exact rationals (the exact number
 // type behind Epeck); 2D regions are Epeck polygon sets in each part's chart.
 
-#include "tests/shadowgen/shadow_oracle.h"
+#include "tests/shadowgen/shadows/shadow_oracle.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>

@@ -2,13 +2,13 @@
 // generation against the oracle: lit areas and lit regions (the symmetric difference, so
 // a misplaced region of the right area fails) within 1e-9 of each face's area.
 
-#include "tests/shadowgen/shadow_oracle.h"
+#include "tests/shadowgen/shadows/shadow_oracle.h"
 
 #include <gtest/gtest.h>
 
-#include "shadowgen/generate.h"
-#include "tests/shadowgen/shadow_check.h"
-#include "tests/shadowgen/shadow_scenes.h"
+#include "shadowgen/shadows/generate.h"
+#include "tests/shadowgen/shadows/shadow_check.h"
+#include "tests/shadowgen/shadows/shadow_scenes.h"
 
 namespace shadowgen::test {
 namespace {

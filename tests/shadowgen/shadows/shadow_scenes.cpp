@@ -1,4 +1,4 @@
-#include "tests/shadowgen/shadow_scenes.h"
+#include "tests/shadowgen/shadows/shadow_scenes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // cover the image of the visible faces, cameras inside a closed box and next to a face
 // crossing the near plane, back sides, and the shading formula.
 
-#include "shadowgen/render.h"
+#include "shadowgen/view/render.h"
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "clipper/clip.h"
-#include "shadowgen/camera.h"
-#include "shadowgen/generate.h"
-#include "shadowgen/report.h"
+#include "shadowgen/view/camera.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/output/report.h"
 #include "tests/shadowgen/hand_scenes.h"
 
 namespace shadowgen {

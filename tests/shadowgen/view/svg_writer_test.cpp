@@ -1,7 +1,7 @@
 // SVG text of a picture (shadowgen/svg_writer.h): the document's frame, one path per
 // piece with its holes, coordinates that read back to the same doubles, escaped ids.
 
-#include "shadowgen/svg_writer.h"
+#include "shadowgen/view/svg_writer.h"
 
 #include <gtest/gtest.h>
 
