@@ -27,11 +27,10 @@ LightScope light_scope(const Scene& scene, const Light& light) {
     f.loop = face.parts[0].outer;
     const glm::dvec3 n = glm::cross(f.loop[1] - f.loop[0], f.loop[2] - f.loop[0]);
     f.normal = glm::normalize(n);
-    f.area = area(face.parts[0]);
-    const bool present =
-        light.type == LightType::kDirectional || !light.range ||
-        distance_to_polygon(light.position, face.parts[0], hsr::plane_of(face.parts[0])) <=
-            light.range->end;
+    f.area = hsr::area(face.parts[0]);
+    const bool present = light.type == LightType::kDirectional || !light.range ||
+                         distance_to_polygon(light.position, face.parts[0],
+                                             hsr::plane_of(face.parts[0])) <= light.range->end;
     const double facing = light.type == LightType::kDirectional
                               ? -glm::dot(f.normal, light.direction)
                               : glm::dot(f.normal, light.position - f.loop[0]);

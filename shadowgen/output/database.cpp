@@ -10,10 +10,10 @@
 #include <unordered_set>
 #include <utility>
 
-#include "shadowgen/output/atomic_file.h"
-#include "shadowgen/json/json_text.h"
 #include "shadowgen/json/document.h"
+#include "shadowgen/json/json_text.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/output/atomic_file.h"
 
 namespace shadowgen {
 namespace {
@@ -102,7 +102,15 @@ void check_writable(const ShadowedScene& shadowed) {
       check.fail("lit details for " + std::to_string(shadowed.lit[f].size()) +
                  " lights, the scene has " + std::to_string(scene.lights.size()));
     }
-    for (const std::vector<Polygon3>& lit : shadowed.lit[f]) check.polygons(lit);
+    for (const std::vector<LitPolygon>& lit : shadowed.lit[f]) {
+      for (const LitPolygon& p : lit) {
+        if (p.part >= scene.faces[f].parts.size()) {
+          check.fail("a lit polygon on part " + std::to_string(p.part) + " of a face of " +
+                     std::to_string(scene.faces[f].parts.size()) + " parts");
+        }
+        check.polygons({&p.polygon, 1});
+      }
+    }
   }
 }
 
@@ -134,6 +142,16 @@ void append_polygon(std::string& out, const Polygon3& polygon) {
     append_loop(out, polygon.holes[i]);
   }
   out += "]}";
+}
+
+// A lit polygon: the polygon's keys, and "part" on a face of several parts.
+void append_lit_polygon(std::string& out, const LitPolygon& lit, bool with_part) {
+  append_polygon(out, lit.polygon);
+  if (!with_part) return;
+  out.pop_back();
+  out += ",\"part\":";
+  out += std::to_string(lit.part);
+  out += '}';
 }
 
 void append_key(std::string& out, std::string_view key) {
@@ -202,7 +220,7 @@ void append_lines(std::string& out, const Items& items, std::string_view indent,
 }
 
 void append_face(std::string& out, const Face& face, const std::vector<Light>& lights,
-                 const std::vector<std::vector<Polygon3>>& lit) {
+                 const std::vector<std::vector<LitPolygon>>& lit) {
   out += "{\n      \"id\": ";
   append_json_string(out, face.id);
   out += ",\n      \"source_file\": ";
@@ -217,7 +235,10 @@ void append_face(std::string& out, const Face& face, const std::vector<Light>& l
     first = false;
     append_json_string(out, lights[l].id);
     out += ": ";
-    append_lines(out, lit[l], "          ", append_polygon);
+    const bool with_part = face.parts.size() > 1;
+    append_lines(out, lit[l], "          ", [with_part](std::string& text, const LitPolygon& p) {
+      append_lit_polygon(text, p, with_part);
+    });
   }
   out += first ? "}" : "\n      }";
   out += "\n    }";
@@ -313,6 +334,46 @@ class DatabaseReader {
     return polygons;
   }
 
+  // Lit polygons of `face`: each on the part its "part" key names. Without the key (a
+  // database written before parts were recorded) a polygon lies on the part whose plane
+  // is nearest to its outer vertices, the first of equals.
+  std::vector<LitPolygon> lit_polygons(const Json& value, const std::string& where,
+                                       const Face& face) const {
+    array(value, where);
+    std::vector<LitPolygon> out;
+    out.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      const std::string item_at = at(where, i);
+      LitPolygon lit{0, polygon(value[i], item_at)};
+      if (const auto part = value[i].find("part"); part != value[i].end()) {
+        if (!part->is_number_unsigned() || part->get<std::size_t>() >= face.parts.size()) {
+          fail(at(item_at, "part"), "expected the index of one of the face's " +
+                                        std::to_string(face.parts.size()) + " parts");
+        }
+        lit.part = part->get<std::size_t>();
+      } else if (face.parts.size() > 1) {
+        lit.part = nearest_part(lit.polygon, face);
+      }
+      out.push_back(std::move(lit));
+    }
+    return out;
+  }
+
+  static std::size_t nearest_part(const Polygon3& polygon, const Face& face) {
+    std::size_t best = 0;
+    double best_distance = INFINITY;
+    for (std::size_t k = 0; k < face.parts.size(); ++k) {
+      const hsr::Plane3 plane = hsr::plane_of(face.parts[k]);
+      double d = 0.0;
+      for (const glm::dvec3& p : polygon.outer) d = std::max(d, std::abs(plane.signed_distance(p)));
+      if (d < best_distance) {
+        best_distance = d;
+        best = k;
+      }
+    }
+    return best;
+  }
+
   // "lights[2] ('lamp')" once the id is known.
   static std::string named(const std::string& where, const std::string& id) {
     return where + " ('" + id + "')";
@@ -384,13 +445,13 @@ class DatabaseReader {
       face.parts = polygons(member(value, "parts", ""), "parts");
       if (face.parts.empty()) fail("parts", "a face needs at least one polygon");
 
-      std::vector<std::vector<Polygon3>> lit(light_count);
+      std::vector<std::vector<LitPolygon>> lit(light_count);
       const Json& lit_value = object(member(value, "lit", ""), "lit");
       for (const auto& [light_id, polygons_value] : lit_value.items()) {
         const std::string lit_at = "lit['" + light_id + "']";
         const auto light = light_index_.find(light_id);
         if (light == light_index_.end()) fail(lit_at, "no light has this id");
-        lit[light->second] = polygons(polygons_value, lit_at);
+        lit[light->second] = lit_polygons(polygons_value, lit_at, face);
       }
       shadowed.scene.faces.push_back(std::move(face));
       shadowed.lit.push_back(std::move(lit));

@@ -24,13 +24,15 @@
 //           POLYGON, ...                        non-planar one
 //         ],
 //         "lit": {                              by light id; a light whose lit region
-//           "sun": [POLYGON, ...]               on this face is empty is left out
+//           "sun": [LIT, ...]                   on this face is empty is left out
 //         }
 //       }
 //     ]
 //   }
 //
 //   POLYGON = {"outer":[[x,y,z],...],"holes":[[[x,y,z],...],...]}
+//   LIT = POLYGON, with "part":k after "holes" on a face of several parts: the index of
+//         the part whose plane it lies in (without the key, the nearest part's plane)
 //
 // All coordinates are the scene's, in 3D; a lit polygon lies in its face's plane and the
 // lit polygons of one (face, light) cover exactly its lit region. Every loop has at least

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "clipper/predicates.h"
+#include "clipper/triangulate.h"
 #include "hsr/area.h"
 #include "hsr/plane_chart.h"
-#include "clipper/triangulate.h"
 #include "shadowgen/shadows/light_regions.h"
 
 namespace shadowgen {
@@ -75,22 +75,6 @@ struct Part {
   hsr::Plane3 plane;
   hsr::PlaneChart chart;
 };
-
-// The part whose plane the region polygon lies in: the one whose normal its own normal
-// is nearest (light_regions gives each polygon the plane and orientation of its part).
-const Part& part_of(const std::vector<Part>& parts, const hsr::Polygon3& polygon) {
-  const glm::dvec3 own = hsr::plane_of(polygon).normal;
-  std::size_t best = 0;
-  double best_dot = -2.0;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    const double d = glm::dot(own, parts[k].plane.normal);
-    if (d > best_dot) {
-      best_dot = d;
-      best = k;
-    }
-  }
-  return parts[best];
-}
 
 // Material names, one per light set, unique.
 std::map<LightSet, std::string, LightSetLess> material_names(
@@ -171,11 +155,10 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
     obj += '\n';
     if (regions[f].empty()) continue;
 
-    std::vector<Part> parts;
+    std::vector<Part> parts;  // by the index of the face's part
     for (const hsr::Polygon3& p : face.parts) {
       const hsr::Plane3 plane = hsr::plane_of(p);
-      if (plane.normal != glm::dvec3(0.0))
-        parts.push_back({plane, hsr::chart_facing(plane.normal)});
+      parts.push_back({plane, hsr::chart_facing(plane.normal)});
     }
 
     FaceBlock block(vertex_count, normal_count);
@@ -184,8 +167,9 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
       faces += "usemtl ";
       faces += names.at(region.lights);
       faces += '\n';
-      for (const hsr::Polygon3& polygon : region.polygons) {
-        const Part& part = part_of(parts, polygon);
+      for (const LitPolygon& lit : region.polygons) {
+        const hsr::Polygon3& polygon = lit.polygon;
+        const Part& part = parts[lit.part];
         std::vector<glm::dvec3> corners(polygon.outer);
         std::vector<clipper::Loop2> loops(1);
         for (const glm::dvec3& p : polygon.outer) loops[0].push_back(part.chart(p));

@@ -185,7 +185,7 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
       row.face = f;
       row.light = l;
       row.area = face_area;
-      row.lit_area = clamped_lit_area(area(shadowed.lit[f][l]), face_area);
+      row.lit_area = clamped_lit_area(lit_area(shadowed.lit[f][l]), face_area);
       row.lit_fraction = fraction(row.lit_area, face_area);
       rows.push_back(row);
     }

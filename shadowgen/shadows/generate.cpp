@@ -11,15 +11,15 @@
 #include <thread>
 #include <unordered_map>
 
-#include "clipper/merge.h"
 #include "clipper/box.h"
+#include "clipper/merge.h"
+#include "detail/coplanar_groups.h"
+#include "detail/grazing_light.h"
+#include "detail/part_plane.h"
 #include "hsr/convex_window.h"
 #include "hsr/hidden_surface.h"
 #include "hsr/spatial_grid.h"
-#include "detail/coplanar_groups.h"
-#include "detail/grazing_light.h"
 #include "shadowgen/shadows/light_views.h"
-#include "detail/part_plane.h"
 
 namespace shadowgen {
 namespace {
@@ -29,6 +29,7 @@ struct Parts {
   std::vector<hsr::Polygon3> polygons;
   std::vector<hsr::Plane3> planes;
   std::vector<std::size_t> face;  // owner face index
+  std::vector<std::size_t> part;  // index among the owner's parts
   std::vector<int> coplanar;      // detail::coplanar_groups
   glm::dvec3 centre{0.0};
 };
@@ -37,8 +38,10 @@ Parts flatten(const Scene& scene) {
   Parts parts;
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    for (const hsr::Polygon3& p : scene.faces[f].parts) {
+    for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k) {
+      const hsr::Polygon3& p = scene.faces[f].parts[k];
       parts.polygons.push_back(p);
+      parts.part.push_back(k);
       parts.planes.push_back(hsr::plane_of(p));
       parts.face.push_back(f);
       for (const glm::dvec3& v : p.outer) {
@@ -103,8 +106,8 @@ class BackProjector {
 };
 
 // The lit detail polygons of every face for one light.
-std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Light& light,
-                                                  LightStats& stats) {
+std::vector<std::vector<LitPolygon>> light_one(const Parts& parts, const Light& light,
+                                               LightStats& stats) {
   const std::size_t n = parts.polygons.size();
   // Per part, the lit polygons grouped by the light view that saw them.
   std::vector<std::vector<std::vector<hsr::Polygon3>>> lit_by_part(n);
@@ -234,7 +237,7 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
         detail::lit_by_grazing_light(k, polygons, planes, coplanar, light)};
   }
 
-  std::vector<std::vector<hsr::Polygon3>> lit_by_face;
+  std::vector<std::vector<LitPolygon>> lit_by_face;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t f = parts.face[i];
     if (lit_by_face.size() <= f) lit_by_face.resize(f + 1);
@@ -252,7 +255,7 @@ std::vector<std::vector<hsr::Polygon3>> light_one(const Parts& parts, const Ligh
     }
     for (hsr::Polygon3& p : lit) {
       ++stats.lit_polygons;
-      lit_by_face[f].push_back(std::move(p));
+      lit_by_face[f].push_back({parts.part[i], std::move(p)});
     }
   }
   return lit_by_face;
@@ -264,12 +267,12 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
   GenerateResult result;
   result.shadowed.scene = scene;
   const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
-  result.shadowed.lit.assign(faces, std::vector<std::vector<hsr::Polygon3>>(lights));
+  result.shadowed.lit.assign(faces, std::vector<std::vector<LitPolygon>>(lights));
   result.stats.resize(lights);
   if (lights == 0) return result;
 
   const Parts parts = flatten(scene);
-  std::vector<std::vector<std::vector<hsr::Polygon3>>> per_light(lights);
+  std::vector<std::vector<std::vector<LitPolygon>>> per_light(lights);
   std::atomic<std::size_t> next{0};
   std::mutex report_mutex;
   std::exception_ptr failure;

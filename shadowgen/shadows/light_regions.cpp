@@ -91,24 +91,6 @@ class PartChart {
   std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original_;
 };
 
-// Largest distance of the polygon's outer vertices from the plane.
-double distance_from_plane(const hsr::Polygon3& polygon, const hsr::Plane3& plane) {
-  double d = 0.0;
-  for (const glm::dvec3& p : polygon.outer) d = std::max(d, std::abs(plane.signed_distance(p)));
-  return d;
-}
-
-double extent_of(const Face& face) {
-  glm::dvec3 lo(INFINITY), hi(-INFINITY);
-  for (const hsr::Polygon3& part : face.parts) {
-    for (const glm::dvec3& p : part.outer) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  }
-  return face.parts.empty() ? 0.0 : glm::length(hi - lo);
-}
-
 }  // namespace
 
 std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_t face) {
@@ -122,7 +104,7 @@ std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_
     throw std::invalid_argument("light_regions: lit detail polygons not shaped [face][light]");
   }
   const Face& f = scene.faces[face];
-  const std::vector<std::vector<hsr::Polygon3>>& lit = shadowed.lit[face];
+  const std::vector<std::vector<LitPolygon>>& lit = shadowed.lit[face];
 
   // Parts with area, with their planes.
   std::vector<std::size_t> parts;
@@ -133,28 +115,17 @@ std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_
   }
   if (parts.empty()) return {};
 
-  // Each lit polygon goes to the part whose plane it lies nearest, and to any part tied
-  // with that one within the reader's planarity tolerance (coplanar triangles of one
-  // face): what it covers of each is found by clipping, so a tie costs nothing.
-  const double tie = kPlanarityTolerance * extent_of(f);
+  // Each lit polygon lies on the part it carries.
   std::vector<std::vector<std::vector<const hsr::Polygon3*>>> lit_by_part(
       f.parts.size(), std::vector<std::vector<const hsr::Polygon3*>>(lit.size()));
   for (std::size_t l = 0; l < lit.size(); ++l) {
-    for (const hsr::Polygon3& q : lit[l]) {
-      if (q.outer.size() < 3) continue;
-      std::vector<double> distance(parts.size());
-      double best = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k < parts.size(); ++k) {
-        distance[k] = parts.size() == 1 ? 0.0 : distance_from_plane(q, planes[parts[k]]);
-        best = std::min(best, distance[k]);
-      }
-      for (std::size_t k = 0; k < parts.size(); ++k) {
-        if (distance[k] <= best + tie) lit_by_part[parts[k]][l].push_back(&q);
-      }
+    for (const LitPolygon& q : lit[l]) {
+      if (q.polygon.outer.size() < 3 || q.part >= f.parts.size()) continue;
+      lit_by_part[q.part][l].push_back(&q.polygon);
     }
   }
 
-  std::map<LightSet, std::vector<hsr::Polygon3>, LightSetLess> by_set;
+  std::map<LightSet, std::vector<LitPolygon>, LightSetLess> by_set;
   for (const std::size_t k : parts) {
     PartChart chart(f.parts[k], planes[k]);
     std::vector<std::pair<LightSet, clipper::PolygonSet2>> regions;
@@ -185,9 +156,9 @@ std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_
 
     // Pieces of one set cut by different lit polygons of a light share edges: merged.
     for (const auto& [set, pieces] : regions) {
-      std::vector<hsr::Polygon3>& out = by_set[set];
+      std::vector<LitPolygon>& out = by_set[set];
       for (const clipper::PolygonWithHoles2& piece : clipper::merge_adjacent(pieces)) {
-        out.push_back(chart.lift(piece));
+        out.push_back({k, chart.lift(piece)});
       }
     }
   }

@@ -18,10 +18,10 @@ namespace shadowgen {
 // One region of a face lit by exactly the lights in `lights` (indices into scene.lights,
 // ascending; empty: in shadow from every light). Polygons in the face's plane(s), scene
 // coordinates, like the lit detail polygons: outer loops counter-clockwise seen from the
-// face's front side, holes the other way.
+// face's front side, holes the other way; each on the part of the face it names.
 struct LightRegion {
   std::vector<std::size_t> lights;
-  std::vector<hsr::Polygon3> polygons;
+  std::vector<LitPolygon> polygons;
 };
 
 // The order of light sets used everywhere they are listed (regions, OBJ materials): the
@@ -40,9 +40,8 @@ struct LightSetLess {
 // Method: each part of the face (one, or the triangles of a non-planar polygon) is taken
 // to its exact plane chart (shadowgen/detail/plane_chart.h); the part's region is split
 // by each light's lit polygons in turn with the Weiler–Atherton clipper, every piece
-// going to "inside" (the light joins its set) or "outside". A lit polygon belongs to the
-// part whose plane it lies nearest (to every part tied with that one, for coplanar
-// parts); each part keeps only what lies within it. Chart points that are vertices of
+// going to "inside" (the light joins its set) or "outside". Each lit polygon is clipped
+// against the part it carries (LitPolygon::part). Chart points that are vertices of
 // the part are lifted back to those exact 3D points; every other point (lit polygons'
 // vertices, which generation leaves within rounding of the plane, and new crossings)
 // gets the part's plane's coordinate along the dropped axis. So the regions' areas

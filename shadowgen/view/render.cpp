@@ -40,24 +40,6 @@ struct RegionImage {
   Box box;
 };
 
-// The part of `face` whose plane `polygon` lies nearest (largest distance of its vertices).
-std::size_t part_of(const Face& face, const std::vector<hsr::Plane3>& planes,
-                    const hsr::Polygon3& polygon) {
-  std::size_t best = 0;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (std::size_t part = 0; part < face.parts.size(); ++part) {
-    double distance = 0.0;
-    for (const glm::dvec3& p : polygon.outer) {
-      distance = std::max(distance, std::abs(planes[part].signed_distance(p)));
-    }
-    if (distance < best_distance) {
-      best_distance = distance;
-      best = part;
-    }
-  }
-  return best;
-}
-
 // Is every vertex of `polygon` inside the convex counter-clockwise `window`? A rounded
 // test: it only saves clipping fragments that lie well inside.
 bool inside_window(const clipper::PolygonWithHoles2& polygon, const clipper::Loop2& window) {
@@ -350,15 +332,12 @@ Picture render(const ShadowedScene& shadowed, const Camera& camera, const Render
       current_face = f;
       const Face& face = scene.faces[f];
       regions = light_regions(shadowed, f);
-      std::vector<hsr::Plane3> planes;
-      for (const hsr::Polygon3& p : face.parts) planes.push_back(hsr::plane_of(p));
       images.assign(regions.size(), std::vector<RegionImage>(face.parts.size()));
       for (std::size_t r = 0; r < regions.size(); ++r) {
         if (regions[r].lights.empty()) continue;  // shadow is what the others leave
-        for (const hsr::Polygon3& polygon : regions[r].polygons) {
-          const std::size_t on = face.parts.size() > 1 ? part_of(face, planes, polygon) : 0;
-          for (clipper::PolygonWithHoles2& p : hsr::project_polygon(polygon, view)) {
-            images[r][on].shape.push_back(std::move(p));
+        for (const LitPolygon& lit : regions[r].polygons) {
+          for (clipper::PolygonWithHoles2& p : hsr::project_polygon(lit.polygon, view)) {
+            images[r][lit.part].shape.push_back(std::move(p));
           }
         }
         for (RegionImage& image : images[r]) image.box.add(image.shape);

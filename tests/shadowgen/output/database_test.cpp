@@ -60,8 +60,8 @@ ShadowedScene sample() {
 
   Polygon3 lit_ground = square(0, 0, 10, 0);
   lit_ground.holes.push_back({{0.1, 0.2, 0}, {0.1, 0.7, 0}, {0.6, 0.7, 0}});
-  s.lit = {{{lit_ground, square(5, 5, 1, 0)}, {}},
-           {{}, {Polygon3{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1.5}}, {}}}}};
+  s.lit = {{{LitPolygon{0, lit_ground}, LitPolygon{0, square(5, 5, 1, 0)}}, {}},
+           {{}, {LitPolygon{1, Polygon3{{{1, 0, 1}, {1, 1, 1}, {0, 1, 1.5}}, {}}}}}};
   return s;
 }
 
@@ -95,6 +95,15 @@ void expect_same(const std::vector<Polygon3>& a, const std::vector<Polygon3>& b,
 
 // Everything the database stores, bit for bit (a light's unused position or direction
 // is not stored, so it is not compared).
+void expect_same(const std::vector<LitPolygon>& a, const std::vector<LitPolygon>& b,
+                 const std::string& where) {
+  ASSERT_EQ(a.size(), b.size()) << where;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].part, b[i].part) << where << "[" << i << "]";
+  }
+  expect_same(polygons_of(a), polygons_of(b), where);
+}
+
 void expect_same(const ShadowedScene& a, const ShadowedScene& b) {
   ASSERT_EQ(a.scene.faces.size(), b.scene.faces.size());
   for (std::size_t f = 0; f < a.scene.faces.size(); ++f) {
@@ -234,7 +243,7 @@ TEST(Database, ExtremeDoublesRoundTrip) {
                   {values[i + 2], values[i], values[i + 1]},
                   {values[i + 1], values[i + 2], values[i]}};
     s.scene.faces[0].parts.push_back({loop, {loop}});
-    s.lit[0][0].push_back({loop, {}});
+    s.lit[0][0].push_back({s.scene.faces[0].parts.size() - 1, {loop, {}}});
   }
   const ShadowedScene back = round_trip(s);
   expect_same(s, back);
@@ -313,12 +322,37 @@ TEST(Database, ReadsIntegersAndIgnoresUnknownKeys) {
   ASSERT_EQ(s.scene.faces.size(), 1u);
   EXPECT_EQ(s.scene.lights[0].direction, glm::dvec3(0, 0, -1));
   ASSERT_EQ(s.lit[0][0].size(), 1u);
-  EXPECT_EQ(s.lit[0][0][0].outer[1], glm::dvec3(1, 0, 0));
+  EXPECT_EQ(s.lit[0][0][0].polygon.outer[1], glm::dvec3(1, 0, 0));
+}
+
+// A lit polygon carries the part of its face it lies on: written as "part" on a face of
+// several parts, and without the key found as the part whose plane is nearest.
+TEST(Database, LitPolygonsKeepTheirPart) {
+  const std::string text = database_json(sample());
+  const nlohmann::json json = nlohmann::json::parse(text);
+  EXPECT_FALSE(json["faces"][0]["lit"]["sun"][0].contains("part"));  // one part: no key
+  EXPECT_EQ(json["faces"][1]["lit"]["lamp"][0]["part"], 1);
+
+  const auto read = [](const std::string& lit) {
+    return parse_database(R"({"format": "shadowgen-shadowed/1", "lights": [
+        {"id": "sun", "type": "directional", "direction": [0, 0, -1], "intensity": [1, 1, 1]}],
+      "views": [], "faces": [{"id": "bent", "source_file": "s.json", "parts": [
+        {"outer": [[0, 0, 1], [1, 0, 1], [0, 1, 1.5]], "holes": []},
+        {"outer": [[1, 0, 1], [1, 1, 1], [0, 1, 1.5]], "holes": []}],
+      "lit": {"sun": [)" + lit +
+                              "]}}]}",
+                          "db.json");
+  };
+  const std::string second = R"({"outer": [[1, 0, 1], [1, 1, 1], [0, 1, 1.5]], "holes": [])";
+  EXPECT_EQ(read(second + "}").lit[0][0][0].part, 1u);
+  EXPECT_EQ(read(second + R"(, "part": 0})").lit[0][0][0].part, 0u);
+  EXPECT_THROW(read(second + R"(, "part": 2})"), InputError);
+  EXPECT_THROW(read(second + R"(, "part": -1})"), InputError);
 }
 
 TEST(Database, RefusesToWriteWhatCannotBeReadBack) {
   ShadowedScene s = sample();
-  s.lit[1][1][0].outer[0].y = std::numeric_limits<double>::quiet_NaN();
+  s.lit[1][1][0].polygon.outer[0].y = std::numeric_limits<double>::quiet_NaN();
   try {
     (void)database_json(s);
     FAIL() << "a NaN was written";
@@ -327,7 +361,7 @@ TEST(Database, RefusesToWriteWhatCannotBeReadBack) {
   }
 
   s = sample();
-  s.lit[0][0][0].holes[0].pop_back();
+  s.lit[0][0][0].polygon.holes[0].pop_back();
   EXPECT_THROW((void)database_json(s), std::invalid_argument);
   s = sample();
   s.lit[0].pop_back();

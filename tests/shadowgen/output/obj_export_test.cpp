@@ -96,7 +96,7 @@ Worst ExpectObjMatches(const ShadowedScene& s, const ObjFiles& files, double tol
         ADD_FAILURE() << face.id << ": no triangles of " << material;
         continue;
       }
-      const double region_error = relative_error(areas.at(material), area(r.polygons));
+      const double region_error = relative_error(areas.at(material), lit_area(r.polygons));
       EXPECT_LE(region_error, tolerance) << face.id << ", " << material;
       worst.region = std::max(worst.region, region_error);
 
@@ -113,7 +113,7 @@ Worst ExpectObjMatches(const ShadowedScene& s, const ObjFiles& files, double tol
         const auto& set = set_of_material[material];
         if (std::find(set.begin(), set.end(), l) != set.end()) with_light += a;
       }
-      const double error = std::abs(with_light - area(s.lit[f][l])) / face_area;
+      const double error = std::abs(with_light - lit_area(s.lit[f][l])) / face_area;
       EXPECT_LE(error, tolerance) << face.id << ", light " << scene.lights[l].id;
       worst.lit = std::max(worst.lit, error);
     }
@@ -261,9 +261,9 @@ TEST(ObjExport, VerticesReadBackBitForBit) {
   std::set<test::Vec3> expected, read(obj.vertices.begin(), obj.vertices.end());
   for (std::size_t f = 0; f < s.scene.faces.size(); ++f) {
     for (const LightRegion& r : light_regions(s, f)) {
-      for (const hsr::Polygon3& p : r.polygons) {
-        for (const glm::dvec3& v : p.outer) expected.insert({v.x, v.y, v.z});
-        for (const hsr::Loop3& h : p.holes) {
+      for (const LitPolygon& lit : r.polygons) {
+        for (const glm::dvec3& v : lit.polygon.outer) expected.insert({v.x, v.y, v.z});
+        for (const hsr::Loop3& h : lit.polygon.holes) {
           for (const glm::dvec3& v : h) expected.insert({v.x, v.y, v.z});
         }
       }

@@ -54,9 +54,10 @@ ShadowedScene scene_with_ids(const std::string& ground, const std::string& sun) 
   // ground: the sun lights all but a 4 × 4 shadow (82); the lamp lights a 1 × 1 square.
   Polygon3 ground_lit = ground_polygon;
   ground_lit.holes.push_back(hole(4, 4, 8, 8));
-  s.lit = {{{ground_lit}, {rectangle(9, 9, 10, 10)}},
+  s.lit = {{{{0, ground_lit}}, {{0, rectangle(9, 9, 10, 10)}}},
            {{}, {}},
-           {{rectangle(0, 0, 4, 4, 3)}, {rectangle(0, 0, 2, 4, 3), rectangle(2, 0, 4, 1, 3)}}};
+           {{{0, rectangle(0, 0, 4, 4, 3)}},
+            {{0, rectangle(0, 0, 2, 4, 3)}, {0, rectangle(2, 0, 4, 1, 3)}}}};
   return s;
 }
 
@@ -76,9 +77,9 @@ TEST(ReportCsv, NumbersArePrintedWithSeventeenDigits) {
   ShadowedScene s;
   s.scene.faces = {Face{"thin", {rectangle(0, 0, 0.1, 1.0 / 3.0)}, "scene.json"}};
   s.scene.lights = {directional("sun")};
-  s.lit = {{{rectangle(0, 0, 0.1, 0.2)}}};
-  const double area_value = area(s.scene.faces[0].parts);
-  const double lit_value = area(s.lit[0][0]);
+  s.lit = {{{{0, rectangle(0, 0, 0.1, 0.2)}}}};
+  const double area_value = hsr::area(s.scene.faces[0].parts);
+  const double lit_value = lit_area(s.lit[0][0]);
   EXPECT_EQ(report_csv(s), "face_id,light_id,area,lit_area,lit_fraction\nthin,sun," +
                                g17(area_value) + "," + g17(lit_value) + "," +
                                g17(lit_value / area_value) + "\n");
@@ -126,8 +127,8 @@ TEST(ReportRows, LitAreaARoundingOverTheAreaIsClampedALargerExcessIsNot) {
   s.scene.lights = {directional("lamp")};
   Polygon3 hair_over = face;
   hair_over.outer[1].x = std::nextafter(0.34, 1.0);  // a rounding outside the face
-  s.lit = {{{hair_over}}, {{rectangle(0, 0, 0.35, 0.04)}}};
-  ASSERT_GT(area(hair_over), area(face));
+  s.lit = {{{{0, hair_over}}}, {{{0, rectangle(0, 0, 0.35, 0.04)}}}};
+  ASSERT_GT(hsr::area(hair_over), hsr::area(face));
   const std::vector<ReportRow> rows = report_rows(s);
   EXPECT_EQ(rows[0].lit_area, rows[0].area);
   EXPECT_EQ(rows[0].lit_fraction, 1.0);
@@ -194,7 +195,7 @@ TEST(ReportJson, TotalsAreCompensatedSums) {
         Face{"tiny" + std::to_string(i), {rectangle(0, 0, side, side)}, "scene.json"});
     s.lit.push_back({{}});
   }
-  const double tiny = area(s.scene.faces[1].parts);
+  const double tiny = hsr::area(s.scene.faces[1].parts);
   const nlohmann::json json = nlohmann::json::parse(report_json(s));
   const double total = json["totals"]["area"].get<double>();
   EXPECT_GT(total, 1.0);
@@ -254,7 +255,7 @@ TEST(ReportTable, TiesKeepSceneOrder) {
   s.scene.lights = {directional("sun")};
   for (const char* id : {"c", "a", "b"}) {
     s.scene.faces.push_back(Face{id, {rectangle(0, 0, 2, 2)}, "scene.json"});
-    s.lit.push_back({{rectangle(0, 0, 1, 2)}});  // each half lit
+    s.lit.push_back({{{0, rectangle(0, 0, 1, 2)}}});  // each half lit
   }
   const std::string table = report_table(s);
   EXPECT_NE(table.find("face_id  area  lit_area  lit_fraction\n"
@@ -283,7 +284,7 @@ TEST(ReportTable, AreasHaveSixSignificantDigits) {
   s.scene.lights = {directional("sun")};
   s.scene.faces = {Face{"big", {rectangle(0, 0, 1000, 1234.5678)}, "scene.json"},
                    Face{"small", {rectangle(0, 0, 1e-4, 1e-4)}, "scene.json"}};
-  s.lit = {{{rectangle(0, 0, 1000, 1000)}}, {{}}};
+  s.lit = {{{{0, rectangle(0, 0, 1000, 1000)}}}, {{}}};
   const std::string table = report_table(s);
   EXPECT_NE(table.find("sun           2          1  1.23457e+06     1e+06        0.8100\n"),
             std::string::npos)

@@ -49,7 +49,7 @@ std::vector<LightSet> sets_of(const std::vector<LightRegion>& regions) {
 
 double region_area(const std::vector<LightRegion>& regions, const LightSet& set) {
   for (const LightRegion& r : regions) {
-    if (r.lights == set) return area(r.polygons);
+    if (r.lights == set) return lit_area(r.polygons);
   }
   return 0.0;
 }
@@ -69,7 +69,8 @@ void ExpectInFacePlanes(const Face& face, const std::vector<LightRegion>& region
     }
   }
   for (const LightRegion& r : regions) {
-    for (const hsr::Polygon3& polygon : r.polygons) {
+    for (const LitPolygon& lit : r.polygons) {
+      const hsr::Polygon3& polygon = lit.polygon;
       const hsr::Plane3 own = hsr::plane_of(polygon);
       bool found = false;
       for (const hsr::Polygon3& part : face.parts) {
@@ -98,7 +99,8 @@ struct Worst {
 // plane's exact chart: the precondition of the clipper, and so of light_regions.
 std::string lit_problem(const ShadowedScene& shadowed, std::size_t face) {
   for (std::size_t l = 0; l < shadowed.lit[face].size(); ++l) {
-    for (const hsr::Polygon3& polygon : shadowed.lit[face][l]) {
+    for (const LitPolygon& lit : shadowed.lit[face][l]) {
+      const hsr::Polygon3& polygon = lit.polygon;
       const hsr::PlaneChart chart = hsr::chart_facing(hsr::plane_of(polygon).normal);
       clipper::PolygonWithHoles2 p;
       for (const glm::dvec3& v : polygon.outer) p.outer.push_back(chart(v));
@@ -127,7 +129,7 @@ Worst ExpectPartition(const ShadowedScene& shadowed, double tolerance) {
     }
     ++worst.faces;
     const std::vector<LightRegion> regions = light_regions(shadowed, f);
-    const double face_area = area(face.parts);
+    const double face_area = hsr::area(face.parts);
     if (face_area == 0.0) {
       EXPECT_TRUE(regions.empty()) << face.id;
       continue;
@@ -148,7 +150,7 @@ Worst ExpectPartition(const ShadowedScene& shadowed, double tolerance) {
     }
 
     double sum = 0.0;
-    for (const LightRegion& r : regions) sum += area(r.polygons);
+    for (const LightRegion& r : regions) sum += lit_area(r.polygons);
     const double cover = relative_error(sum, face_area);
     EXPECT_LE(cover, tolerance) << face.id << ": regions " << sum << ", face " << face_area;
     worst.cover = std::max(worst.cover, cover);
@@ -157,19 +159,19 @@ Worst ExpectPartition(const ShadowedScene& shadowed, double tolerance) {
       double with_light = 0.0;
       for (const LightRegion& r : regions) {
         if (std::find(r.lights.begin(), r.lights.end(), l) != r.lights.end()) {
-          with_light += area(r.polygons);
+          with_light += lit_area(r.polygons);
         }
       }
-      const double lit_area = area(shadowed.lit[f][l]);
-      const double lit_error = std::abs(with_light - lit_area) / face_area;
+      const double lit = lit_area(shadowed.lit[f][l]);
+      const double lit_error = std::abs(with_light - lit) / face_area;
       EXPECT_LE(lit_error, tolerance) << face.id << ", light " << scene.lights[l].id << ": regions "
-                                      << with_light << ", lit area " << lit_area;
+                                      << with_light << ", lit area " << lit;
       // Relative to the lit area too, unless that is a sliver only rounding made (generation
       // leaves a few of area ~1e-16; the clipper drops such slivers).
-      if (lit_area > 1e-9 * face_area) {
-        EXPECT_LE(relative_error(with_light, lit_area), tolerance)
+      if (lit > 1e-9 * face_area) {
+        EXPECT_LE(relative_error(with_light, lit), tolerance)
             << face.id << ", light " << scene.lights[l].id << ": regions " << with_light
-            << ", lit area " << lit_area << ", face " << face_area;
+            << ", lit area " << lit << ", face " << face_area;
       }
       worst.lit = std::max(worst.lit, lit_error);
     }
@@ -182,7 +184,8 @@ Worst ExpectPartition(const ShadowedScene& shadowed, double tolerance) {
       const double scale = std::abs(plane.normal[chart.dropped_axis]);
       std::vector<clipper::PolygonWithHoles2> images;
       for (const LightRegion& r : regions) {
-        for (const hsr::Polygon3& polygon : r.polygons) {
+        for (const LitPolygon& lit : r.polygons) {
+          const hsr::Polygon3& polygon = lit.polygon;
           if (glm::dot(hsr::plane_of(polygon).normal, plane.normal) < 1.0 - 1e-9) continue;
           clipper::PolygonWithHoles2 p;
           for (const glm::dvec3& v : polygon.outer) p.outer.push_back(chart(v));
@@ -229,7 +232,7 @@ TEST(LightRegions, TwoLightsWithOverlappingShadows) {
 
   const std::vector<LightRegion> square = light_regions(s, face_index(s.scene, "square"));
   ASSERT_EQ(sets_of(square), (std::vector<LightSet>{{0, 1}}));
-  EXPECT_NEAR(area(square[0].polygons), 16.0, 1e-12);
+  EXPECT_NEAR(lit_area(square[0].polygons), 16.0, 1e-12);
 
   EXPECT_EQ(ExpectPartition(s, 1e-12).invalid_lit, 0u);
 }
@@ -250,7 +253,7 @@ TEST(LightRegions, ResultDoesNotDependOnLightOrderButIndicesFollowIt) {
   EXPECT_EQ(light_set_name(s.scene, regions[3].lights), "slant+down");
   // The "slant only" region is the strip [2,3] × [3,7] and nothing else.
   ASSERT_EQ(regions[1].polygons.size(), 1u);
-  for (const glm::dvec3& p : regions[1].polygons[0].outer) {
+  for (const glm::dvec3& p : regions[1].polygons[0].polygon.outer) {
     // Within the strip up to the rounding of generation's back-projection, and in the
     // ground's plane exactly.
     EXPECT_TRUE(p.x >= 2.0 && p.x <= 3.0 + 1e-12 && p.y >= 3.0 && p.y <= 7.0 && p.z == 0.0)
@@ -271,8 +274,8 @@ TEST(LightRegions, FaceWithAHole) {
   })");
   const std::vector<LightRegion> regions = light_regions(s, face_index(s.scene, "ground"));
   ASSERT_EQ(sets_of(regions), (std::vector<LightSet>{{}, {0}}));
-  EXPECT_NEAR(area(regions[0].polygons), 3.0, 1e-12);
-  EXPECT_NEAR(area(regions[1].polygons), 93.0, 1e-12);
+  EXPECT_NEAR(lit_area(regions[0].polygons), 3.0, 1e-12);
+  EXPECT_NEAR(lit_area(regions[1].polygons), 93.0, 1e-12);
   // The lit region keeps the window as a hole or wraps around it: either way no point of
   // the window is inside it, and its area says the window is not counted.
   EXPECT_EQ(light_set_name(s.scene, regions[0].lights), "shadow");
@@ -288,8 +291,8 @@ TEST(LightRegions, TriangulatedNonPlanarFace) {
   const std::vector<LightRegion> regions = light_regions(s, dart);
   ASSERT_EQ(sets_of(regions), (std::vector<LightSet>{{}, {0}}));
   const double triangle = std::sqrt(14.0);
-  EXPECT_NEAR(area(regions[0].polygons), triangle / 4, 1e-12);
-  EXPECT_NEAR(area(regions[1].polygons), triangle * 7 / 4, 1e-12);
+  EXPECT_NEAR(lit_area(regions[0].polygons), triangle / 4, 1e-12);
+  EXPECT_NEAR(lit_area(regions[1].polygons), triangle * 7 / 4, 1e-12);
   // The lit region has a piece in each triangle's plane, the shadow only in the second's.
   EXPECT_EQ(regions[0].polygons.size(), 1u);
   EXPECT_GE(regions[1].polygons.size(), 2u);
@@ -298,7 +301,8 @@ TEST(LightRegions, TriangulatedNonPlanarFace) {
 
 TEST(LightRegions, HandBuiltNonPlanarFaceTakesEachLitPolygonToItsOwnPart) {
   // Two triangles of one face meeting along x = 0 at a right angle: "floor" in z = 0,
-  // "wall" in x = 0. The lit polygons are given by hand, one per part, listed wall first.
+  // "wall" in x = 0. The lit polygons are given by hand, one per part, listed wall first,
+  // each naming its part.
   ShadowedScene s;
   const hsr::Polygon3 floor{{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, {}};
   const hsr::Polygon3 wall{{{0, 0, 0}, {0, 4, 0}, {0, 0, 4}}, {}};
@@ -308,11 +312,11 @@ TEST(LightRegions, HandBuiltNonPlanarFaceTakesEachLitPolygonToItsOwnPart) {
   s.scene.lights = {light};
   const hsr::Polygon3 lit_floor{{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, {}};  // area 2
   const hsr::Polygon3 lit_wall{{{0, 0, 0}, {0, 4, 0}, {0, 0, 4}}, {}};   // all: 8
-  s.lit = {{{lit_wall, lit_floor}}};
+  s.lit = {{{{1, lit_wall}, {0, lit_floor}}}};
   const std::vector<LightRegion> regions = light_regions(s, 0);
   ASSERT_EQ(sets_of(regions), (std::vector<LightSet>{{}, {0}}));
-  EXPECT_EQ(area(regions[0].polygons), 6.0);
-  EXPECT_EQ(area(regions[1].polygons), 10.0);
+  EXPECT_EQ(lit_area(regions[0].polygons), 6.0);
+  EXPECT_EQ(lit_area(regions[1].polygons), 10.0);
   EXPECT_EQ(ExpectPartition(s, 0.0).invalid_lit, 0u);
 }
 
@@ -327,11 +331,11 @@ TEST(LightRegions, OneLight) {
   })");
   const std::vector<LightRegion> ground = light_regions(s, 0);
   ASSERT_EQ(sets_of(ground), (std::vector<LightSet>{{}, {0}}));
-  EXPECT_EQ(area(ground[0].polygons), 16.0);
-  EXPECT_EQ(area(ground[1].polygons), 84.0);
+  EXPECT_EQ(lit_area(ground[0].polygons), 16.0);
+  EXPECT_EQ(lit_area(ground[1].polygons), 84.0);
   const std::vector<LightRegion> square = light_regions(s, 1);
   ASSERT_EQ(sets_of(square), (std::vector<LightSet>{{0}}));
-  EXPECT_EQ(area(square[0].polygons), 16.0);
+  EXPECT_EQ(lit_area(square[0].polygons), 16.0);
   EXPECT_EQ(ExpectPartition(s, 1e-12).invalid_lit, 0u);
 }
 
@@ -347,8 +351,8 @@ TEST(LightRegions, ZeroLightsGiveOneShadowRegionPerFace) {
   const std::vector<LightRegion> regions = light_regions(s, 0);
   ASSERT_EQ(sets_of(regions), (std::vector<LightSet>{{}}));
   ASSERT_EQ(regions[0].polygons.size(), 1u);
-  EXPECT_EQ(regions[0].polygons[0].holes.size(), 1u);
-  EXPECT_EQ(area(regions[0].polygons), 96.0);
+  EXPECT_EQ(regions[0].polygons[0].polygon.holes.size(), 1u);
+  EXPECT_EQ(lit_area(regions[0].polygons), 96.0);
   EXPECT_EQ(light_set_name(s.scene, regions[0].lights), "shadow");
 }
 
@@ -373,9 +377,9 @@ TEST(LightRegions, BackFacingFaceIsAllShadow) {
   })");
   const std::vector<LightRegion> regions = light_regions(s, 0);
   ASSERT_EQ(sets_of(regions), (std::vector<LightSet>{{}}));
-  EXPECT_EQ(area(regions[0].polygons), 1.0);
+  EXPECT_EQ(lit_area(regions[0].polygons), 1.0);
   // Loops keep the face's front: the region's normal is the face's, -z.
-  EXPECT_LT(hsr::plane_of(regions[0].polygons[0]).normal.z, 0.0);
+  EXPECT_LT(hsr::plane_of(regions[0].polygons[0].polygon).normal.z, 0.0);
 }
 
 TEST(LightRegions, BadArgumentsThrow) {

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 
-#include "shadowgen/shadows/generate.h"
 #include "shadowgen/output/report.h"
+#include "shadowgen/shadows/generate.h"
 #include "tests/shadowgen/shadows/shadow_oracle.h"
 
 namespace shadowgen::test {
@@ -49,7 +49,8 @@ OracleCheck check_against_oracle(const Scene& scene, const ShadowedScene& shadow
     const ExactLit exact = oracle.lit(row.face, row.light);
     if (!(exact.face_area > 0.0)) continue;
     ++check.pairs;
-    const LitComparison c = oracle.compare(row.face, row.light, shadowed.lit[row.face][row.light]);
+    const LitComparison c =
+        oracle.compare(row.face, row.light, polygons_of(shadowed.lit[row.face][row.light]));
     const double area_error = std::fabs(row.lit_area - exact.lit_area) / exact.face_area;
     const double region_error = c.symmetric_difference / exact.face_area;
     const double overlap = (c.our_pieces_area - c.our_union_area) / exact.face_area;
@@ -64,9 +65,9 @@ OracleCheck check_against_oracle(const Scene& scene, const ShadowedScene& shadow
       check.invalid_report += "  face '" + scene.faces[row.face].id + "', light '" +
                               scene.lights[row.light].id + "': " + c.invalid + "\n";
     }
-    const double bound = tolerance + vertex_error *
-                                         boundary_length(shadowed.lit[row.face][row.light]) /
-                                         exact.face_area;
+    const double bound =
+        tolerance + vertex_error * boundary_length(polygons_of(shadowed.lit[row.face][row.light])) /
+                        exact.face_area;
     const double worst = std::max({area_error, region_error, overlap, outside});
     check.worst_bound_ratio = std::max(check.worst_bound_ratio, worst / bound);
     const bool bad = !c.problem.empty() || !(area_error <= bound) || !(region_error <= bound) ||

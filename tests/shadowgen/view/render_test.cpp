@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "clipper/clip.h"
-#include "shadowgen/view/camera.h"
-#include "shadowgen/shadows/generate.h"
 #include "shadowgen/output/report.h"
+#include "shadowgen/shadows/generate.h"
+#include "shadowgen/view/camera.h"
 #include "tests/shadowgen/hand_scenes.h"
 
 namespace shadowgen {
@@ -315,7 +315,7 @@ TEST(Render, DrawsTheDatabaseNotAShadowPass) {
   Light sun;
   sun.id = "sun";
   shadowed.scene.lights = {sun};
-  shadowed.lit = {{{hsr::Polygon3{{{0, 0, 0}, {5, 0, 0}, {5, 10, 0}, {0, 10, 0}}, {}}}}};
+  shadowed.lit = {{{{0, hsr::Polygon3{{{0, 0, 0}, {5, 0, 0}, {5, 10, 0}, {0, 10, 0}}, {}}}}}};
   const Camera camera = looking_down({5, 5, 10}, {5, 5, 0}, 10.0);
   const RenderOptions options = picture_size(120, 120);
   const Picture picture = render(shadowed, camera, options);
