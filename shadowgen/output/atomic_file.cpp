@@ -1,103 +1,448 @@
 #include "shadowgen/output/atomic_file.h"
 
 #include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <iostream>
+#include <memory>
 #include <random>
 #include <stdexcept>
-#include <string_view>
+#include <string>
 #include <system_error>
+#include <utility>
 
 namespace shadowgen {
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& path, std::string_view what, int error) {
-  throw std::runtime_error("cannot write '" + path.string() + "': " + std::string(what) + ": " +
-                           std::strerror(error));
+namespace fs = std::filesystem;
+
+bool is_dash(const fs::path& path) { return path.native() == "-"; }
+
+[[noreturn]] void fail(const fs::path& path, std::string_view what, int error) {
+  std::string message = "cannot write ";
+  if (is_dash(path)) {
+    message += "standard output";
+  } else {
+    message += '\'';
+    message += path.string();
+    message += '\'';
+  }
+  message += ": ";
+  message += what;
+  message += ": ";
+  message += std::strerror(error);
+  throw std::runtime_error(message);
 }
 
-// ".<name>.tmp-<pid>-<n>-<random>": hidden, recognisable, and unique enough that
-// O_EXCL only has to guard against the astronomically unlikely collision.
-std::filesystem::path temporary_name(const std::filesystem::path& path) {
+// ---------------------------------------------------------------------------------------
+// The temporary files being written, for the signal handlers. A handler may only use
+// async-signal-safe calls, so the table is preallocated and each slot's state is a
+// lock-free atomic: claimed with a compare-and-swap (no lock a handler could interrupt),
+// filled, then published as live; the handler unlinks the live ones.
+
+constexpr int kSlotFree = 0;
+constexpr int kSlotFilling = 1;
+constexpr int kSlotLive = 2;
+
+struct TemporarySlot {
+  std::atomic<int> state{kSlotFree};
+  std::array<char, PATH_MAX> path{};
+};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads slot states");
+
+// More writes at once than this (threads writing many files together) go unprotected
+// against signals; they are still removed on every failure the program sees.
+constexpr std::size_t kSlots = 64;
+std::array<TemporarySlot, kSlots> temporary_slots;
+
+// Returns the slot now holding `path`, or -1 when none is free or the path is too long.
+int register_temporary(const fs::path& path) {
+  // Absolute, so that a change of the working folder cannot send the unlink elsewhere.
+  std::error_code error;
+  const fs::path absolute = fs::absolute(path, error);
+  if (error || absolute.native().size() >= PATH_MAX) return -1;
+  for (std::size_t i = 0; i < kSlots; ++i) {
+    TemporarySlot& slot = temporary_slots[i];
+    int expected = kSlotFree;
+    if (!slot.state.compare_exchange_strong(expected, kSlotFilling)) continue;
+    std::memcpy(slot.path.data(), absolute.c_str(), absolute.native().size() + 1);
+    slot.state.store(kSlotLive, std::memory_order_release);
+    return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void unregister_temporary(int slot) {
+  if (slot >= 0) temporary_slots[static_cast<std::size_t>(slot)].state.store(kSlotFree);
+}
+
+constexpr std::array<int, 3> kCleanupSignals = {SIGINT, SIGTERM, SIGHUP};
+
+extern "C" void remove_temporaries_and_reraise(int signal_number) {
+  const int saved_errno = errno;
+  remove_temporary_files();
+  // SA_RESETHAND restored the default action on entry, and the signal is blocked while
+  // this handler runs: raised again, it ends the process as soon as the handler returns,
+  // with the status a parent expects from that signal.
+  ::raise(signal_number);
+  errno = saved_errno;
+}
+
+// ---------------------------------------------------------------------------------------
+// What a destination path names.
+
+enum class Kind {
+  kStandardOutput,
+  kNewFile,  // nothing there yet: a new regular file
+  kReplace,  // an existing regular file
+  kThrough,  // an existing device, FIFO or socket
+};
+
+struct Destination {
+  fs::path shown;   // as given, for messages
+  fs::path target;  // after following symbolic links
+  Kind kind = Kind::kNewFile;
+  struct stat existing {};  // kReplace and kThrough
+};
+
+// Follows links as the kernel does (at most 40), but by hand: the rename must act on the
+// final target, since renaming onto the link would replace the link itself.
+Destination resolve(const fs::path& path) {
+  Destination destination;
+  destination.shown = path;
+  destination.target = path;
+  if (is_dash(path)) {
+    destination.kind = Kind::kStandardOutput;
+    return destination;
+  }
+  constexpr int kMaxLinks = 40;
+  for (int links = 0;; ++links) {
+    const fs::path& target = destination.target;
+    if (target.empty() || !target.has_filename()) fail(path, "not a file name", EINVAL);
+    struct stat status {};
+    if (::lstat(target.c_str(), &status) != 0) {
+      if (errno == ENOENT) return destination;  // a new file (there, if it is a link's)
+      fail(path, "cannot examine it", errno);
+    }
+    if (S_ISLNK(status.st_mode)) {
+      if (links == kMaxLinks) fail(path, "cannot follow its symbolic links", ELOOP);
+      std::error_code error;
+      const fs::path link = fs::read_symlink(target, error);
+      if (error) fail(path, "cannot read its symbolic link", error.value());
+      destination.target = link.is_absolute() ? link : target.parent_path() / link;
+      continue;
+    }
+    if (S_ISDIR(status.st_mode)) fail(path, "not a file", EISDIR);
+    destination.existing = status;
+    destination.kind = S_ISREG(status.st_mode) ? Kind::kReplace : Kind::kThrough;
+    return destination;
+  }
+}
+
+void write_all(int fd, std::string_view data, const fs::path& shown) {
+  while (!data.empty()) {
+    const ssize_t written = ::write(fd, data.data(), data.size());
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      fail(shown, "write failed", errno);
+    }
+    data.remove_prefix(static_cast<std::size_t>(written));
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// An output being written: write() any number of times, finish() to flush and close
+// (idempotent), commit() to make it the destination's content. Destroyed uncommitted, it
+// leaves the destination as it was (a written-through device keeps what it was given).
+
+class Output {
+ public:
+  Output() = default;
+  Output(const Output&) = delete;
+  Output& operator=(const Output&) = delete;
+  virtual ~Output() = default;
+
+  virtual void write(std::string_view data) = 0;
+  virtual void finish() {}
+  virtual void commit() { finish(); }
+};
+
+class StandardOutput final : public Output {
+ public:
+  explicit StandardOutput(const Destination& destination) : shown_(destination.shown) {
+    // Whatever the program printed before comes first.
+    std::cout.flush();
+    if (!std::cout) fail(shown_, "earlier output failed", EIO);
+    if (std::fflush(stdout) != 0) fail(shown_, "earlier output failed", errno);
+  }
+  void write(std::string_view data) override { write_all(STDOUT_FILENO, data, shown_); }
+
+ private:
+  fs::path shown_;
+};
+
+class ThroughFile final : public Output {
+ public:
+  // Opened in place: no O_CREAT and no O_TRUNC, so that should the device have become a
+  // regular file since it was examined, that file is neither made nor cut short.
+  explicit ThroughFile(const Destination& destination) : shown_(destination.shown) {
+    do {
+      fd_ = ::open(destination.target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+    } while (fd_ < 0 && errno == EINTR);
+    if (fd_ < 0) fail(shown_, "cannot open it", errno);
+  }
+  ~ThroughFile() override {
+    if (fd_ >= 0) ::close(fd_);
+  }
+
+  int fd() const { return fd_; }
+  void write(std::string_view data) override { write_all(fd_, data, shown_); }
+  void finish() override {
+    if (fd_ < 0) return;
+    // No fsync: devices and FIFOs do not support it. Close errors still count: a device
+    // may report a failed write only here.
+    const int result = ::close(fd_);
+    fd_ = -1;
+    if (result != 0 && errno != EINTR) fail(shown_, "close failed", errno);
+  }
+
+ private:
+  fs::path shown_;
+  int fd_ = -1;
+};
+
+// ".<name>.tmp-<pid>-<n>-<random>": hidden, recognisable, and unique enough that O_EXCL
+// only has to guard against the astronomically unlikely collision. The name is cut short
+// so that the temporary name stays within the 255 bytes a file name may have.
+fs::path temporary_name(const fs::path& target) {
   static std::atomic<unsigned long> counter{0};
   static thread_local std::mt19937_64 random{std::random_device{}()};
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `"." + std::string`.
   std::string name(1, '.');
-  name += path.filename().string();
+  name += target.filename().native().substr(0, 160);
   name += ".tmp-";
   name += std::to_string(static_cast<long>(::getpid()));
   name += '-';
   name += std::to_string(counter.fetch_add(1));
   name += '-';
   name += std::to_string(random() % 1000000007ULL);
-  return path.parent_path() / name;
+  return target.parent_path() / name;
 }
 
-// Closes the descriptor and removes the temporary file unless the rename succeeded.
-class TemporaryFile {
+class TemporaryFile final : public Output {
  public:
-  explicit TemporaryFile(const std::filesystem::path& destination) {
-    for (int attempt = 0; attempt < 100; ++attempt) {
-      path_ = temporary_name(destination);
+  explicit TemporaryFile(const Destination& destination)
+      : shown_(destination.shown), target_(destination.target) {
+    install_temporary_file_cleanup();
+    for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
+      path_ = temporary_name(target_);
+      // Registered before it exists: a signal in between only unlinks a missing name.
+      slot_ = register_temporary(path_);
       // 0666 and the process's umask: the same permissions as an ordinary new file.
       fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if (fd_ >= 0) return;
-      if (errno != EEXIST) fail(destination, "cannot create a temporary file", errno);
+      if (fd_ >= 0) break;
+      const int error = errno;
+      unregister_temporary(slot_);
+      slot_ = -1;
+      if (error != EEXIST && error != EINTR) fail(shown_, "cannot create a temporary file", error);
     }
-    fail(destination, "cannot create a temporary file", EEXIST);
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  ~TemporaryFile() {
-    close();
-    if (!kept_) {
-      std::error_code ignored;
-      std::filesystem::remove(path_, ignored);
+    if (fd_ < 0) fail(shown_, "cannot create a temporary file", EEXIST);
+    if (destination.kind == Kind::kReplace) {
+      try {
+        take_over(destination.existing);
+      } catch (...) {
+        discard();  // no destructor runs for a constructor that throws
+        throw;
+      }
     }
   }
+  ~TemporaryFile() override { discard(); }
 
-  int fd() const { return fd_; }
-  const std::filesystem::path& path() const { return path_; }
-  // Returns 0 or the errno of a failed close (which may report a delayed write error).
-  int close() {
-    if (fd_ < 0) return 0;
+  void write(std::string_view data) override { write_all(fd_, data, shown_); }
+
+  void finish() override {
+    if (fd_ < 0) return;
+    // Flushed before the rename, so that a crash cannot leave a renamed but empty file.
+    if (::fsync(fd_) != 0) fail(shown_, "fsync failed", errno);
     const int result = ::close(fd_);
     fd_ = -1;
-    return result == 0 ? 0 : errno;
+    // Linux closes the descriptor even when close reports EINTR; it is not retried.
+    if (result != 0 && errno != EINTR) fail(shown_, "close failed", errno);
   }
-  void keep() { kept_ = true; }
+
+  void commit() override {
+    finish();
+    if (::rename(path_.c_str(), target_.c_str()) != 0) fail(shown_, "rename failed", errno);
+    committed_ = true;
+    sync_folder();
+  }
 
  private:
-  std::filesystem::path path_;
+  // The replaced file's owner, group and permission bits, set before any content is
+  // written so that a private file's text is never readable by others meanwhile. Only
+  // root may give a file away; others keep their own user and, where they belong to it,
+  // the old group. A set-user-ID or set-group-ID bit is kept only with its owner or group.
+  void take_over(const struct stat& old) {
+    struct stat mine {};
+    if (::fstat(fd_, &mine) != 0) fail(shown_, "cannot examine the temporary file", errno);
+    if (mine.st_uid != old.st_uid || mine.st_gid != old.st_gid) {
+      if (::fchown(fd_, old.st_uid, old.st_gid) != 0) {
+        (void)::fchown(fd_, static_cast<uid_t>(-1), old.st_gid);
+      }
+      if (::fstat(fd_, &mine) != 0) fail(shown_, "cannot examine the temporary file", errno);
+    }
+    mode_t mode = old.st_mode & 07777;
+    if (mine.st_uid != old.st_uid) mode &= ~static_cast<mode_t>(S_ISUID);
+    if (mine.st_gid != old.st_gid) mode &= ~static_cast<mode_t>(S_ISGID);
+    if (::fchmod(fd_, mode) != 0) fail(shown_, "cannot set the permissions", errno);
+  }
+
+  void discard() noexcept {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+    // Unlinked before the slot is freed, so that a signal in between still finds it.
+    if (!committed_) ::unlink(path_.c_str());
+    unregister_temporary(slot_);
+    slot_ = -1;
+  }
+
+  // Makes the rename itself durable. Best effort: the new content is complete and in
+  // place already, and some file systems do not support syncing a folder.
+  void sync_folder() const {
+    const fs::path folder = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+    const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    (void)::fsync(fd);
+    ::close(fd);
+  }
+
+  fs::path shown_;
+  fs::path target_;
+  fs::path path_;
   int fd_ = -1;
-  bool kept_ = false;
+  int slot_ = -1;
+  bool committed_ = false;
 };
+
+std::unique_ptr<Output> open_output(Destination destination) {
+  switch (destination.kind) {
+    case Kind::kStandardOutput:
+      return std::make_unique<StandardOutput>(destination);
+    case Kind::kThrough: {
+      auto through = std::make_unique<ThroughFile>(destination);
+      struct stat status {};
+      if (::fstat(through->fd(), &status) != 0) fail(destination.shown, "cannot examine it", errno);
+      if (!S_ISREG(status.st_mode)) return through;
+      // It became a regular file after it was examined: that one is replaced as usual.
+      destination.kind = Kind::kReplace;
+      destination.existing = status;
+      return std::make_unique<TemporaryFile>(destination);
+    }
+    case Kind::kNewFile:
+    case Kind::kReplace:
+      break;
+  }
+  return std::make_unique<TemporaryFile>(destination);
+}
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-  if (path.empty() || !path.has_filename()) fail(path, "not a file name", EINVAL);
-  TemporaryFile temporary(path);
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  const std::unique_ptr<Output> output = open_output(resolve(path));
+  output->write(content);
+  output->commit();
+}
 
-  const char* data = content.data();
-  std::size_t left = content.size();
-  while (left > 0) {
-    const ssize_t written = ::write(temporary.fd(), data, left);
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      fail(path, "write failed", errno);
+void stream_file_atomically(const std::filesystem::path& path,
+                            const std::function<void(const OutputSink&)>& produce) {
+  const std::unique_ptr<Output> output = open_output(resolve(path));
+  Output& target = *output;
+  produce([&target](std::string_view data) { target.write(data); });
+  output->commit();
+}
+
+void write_files_atomically(const std::vector<OutputText>& files) {
+  std::vector<Destination> destinations;
+  destinations.reserve(files.size());
+  for (const OutputText& file : files) {
+    destinations.push_back(resolve(file.path));
+    const Destination& added = destinations.back();
+    for (std::size_t i = 0; i + 1 < destinations.size(); ++i) {
+      const bool both_stdout =
+          added.kind == Kind::kStandardOutput && destinations[i].kind == Kind::kStandardOutput;
+      if (both_stdout || same_file(destinations[i].target, added.target)) {
+        fail(file.path, "named twice among the files written together", EINVAL);
+      }
     }
-    data += written;
-    left -= static_cast<std::size_t>(written);
   }
-  // Flushed before the rename, so that a crash cannot leave a renamed but empty file.
-  if (::fsync(temporary.fd()) != 0) fail(path, "fsync failed", errno);
-  if (const int error = temporary.close(); error != 0) fail(path, "close failed", error);
-  if (::rename(temporary.path().c_str(), path.c_str()) != 0) fail(path, "rename failed", errno);
-  temporary.keep();
+
+  // Every temporary file written and closed before any destination is touched.
+  std::vector<std::unique_ptr<Output>> prepared(files.size());
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const Kind kind = destinations[i].kind;
+    if (kind != Kind::kNewFile && kind != Kind::kReplace) continue;
+    prepared[i] = std::make_unique<TemporaryFile>(destinations[i]);
+    prepared[i]->write(files[i].content);
+    prepared[i]->finish();
+  }
+  // Devices and standard output cannot be prepared: they take the text at commit time.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (prepared[i]) {
+      prepared[i]->commit();
+    } else {
+      const std::unique_ptr<Output> output = open_output(destinations[i]);
+      output->write(files[i].content);
+      output->commit();
+    }
+  }
+}
+
+bool is_standard_stream(const std::filesystem::path& path) { return is_dash(path); }
+
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  if (is_dash(a) || is_dash(b)) return false;
+  struct stat status_a {};
+  struct stat status_b {};
+  if (::stat(a.c_str(), &status_a) == 0 && ::stat(b.c_str(), &status_b) == 0) {
+    return status_a.st_dev == status_b.st_dev && status_a.st_ino == status_b.st_ino;
+  }
+  const auto comparable = [](const fs::path& path) {
+    std::error_code error;
+    fs::path resolved = fs::weakly_canonical(path, error);
+    return error ? fs::absolute(path, error).lexically_normal() : resolved;
+  };
+  return comparable(a) == comparable(b);
+}
+
+void install_temporary_file_cleanup() {
+  for (const int signal_number : kCleanupSignals) {
+    struct sigaction current {};
+    if (::sigaction(signal_number, nullptr, &current) != 0) continue;
+    // Only the default action is replaced: an ignored signal (nohup, a background job)
+    // stays ignored, and a program's own handler stays in charge.
+    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler != SIG_DFL) continue;
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_reraise;
+    sigemptyset(&action.sa_mask);
+    // One cleanup at a time: the other signals wait while a handler runs.
+    for (const int other : kCleanupSignals) sigaddset(&action.sa_mask, other);
+    action.sa_flags = SA_RESETHAND | SA_RESTART;
+    ::sigaction(signal_number, &action, nullptr);
+  }
+}
+
+void remove_temporary_files() noexcept {
+  for (TemporarySlot& slot : temporary_slots) {
+    if (slot.state.load(std::memory_order_acquire) == kSlotLive) ::unlink(slot.path.data());
+  }
 }
 
 }  // namespace shadowgen

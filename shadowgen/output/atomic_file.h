@@ -1,17 +1,92 @@
 #pragma once
 
-// Whole-file output that never leaves a partial file behind: the content goes to a fresh
-// temporary file in the destination's folder (so the rename stays on one file system),
-// is flushed to disk, and then replaces the destination with one rename. A reader sees
-// either the old file or the complete new one; on any failure the temporary file is
-// removed and the destination is untouched.
+// Whole-file output that never leaves a partial file behind.
+//
+// What a destination path names decides how it is written:
+//  - "-" is standard output: the text is written to descriptor 1 (after flushing
+//    std::cout and C's stdout, so nothing printed earlier comes after it). A file really
+//    named "-" is reached as "./-".
+//  - A symbolic link is followed to its final target (a dangling link to the file it
+//    would name): the target is replaced and the link stays a link.
+//  - A regular file, or no file yet, is replaced whole: the content goes to a fresh
+//    temporary file in the target's folder (so the rename stays on one file system),
+//    which takes the old file's permission bits (and owner and group where the process
+//    may set them: as root), is flushed to disk, and then replaces the target with one
+//    rename. A reader sees the old file or the complete new one; on any failure the
+//    temporary file is removed and the target is untouched. A new file gets the
+//    ordinary permissions (0666 less the umask). Extended attributes and ACLs are not
+//    carried over, and a replaced file loses its other hard links (as with editors).
+//  - Anything else that exists (a character device such as /dev/null, a FIFO, ...) is
+//    written through: opened, written and closed in place, since it cannot be replaced
+//    by a rename without destroying it. Such a write is not atomic; every write and the
+//    close are checked, so /dev/full fails with "No space left on device".
+//  - A folder is refused.
+//
+// Interruption: the paths of the temporary files being written are kept in a fixed,
+// preallocated table. SIGINT, SIGTERM and SIGHUP handlers (installed the first time a
+// temporary file is made, or earlier by install_temporary_file_cleanup) remove them and
+// then end the process by the same signal, as it would have ended without them. A signal
+// whose action is not the default (ignored, or the program's own handler) is left as it
+// is; a program with its own handler can call remove_temporary_files() from it.
+// Only what no handler sees (SIGKILL, a power cut) can leave a temporary file, named
+// ".NAME.tmp-PID-N-RANDOM" beside the destination.
+//
+// Every function throws std::runtime_error "cannot write 'PATH': WHAT: REASON" (or
+// "cannot write standard output: ...") naming the path as given.
 
 #include <filesystem>
-#include <string>
+#include <functional>
+#include <string_view>
+#include <vector>
 
 namespace shadowgen {
 
-// Throws std::runtime_error naming `path` and the system's reason when it cannot write.
-void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+// Receives the content piece by piece, in order.
+using OutputSink = std::function<void(std::string_view)>;
+
+// As write_file_atomically, for content made while it is written: `produce` is called
+// once with a sink for it. If `produce` throws, the temporary file is removed, the
+// destination is untouched (a written-through device has had what was written so far)
+// and the exception propagates.
+void stream_file_atomically(const std::filesystem::path& path,
+                            const std::function<void(const OutputSink&)>& produce);
+
+// One file of a set written together; `content` must outlive the call.
+struct OutputText {
+  std::filesystem::path path;
+  std::string_view content;
+};
+
+// Writes several files as one: every destination is examined and every temporary file
+// written, flushed and closed first; only then are they committed, in the order given
+// (renamed into place, or written through for devices and standard output). A failure
+// before the commits leaves every destination untouched and no temporary file behind.
+// The commits themselves are not jointly atomic: a failure or a crash in the middle of
+// them (a rename refused, a device that fails) leaves the files committed before it new
+// and those after it old. Put the file that refers to the others last (the OBJ after its
+// MTL), so that any reader sees either the old files or a consistent new set. A path
+// that names the same file as an earlier one is refused before anything is written.
+void write_files_atomically(const std::vector<OutputText>& files);
+
+// Whether `path` is "-", standard input or output.
+bool is_standard_stream(const std::filesystem::path& path);
+
+// Whether the two paths name the same file: by device and inode when both exist
+// (following symbolic links, so a link or a hard link to a file is that file), otherwise
+// by their canonical spellings ("." and ".." and the existing part's links resolved).
+// "-" is never the same file as anything: as an input it is standard input, as an output
+// standard output.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// Installs the SIGINT, SIGTERM and SIGHUP handlers described above where those signals
+// have their default action; idempotent. Writing a file installs them already; a
+// program may call this at its start to settle its signal handling up front.
+void install_temporary_file_cleanup();
+
+// Removes the temporary files being written right now. Async-signal-safe, for a
+// program's own signal handler; the interrupted writes then fail when they continue.
+void remove_temporary_files() noexcept;
 
 }  // namespace shadowgen
