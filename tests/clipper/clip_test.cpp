@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 #include "tests/fuzz/region_validity.h"
+#include "tests/support/cgal_oracle.h"
+#include "tests/support/clip_check.h"
 
 namespace shadowgen::clipper {
 namespace {
@@ -56,6 +60,35 @@ ClipResult ClipChecked(const PolygonWithHoles2& a, const PolygonWithHoles2& b) {
   EXPECT_EQ(area(ba.inside) + area(ba.outside), area(PolygonSet2{b}));
   EXPECT_EQ(area(ab.inside), area(ba.inside));
   return ab;
+}
+
+// The exact answer for a pair in both argument orders, from CGAL's exact kernel
+// (tests/support/clip_check.h): the inside and outside pieces' areas and regions (the area
+// of their symmetric difference with the exact pieces), inside + outside = operand, and
+// the same inside both ways, all within area_error_bound (what rounding each crossing once
+// can change). A stretch put on the wrong side of the other operand moves the whole
+// region it bounds, far beyond that. Returns the exact areas of clip(a, b).
+test::ExactAreas ExpectExactBothWays(const std::string& name, const PolygonWithHoles2& a,
+                                     const PolygonWithHoles2& b) {
+  const PolygonSet2 first{a}, second{b};
+  const double bound = test::area_error_bound(first, second);
+  test::ExactAreas exact;
+  for (int swap = 0; swap < 2; ++swap) {
+    const PolygonSet2& subject = swap ? second : first;
+    const PolygonSet2& clip = swap ? first : second;
+    const test::ClipCheck check =
+        test::check_clip(subject, clip, {.swapped = true, .symmetric_difference = true});
+    if (swap == 0) exact = check.exact;
+    std::printf(
+        "[ %s%s ] exact inside %.17g, outside %.17g; worst area error %.3g, "
+        "symmetric differences %.3g and %.3g; bound %.3g\n",
+        name.c_str(), swap ? " swapped" : "", check.exact.inside, check.exact.outside,
+        check.worst_error(), check.inside_discrepancy, check.outside_discrepancy, bound);
+    EXPECT_EQ(check.failure(bound, bound), "") << name << (swap ? ", operands swapped" : "") << "\n"
+                                               << test::describe(check, subject, clip);
+    EXPECT_GE(check.inside_discrepancy, 0.0) << "the regions were not compared";
+  }
+  return exact;
 }
 
 TEST(Clip, OverlappingSquares) {
@@ -306,12 +339,10 @@ TEST(Clip, NearlyCollinearCrossingKeepsSides) {
     const ClipResult r = clip(s, c);
     ExpectWellFormed(r.inside);
     ExpectWellFormed(r.outside);
-    // clip.h's bound: each of the two crossings moves by about u·|P| (u = 2^-53, |P| ~ 1)
-    // times the unit-length edges around it; 1e-14 is a generous multiple of that.
-    const double total = area(PolygonSet2{s});
-    EXPECT_NEAR(area(r.inside) + area(r.outside), total, 1e-14);
   }
-  EXPECT_NEAR(area(clip(a, b).inside), area(clip(b, a).inside), 1e-14);
+  const test::ExactAreas exact = ExpectExactBothWays("nearly-collinear-crossing", a, b);
+  EXPECT_GT(exact.inside, 0.0);
+  EXPECT_GT(exact.outside, 0.0);
 }
 
 }  // namespace
@@ -344,11 +375,9 @@ TEST(Clip, CrossingRoundedOntoAVertex) {
     ExpectWellFormed(r->inside);
     ExpectWellFormed(r->outside);
   }
-  const double area_a = area(PolygonSet2{a}), area_b = area(PolygonSet2{b});
-  EXPECT_NEAR(area(ab.inside), area_a, 1e-14);
-  EXPECT_NEAR(area(ab.outside), 0.0, 1e-14);
-  EXPECT_NEAR(area(ba.inside), area_a, 1e-14);
-  EXPECT_NEAR(area(ba.outside), area_b - area_a, 1e-14);
+  const test::ExactAreas exact = ExpectExactBothWays("crossing-rounded-onto-a-vertex", a, b);
+  EXPECT_GT(exact.inside, 0.0);
+  EXPECT_LT(exact.outside, 1e-15 * exact.subject);  // inside the clip up to that rounding
 }
 
 }  // namespace
@@ -397,11 +426,9 @@ TEST(Clip, SecondOfTwoCrossingsRoundedOntoTheVertexBetween) {
     const ClipResult r = clip(s, c);
     ExpectWellFormed(r.inside);
     ExpectWellFormed(r.outside);
-    const double total = area(PolygonSet2{s});
-    EXPECT_NEAR(area(r.inside) + area(r.outside), total, 1e-12);
-    EXPECT_LE(area(r.inside), std::min(area(PolygonSet2{a}), area(PolygonSet2{b})) + 1e-12);
   }
-  EXPECT_NEAR(area(clip(a, b).inside), area(clip(b, a).inside), 1e-12);
+  const test::ExactAreas exact = ExpectExactBothWays("second-of-two-crossings", a, b);
+  EXPECT_GT(exact.inside, 0.0);
 }
 
 }  // namespace
@@ -428,8 +455,9 @@ TEST(Clip, BothCrossingsOfACornerRoundedOntoIt) {
     const ClipResult r = swap ? clip(b, a) : clip(a, b);
     ExpectWellFormed(r.inside);
     ExpectWellFormed(r.outside);
-    EXPECT_NEAR(area(r.inside), 1.16058e-08, 1e-13);
   }
+  const test::ExactAreas exact = ExpectExactBothWays("both-crossings-of-a-corner", a, b);
+  EXPECT_GT(exact.inside, 0.0);
 }
 
 // A clip vertex that an earlier clip made as a crossing on the subject's edge lies a

@@ -39,7 +39,7 @@ TEST_P(Invariants, LitPlusShadowedIsTheFaceArea) {
     EXPECT_LE(row.lit_area, row.area * (1.0 + kTolerance)) << where;
     if (row.area == 0.0) continue;
     const LitComparison c =
-        oracle.compare(row.face, row.light, result.shadowed.lit[row.face][row.light]);
+        oracle.compare(row.face, row.light, polygons_of(result.shadowed.lit[row.face][row.light]));
     ASSERT_EQ(c.problem, "") << where;
     const double shadowed = c.face_area - (c.our_union_area - c.outside_face_area);
     EXPECT_LE(c.outside_face_area, kTolerance * c.face_area) << where << ": lit outside the face";
