@@ -28,6 +28,13 @@ struct Box2 {
   bool overlaps(const Box2& b) const {
     return xmin < b.xmax && b.xmin < xmax && ymin < b.ymax && b.ymin < ymax;
   }
+  // Closed overlap: also boxes that share only a side or a corner. Polygons in such boxes
+  // may touch there without overlapping; clip() still takes them through the snap
+  // rounding and overlay, so the pieces it returns carry the other operand's vertices
+  // where the two touch, as they do where operands overlap.
+  bool touches_or_overlaps(const Box2& b) const {
+    return xmin <= b.xmax && b.xmin <= xmax && ymin <= b.ymax && b.ymin <= ymax;
+  }
 };
 
 inline Box2 box_of(const clipper::PolygonWithHoles2& p) {

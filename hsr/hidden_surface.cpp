@@ -5,11 +5,11 @@
 #include <glm/geometric.hpp>
 #include <queue>
 
+#include "clipper/box.h"
 #include "clipper/clip.h"
 #include "clipper/merge.h"
-#include "clipper/box.h"
-#include "hsr/convex_window.h"
 #include "detail/half_plane.h"
+#include "hsr/convex_window.h"
 #include "hsr/spatial_grid.h"
 
 namespace shadowgen::hsr {
@@ -30,6 +30,17 @@ struct Piece {
   PolygonWithHoles2 shape;
   std::size_t parent = 0;
 };
+
+// Runs a clip that works on input polygon `parent`; a clip that fails is passed on naming
+// that polygon (PolygonClipError).
+template <class Clip>
+auto clip_of(std::size_t parent, Clip&& clip) {
+  try {
+    return clip();
+  } catch (const clipper::SnapRoundingError& e) {
+    throw PolygonClipError(parent, e.what());
+  }
+}
 
 enum class DepthOrder { kBehindOrTied, kInFront, kCrossing };
 
@@ -77,7 +88,8 @@ class AreaSort {
         const PolygonWithHoles2 rect{
             {{t.xmin, t.ymin}, {t.xmax, t.ymin}, {t.xmax, t.ymax}, {t.xmin, t.ymax}}, {}};
         ++stats_.clips;
-        for (PolygonWithHoles2& q : clipper::clip(p.shape, rect).inside) {
+        for (PolygonWithHoles2& q :
+             clip_of(p.parent, [&] { return clipper::clip(p.shape, rect).inside; })) {
           add({std::move(q), p.parent});
         }
       }
@@ -100,7 +112,8 @@ class AreaSort {
       for (std::size_t c : candidates) {
         if (!alive[c] || !boxes[c].overlaps(tbox)) continue;
         ++stats_.clips;
-        clipper::ClipResult r = template_window.clip(pieces[c].shape);
+        clipper::ClipResult r =
+            clip_of(pieces[c].parent, [&] { return template_window.clip(pieces[c].shape); });
         if (r.inside.empty()) continue;
         alive[c] = false;
         grid.erase_wide(c);
@@ -151,11 +164,12 @@ class AreaSort {
     ++stats_.depth_splits;
     const Nearness& np = nearness_[piece.parent];
     const Nearness& nt = nearness_[front_parent];
-    const PolygonWithHoles2 half =
-        detail::half_plane_in_box(np.a - nt.a, np.b - nt.b, np.c - nt.c, clipper::box_of(piece.shape));
+    const PolygonWithHoles2 half = detail::half_plane_in_box(np.a - nt.a, np.b - nt.b, np.c - nt.c,
+                                                             clipper::box_of(piece.shape));
     if (half.outer.empty()) return;
     ++stats_.clips;
-    for (PolygonWithHoles2& p : clipper::clip(piece.shape, half).inside) {
+    for (PolygonWithHoles2& p :
+         clip_of(piece.parent, [&] { return clipper::clip(piece.shape, half).inside; })) {
       out.push_back({std::move(p), piece.parent});
     }
   }
@@ -205,12 +219,12 @@ class AreaSort {
     const ConvexWindow front_window(front.shape);
     for (Piece& p : offenders) {
       ++stats_.clips;
-      clipper::ClipResult r = front_window.clip(p.shape);
+      clipper::ClipResult r = clip_of(p.parent, [&] { return front_window.clip(p.shape); });
       for (PolygonWithHoles2& q : r.inside) in_front_area.push_back({std::move(q), p.parent});
       for (PolygonWithHoles2& q : r.outside) elsewhere.push_back({std::move(q), p.parent});
     }
     ++stats_.clips;
-    PolygonSet2 rest = clipper::difference(region, {front.shape});
+    PolygonSet2 rest = clip_of(parent, [&] { return clipper::difference(region, {front.shape}); });
     stack.push_back(front.parent);
     const std::size_t front_parent = front.parent;
     resolve({std::move(front.shape)}, front_parent, std::move(in_front_area), stack);
@@ -236,7 +250,8 @@ std::vector<Fragment> merge_by_parent(std::vector<Fragment> fragments) {
       group.push_back(std::move(fragments[j].shape));
       ++j;
     }
-    for (PolygonWithHoles2& p : clipper::merge_adjacent(group)) {
+    for (PolygonWithHoles2& p :
+         clip_of(fragments[i].parent, [&] { return clipper::merge_adjacent(group); })) {
       merged.push_back({fragments[i].parent, std::move(p)});
     }
     i = j;
@@ -269,7 +284,7 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const
     result.nearness[i] = *nearness;
     facing[i] = view.is_perspective() ? view.offset_from_eye(polygons[i].outer, normal) < 0.0
                                       : glm::dot(normal, view.forward()) < 0.0;
-    PolygonSet2 image = project_polygon(polygons[i], view);
+    PolygonSet2 image = clip_of(i, [&] { return project_polygon(polygons[i], view); });
     if (image.empty()) {
       ++stats.outside_view;
       continue;

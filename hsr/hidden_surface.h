@@ -32,6 +32,8 @@
 
 #include <cstddef>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "clipper/polygon.h"
@@ -78,12 +80,33 @@ struct VisibleSurfaces {
   HsrStats stats;
 };
 
+// A clip failed (clipper::SnapRoundingError, clipper/clip.h) while working on input
+// polygon `polygon`: the one whose piece was being clipped, or whose image or fragments
+// were. remove_hidden_surfaces throws it in place of the clipper's error, so that the
+// caller can name what the polygon stands for; no visible surfaces come back.
+class PolygonClipError : public std::runtime_error {
+ public:
+  PolygonClipError(std::size_t polygon, const std::string& problem)
+      : std::runtime_error("input polygon " + std::to_string(polygon) + ": " + problem),
+        polygon_(polygon),
+        problem_(problem) {}
+
+  std::size_t polygon() const { return polygon_; }
+  const std::string& problem() const { return problem_; }  // the clipper's message
+
+ private:
+  std::size_t polygon_;
+  std::string problem_;
+};
+
+// Throws PolygonClipError where a clip fails.
 VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const View& view,
                                        const HsrOptions& options = {});
 
 // The image of `polygon` in `view`: clipped to the view's frustum (near plane first, in
 // 3D, so polygons crossing it are cut, never dropped), then projected. Empty when nothing
-// of it is in view or it is seen edge-on.
+// of it is in view or it is seen edge-on. Throws clipper::SnapRoundingError where the cut
+// to the frustum fails.
 clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view);
 
 }  // namespace shadowgen::hsr

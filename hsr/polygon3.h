@@ -23,6 +23,13 @@ struct Plane3 {
   double signed_distance(const glm::dvec3& p) const;
 };
 
+// Newell's vector of a loop: twice its vector area, normal to its plane by the right-hand
+// rule, of length twice its area, whatever the plane's orientation; for a slightly
+// non-planar loop the normal of the least-squares plane. The sums run relative to the
+// loop's first vertex, so far from the origin the products do not cancel. Zero for fewer
+// than 3 vertices.
+glm::dvec3 newell_vector(const Loop3& loop);
+
 // Newell's method on the outer loop, offset through the loop's centroid: the least-squares
 // fit for slightly non-planar input. A loop without area gives a zero normal.
 Plane3 plane_of(const Polygon3& polygon);

@@ -5,7 +5,8 @@
 
 namespace shadowgen::hsr {
 
-SpatialGrid::SpatialGrid(const clipper::Box2& extent, std::size_t expected_items) : extent_(extent) {
+SpatialGrid::SpatialGrid(const clipper::Box2& extent, std::size_t expected_items)
+    : extent_(extent) {
   const double w = extent.xmax - extent.xmin, h = extent.ymax - extent.ymin;
   const double cells = static_cast<double>(std::max<std::size_t>(expected_items, 1));
   if (w > 0.0 && h > 0.0) {

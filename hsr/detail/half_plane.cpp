@@ -2,7 +2,8 @@
 
 namespace shadowgen::hsr::detail {
 
-clipper::PolygonWithHoles2 half_plane_in_box(double a, double b, double c, const clipper::Box2& box) {
+clipper::PolygonWithHoles2 half_plane_in_box(double a, double b, double c,
+                                             const clipper::Box2& box) {
   const double gx = box.xmax - box.xmin, gy = box.ymax - box.ymin;
   const double x0 = box.xmin - gx, x1 = box.xmax + gx, y0 = box.ymin - gy, y1 = box.ymax + gy;
   const clipper::Point2 corners[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};

@@ -71,11 +71,6 @@ class FaceBlock {
   std::vector<glm::dvec3> vertex_list_, normal_list_;
 };
 
-struct Part {
-  hsr::Plane3 plane;
-  hsr::PlaneChart chart;
-};
-
 // Material names, one per light set, unique.
 std::map<LightSet, std::string, LightSetLess> material_names(
     const Scene& scene, const std::set<LightSet, LightSetLess>& sets) {
@@ -99,6 +94,116 @@ std::string lights_comment(const Scene& scene, const LightSet& set) {
     out += obj_name(scene.lights[l].id);
   }
   return out + '\n';
+}
+
+// The regions of every face by light set, and the light sets that occur.
+struct SceneRegions {
+  std::vector<std::vector<LightRegion>> of_face;
+  std::set<LightSet, LightSetLess> sets;
+};
+
+SceneRegions scene_regions(const ShadowedScene& shadowed) {
+  const Scene& scene = shadowed.scene;
+  if (shadowed.lit.size() != scene.faces.size()) {
+    throw std::invalid_argument("obj_export: lit detail polygons not shaped [face][light]");
+  }
+  SceneRegions regions;
+  regions.of_face.resize(scene.faces.size());
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    regions.of_face[f] = light_regions(shadowed, f);
+    for (const LightRegion& r : regions.of_face[f]) regions.sets.insert(r.lights);
+  }
+  return regions;
+}
+
+// The "f" lines of one lit polygon: its triangles in `chart`, the chart of the part it
+// lies on (those without area there left out), on the polygon's own 3D vertices, all with
+// normal number `normal`. False when it could not be split into triangles.
+bool append_triangles(std::string& faces, FaceBlock& block, const hsr::Polygon3& polygon,
+                      const hsr::PlaneChart& chart, std::size_t normal) {
+  std::vector<glm::dvec3> corners(polygon.outer);
+  std::vector<clipper::Loop2> loops{chart.flatten(polygon.outer)};
+  for (const hsr::Loop3& h : polygon.holes) {
+    loops.push_back(chart.flatten(h));
+    corners.insert(corners.end(), h.begin(), h.end());
+  }
+  std::vector<clipper::Point2> flat;
+  for (const clipper::Loop2& loop : loops) flat.insert(flat.end(), loop.begin(), loop.end());
+  const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
+  if (!triangles) return false;
+  for (const clipper::Triangle& t : *triangles) {
+    if (clipper::orient2d(flat[t[0]], flat[t[1]], flat[t[2]]) == clipper::Orientation::kCollinear) {
+      continue;  // no area
+    }
+    faces += 'f';
+    for (const std::size_t corner : t) {
+      faces += ' ';
+      faces += std::to_string(block.vertex(corners[corner]) + 1);
+      faces += "//";
+      faces += std::to_string(normal + 1);
+    }
+    faces += '\n';
+  }
+  return true;
+}
+
+// One face's group: its "v" and "vn" lines, then a "usemtl" line per region and the
+// region's triangles. Vertices and normals are numbered on from the counts given, which
+// are advanced past the face's own.
+void append_face(std::string& obj, const Scene& scene, const Face& face,
+                 const std::vector<LightRegion>& regions,
+                 const std::map<LightSet, std::string, LightSetLess>& names,
+                 std::size_t& vertex_count, std::size_t& normal_count) {
+  obj += "g ";
+  obj += obj_name(face.id);
+  obj += '\n';
+  if (regions.empty()) return;
+  std::vector<hsr::Plane3> planes;  // by the index of the face's part
+  for (const hsr::Polygon3& p : face.parts) planes.push_back(hsr::plane_of(p));
+  FaceBlock block(vertex_count, normal_count);
+  std::string faces;  // the usemtl and f lines, after the face's v and vn lines
+  for (const LightRegion& region : regions) {
+    faces += "usemtl ";
+    faces += names.at(region.lights);
+    faces += '\n';
+    for (const LitPolygon& lit : region.polygons) {
+      const hsr::Plane3& plane = planes[lit.part];
+      const std::size_t normal = block.normal(plane.normal);
+      if (!append_triangles(faces, block, lit.polygon, hsr::chart_facing(plane.normal), normal)) {
+        throw std::runtime_error("face '" + face.id + "': a region of light set '" +
+                                 light_set_name(scene, region.lights) +
+                                 "' could not be split into triangles");
+      }
+    }
+  }
+  for (const glm::dvec3& v : block.vertex_list()) append_vector(obj, "v", v);
+  for (const glm::dvec3& v : block.normal_list()) append_vector(obj, "vn", v);
+  obj += faces;
+  vertex_count += block.vertex_list().size();
+  normal_count += block.normal_list().size();
+}
+
+// The MTL file: a header saying how the colours are made, then one material per set.
+std::string mtl_text(const Scene& scene,
+                     const std::map<LightSet, std::string, LightSetLess>& names) {
+  std::string mtl = "# shadowgen MTL: one material per set of lights reaching a region.\n# Kd = ";
+  append_number(mtl, kAmbientGrey);
+  mtl += " + ";
+  append_number(mtl, 1.0 - kAmbientGrey);
+  mtl += " * (intensity of the set's lights) / (intensity of all lights), per channel,\n";
+  mtl += "# clamped to [0, 1]: the shadow is grey, a region every light reaches white.\n";
+  for (const auto& [set, name] : names) {
+    const glm::dvec3 colour = light_set_colour(scene, set);
+    mtl += '\n';
+    mtl += lights_comment(scene, set);
+    mtl += "newmtl ";
+    mtl += name;
+    mtl += '\n';
+    append_vector(mtl, "Ka", colour);
+    append_vector(mtl, "Kd", colour);
+    mtl += "Ks 0 0 0\nd 1\nillum 1\n";
+  }
+  return mtl;
 }
 
 }  // namespace
@@ -129,16 +234,8 @@ glm::dvec3 light_set_colour(const Scene& scene, std::span<const std::size_t> lig
 
 ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
   const Scene& scene = shadowed.scene;
-  if (shadowed.lit.size() != scene.faces.size()) {
-    throw std::invalid_argument("obj_export: lit detail polygons not shaped [face][light]");
-  }
-  std::vector<std::vector<LightRegion>> regions(scene.faces.size());
-  std::set<LightSet, LightSetLess> sets;
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    regions[f] = light_regions(shadowed, f);
-    for (const LightRegion& r : regions[f]) sets.insert(r.lights);
-  }
-  const std::map<LightSet, std::string, LightSetLess> names = material_names(scene, sets);
+  const SceneRegions regions = scene_regions(shadowed);
+  const std::map<LightSet, std::string, LightSetLess> names = material_names(scene, regions.sets);
 
   ObjFiles files;
   std::string& obj = files.obj;
@@ -146,90 +243,11 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
   obj += "mtllib ";
   obj += mtl_file_name;
   obj += '\n';
-
   std::size_t vertex_count = 0, normal_count = 0;
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    const Face& face = scene.faces[f];
-    obj += "g ";
-    obj += obj_name(face.id);
-    obj += '\n';
-    if (regions[f].empty()) continue;
-
-    std::vector<Part> parts;  // by the index of the face's part
-    for (const hsr::Polygon3& p : face.parts) {
-      const hsr::Plane3 plane = hsr::plane_of(p);
-      parts.push_back({plane, hsr::chart_facing(plane.normal)});
-    }
-
-    FaceBlock block(vertex_count, normal_count);
-    std::string faces;  // the usemtl and f lines, after the face's v and vn lines
-    for (const LightRegion& region : regions[f]) {
-      faces += "usemtl ";
-      faces += names.at(region.lights);
-      faces += '\n';
-      for (const LitPolygon& lit : region.polygons) {
-        const hsr::Polygon3& polygon = lit.polygon;
-        const Part& part = parts[lit.part];
-        std::vector<glm::dvec3> corners(polygon.outer);
-        std::vector<clipper::Loop2> loops(1);
-        for (const glm::dvec3& p : polygon.outer) loops[0].push_back(part.chart(p));
-        for (const hsr::Loop3& h : polygon.holes) {
-          loops.emplace_back();
-          for (const glm::dvec3& p : h) {
-            loops.back().push_back(part.chart(p));
-            corners.push_back(p);
-          }
-        }
-        std::vector<clipper::Point2> flat;
-        for (const clipper::Loop2& loop : loops) flat.insert(flat.end(), loop.begin(), loop.end());
-        const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
-        if (!triangles) {
-          throw std::runtime_error("face '" + face.id + "': a region of light set '" +
-                                   light_set_name(scene, region.lights) +
-                                   "' could not be split into triangles");
-        }
-        const std::size_t n = block.normal(part.plane.normal);
-        for (const clipper::Triangle& t : *triangles) {
-          if (clipper::orient2d(flat[t[0]], flat[t[1]], flat[t[2]]) ==
-              clipper::Orientation::kCollinear) {
-            continue;  // no area
-          }
-          faces += 'f';
-          for (const std::size_t corner : t) {
-            faces += ' ';
-            faces += std::to_string(block.vertex(corners[corner]) + 1);
-            faces += "//";
-            faces += std::to_string(n + 1);
-          }
-          faces += '\n';
-        }
-      }
-    }
-    for (const glm::dvec3& v : block.vertex_list()) append_vector(obj, "v", v);
-    for (const glm::dvec3& v : block.normal_list()) append_vector(obj, "vn", v);
-    obj += faces;
-    vertex_count += block.vertex_list().size();
-    normal_count += block.normal_list().size();
+    append_face(obj, scene, scene.faces[f], regions.of_face[f], names, vertex_count, normal_count);
   }
-
-  std::string& mtl = files.mtl;
-  mtl += "# shadowgen MTL: one material per set of lights reaching a region.\n# Kd = ";
-  append_number(mtl, kAmbientGrey);
-  mtl += " + ";
-  append_number(mtl, 1.0 - kAmbientGrey);
-  mtl += " * (intensity of the set's lights) / (intensity of all lights), per channel,\n";
-  mtl += "# clamped to [0, 1]: the shadow is grey, a region every light reaches white.\n";
-  for (const auto& [set, name] : names) {
-    const glm::dvec3 colour = light_set_colour(scene, set);
-    mtl += '\n';
-    mtl += lights_comment(scene, set);
-    mtl += "newmtl ";
-    mtl += name;
-    mtl += '\n';
-    append_vector(mtl, "Ka", colour);
-    append_vector(mtl, "Kd", colour);
-    mtl += "Ks 0 0 0\nd 1\nillum 1\n";
-  }
+  files.mtl = mtl_text(scene, names);
   return files;
 }
 

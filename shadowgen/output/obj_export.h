@@ -1,7 +1,7 @@
 #pragma once
 
 // Wavefront OBJ + MTL output of the shadowed database: every face split into the regions
-// lit by the same set of lights (shadowgen/light_regions.h), one material per set, so any
+// lit by the same set of lights (shadowgen/shadows/light_regions.h), one material per set, so any
 // OBJ viewer shows the shadows. Made from the shadowed database alone.
 //
 // OBJ layout, faces in scene order (polygons, then mesh faces):
@@ -16,7 +16,7 @@
 //
 // Numbers are the shortest decimal form that reads back to the same double, so the
 // vertices are the regions' vertices bit for bit. Regions are triangulated in their
-// part's plane chart by ear clipping (shadowgen/detail/triangulate.h) on their own
+// part's plane chart by ear clipping (clipper/triangulate.h) on their own
 // vertices: no point is added, and the triangles of a region cover exactly its polygons
 // (triangles whose corners are exactly collinear, which add no area, are left out). Vertex
 // and normal numbers are global and 1-based, as OBJ counts them; a face's vertices and

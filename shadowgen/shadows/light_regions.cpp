@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
-#include <unordered_map>
 #include <utility>
 
 #include "clipper/clip.h"
@@ -21,75 +20,29 @@ namespace shadowgen {
 namespace {
 
 using LightSet = std::vector<std::size_t>;
+using SetPieces = std::vector<std::pair<LightSet, clipper::PolygonSet2>>;
 
-// One part of a face in its exact plane chart, and the way back to 3D.
-class PartChart {
- public:
-  PartChart(const hsr::Polygon3& part, const hsr::Plane3& plane)
-      : chart_(hsr::chart_facing(plane.normal)), plane_(plane), origin_(part.outer[0]) {
-    const int d = chart_.dropped_axis;
-    // The chart keeps a loop's turning sense exactly when the normal's dropped component is
-    // positive (plane_chart.h); otherwise loops are reversed on the way back to 3D.
-    reversed_ = plane.normal[d] < 0.0;
-    add_original(part);
-  }
-
-  // The part's own vertices are lifted back to themselves exactly.
-  void add_original(const hsr::Polygon3& polygon) {
-    for (const glm::dvec3& p : polygon.outer) original_.emplace(chart_(p), p);
-    for (const hsr::Loop3& h : polygon.holes) {
-      for (const glm::dvec3& p : h) original_.emplace(chart_(p), p);
+// Every set's pieces split by the lit polygons `clips` of light l: the pieces inside go to
+// the set with l added, those outside stay.
+SetPieces split_by_light(const SetPieces& regions,
+                         std::span<const clipper::PolygonWithHoles2> clips, std::size_t l) {
+  SetPieces split;
+  for (const auto& [set, pieces] : regions) {
+    clipper::PolygonSet2 inside, outside;
+    for (const clipper::PolygonWithHoles2& piece : pieces) {
+      clipper::ClipResult r = clipper::clip(piece, clips);
+      for (auto& p : r.inside) inside.push_back(std::move(p));
+      for (auto& p : r.outside) outside.push_back(std::move(p));
+    }
+    if (!outside.empty()) split.emplace_back(set, std::move(outside));
+    if (!inside.empty()) {
+      LightSet with = set;
+      with.push_back(l);  // lights are taken in increasing order: stays sorted
+      split.emplace_back(std::move(with), std::move(inside));
     }
   }
-
-  clipper::PolygonWithHoles2 to_chart(const hsr::Polygon3& polygon) const {
-    clipper::PolygonWithHoles2 out{to_chart(polygon.outer), {}};
-    for (const hsr::Loop3& h : polygon.holes) out.holes.push_back(to_chart(h));
-    return out;
-  }
-
-  hsr::Polygon3 lift(const clipper::PolygonWithHoles2& polygon) const {
-    hsr::Polygon3 out{lift(polygon.outer), {}};
-    for (const clipper::Loop2& h : polygon.holes) out.holes.push_back(lift(h));
-    return out;
-  }
-
- private:
-  clipper::Loop2 to_chart(const hsr::Loop3& loop) const {
-    clipper::Loop2 out;
-    out.reserve(loop.size());
-    for (const glm::dvec3& p : loop) out.push_back(chart_(p));
-    return out;
-  }
-
-  // The dropped coordinate from the plane, relative to a vertex of the part so that far
-  // from the origin the products do not cancel. The kept coordinates are the chart
-  // point's own, so charting a lifted point gives back the very same chart point.
-  glm::dvec3 lift(const clipper::Point2& q) const {
-    if (const auto it = original_.find(q); it != original_.end()) return it->second;
-    const int d = chart_.dropped_axis, i = (d + 1) % 3, j = (d + 2) % 3;
-    const glm::dvec3& n = plane_.normal;
-    glm::dvec3 p(0.0);
-    p[i] = q.x;
-    p[j] = q.y;
-    p[d] = origin_[d] - (n[i] * (q.x - origin_[i]) + n[j] * (q.y - origin_[j])) / n[d];
-    return p;
-  }
-
-  hsr::Loop3 lift(const clipper::Loop2& loop) const {
-    hsr::Loop3 out;
-    out.reserve(loop.size());
-    for (const clipper::Point2& q : loop) out.push_back(lift(q));
-    if (reversed_) std::reverse(out.begin(), out.end());
-    return out;
-  }
-
-  hsr::PlaneChart chart_;
-  hsr::Plane3 plane_;
-  glm::dvec3 origin_;
-  bool reversed_ = false;
-  std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original_;
-};
+  return split;
+}
 
 }  // namespace
 
@@ -127,31 +80,17 @@ std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_
 
   std::map<LightSet, std::vector<LitPolygon>, LightSetLess> by_set;
   for (const std::size_t k : parts) {
-    PartChart chart(f.parts[k], planes[k]);
-    std::vector<std::pair<LightSet, clipper::PolygonSet2>> regions;
-    regions.emplace_back(LightSet{}, clipper::normalized({chart.to_chart(f.parts[k])}));
+    // The part's own vertices are lifted back to themselves exactly; the lit polygons are
+    // charted exactly but not remembered (the part's plane places their vertices).
+    hsr::ChartedPlane chart(planes[k].normal, f.parts[k].outer[0], hsr::ChartFrom::kWorld);
+    SetPieces regions;
+    regions.emplace_back(LightSet{}, clipper::normalized({chart.flatten_known(f.parts[k])}));
     if (regions.back().second.empty()) continue;  // no area in its chart either
-
     for (std::size_t l = 0; l < lit.size(); ++l) {
       if (lit_by_part[k][l].empty()) continue;
       std::vector<clipper::PolygonWithHoles2> clips;
-      for (const hsr::Polygon3* q : lit_by_part[k][l]) clips.push_back(chart.to_chart(*q));
-      std::vector<std::pair<LightSet, clipper::PolygonSet2>> split;
-      for (auto& [set, pieces] : regions) {
-        clipper::PolygonSet2 inside, outside;
-        for (const clipper::PolygonWithHoles2& piece : pieces) {
-          clipper::ClipResult r = clipper::clip(piece, clips);
-          for (auto& p : r.inside) inside.push_back(std::move(p));
-          for (auto& p : r.outside) outside.push_back(std::move(p));
-        }
-        if (!outside.empty()) split.emplace_back(set, std::move(outside));
-        if (!inside.empty()) {
-          LightSet with = set;
-          with.push_back(l);  // lights are taken in increasing order: stays sorted
-          split.emplace_back(std::move(with), std::move(inside));
-        }
-      }
-      regions = std::move(split);
+      for (const hsr::Polygon3* q : lit_by_part[k][l]) clips.push_back(chart.flatten(*q));
+      regions = split_by_light(regions, clips, l);
     }
 
     // Pieces of one set cut by different lit polygons of a light share edges: merged.

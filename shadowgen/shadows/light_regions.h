@@ -38,7 +38,7 @@ struct LightSetLess {
 // deterministic order (empty set first, then by size, then lexicographically).
 //
 // Method: each part of the face (one, or the triangles of a non-planar polygon) is taken
-// to its exact plane chart (shadowgen/detail/plane_chart.h); the part's region is split
+// to its exact plane chart (hsr/plane_chart.h); the part's region is split
 // by each light's lit polygons in turn with the Weiler–Atherton clipper, every piece
 // going to "inside" (the light joins its set) or "outside". Each lit polygon is clipped
 // against the part it carries (LitPolygon::part). Chart points that are vertices of

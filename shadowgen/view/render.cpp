@@ -6,38 +6,26 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
-#include <unordered_map>
+#include <utility>
 
+#include "clipper/box.h"
 #include "clipper/clip.h"
+#include "hsr/plane_chart.h"
 #include "shadowgen/shadows/light_regions.h"
 
 namespace shadowgen {
 namespace {
 
-struct Box {
-  double x0 = std::numeric_limits<double>::infinity();
-  double y0 = std::numeric_limits<double>::infinity();
-  double x1 = -std::numeric_limits<double>::infinity();
-  double y1 = -std::numeric_limits<double>::infinity();
-
-  void add(const clipper::Loop2& loop) {
-    for (const clipper::Point2& p : loop) {
-      x0 = std::min(x0, p.x);
-      y0 = std::min(y0, p.y);
-      x1 = std::max(x1, p.x);
-      y1 = std::max(y1, p.y);
-    }
-  }
-  void add(const clipper::PolygonSet2& set) {
-    for (const clipper::PolygonWithHoles2& p : set) add(p.outer);
-  }
-  bool overlaps(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
-};
+clipper::Box2 box_of(const clipper::PolygonSet2& set) {
+  clipper::Box2 box;
+  for (const clipper::PolygonWithHoles2& p : set) box.add(clipper::box_of(p));
+  return box;
+}
 
 // The image of one light-set region on one part of a face.
 struct RegionImage {
   clipper::PolygonSet2 shape;
-  Box box;
+  clipper::Box2 box;
 };
 
 // Is every vertex of `polygon` inside the convex counter-clockwise `window`? A rounded
@@ -108,10 +96,32 @@ clipper::PolygonWithHoles2 to_pixels(const clipper::PolygonWithHoles2& image,
 
 double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
+// The part of `box`, grown by an eighth of its size and one unit on every side, where
+// f >= 0 (Sutherland–Hodgman, one line). Fewer than three points when there is none.
+clipper::Loop2 nonnegative_part(const hsr::ChartAffine& f, const clipper::Box2& box) {
+  const double margin = 0.125 * std::max(box.xmax - box.xmin, box.ymax - box.ymin) + 1.0;
+  const clipper::Loop2 rectangle{{box.xmin - margin, box.ymin - margin},
+                                 {box.xmax + margin, box.ymin - margin},
+                                 {box.xmax + margin, box.ymax + margin},
+                                 {box.xmin - margin, box.ymax + margin}};
+  clipper::Loop2 keep;
+  for (std::size_t e = 0; e < rectangle.size(); ++e) {
+    const clipper::Point2& p = rectangle[e];
+    const clipper::Point2& q = rectangle[(e + 1) % rectangle.size()];
+    const double dp = f.at(p), dq = f.at(q);
+    if (dp >= 0.0) keep.push_back(p);
+    if ((dp < 0.0) != (dq < 0.0)) {
+      const double t = dp / (dp - dq);
+      keep.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+    }
+  }
+  return keep;
+}
+
 // The part of `polygon` where (p − eye)·forward >= 0: an orthographic camera's near plane
-// through its eye. The cut is made in the polygon's own plane, in the chart that drops the
-// normal's largest axis; the polygon's own vertices are kept exactly, new ones are lifted
-// onto its plane.
+// through its eye. The cut is made in the polygon's own plane chart (hsr/plane_chart.h);
+// the polygon's own vertices are kept exactly, new ones are lifted onto its plane, and
+// the pieces keep the polygon's front side.
 std::vector<hsr::Polygon3> in_front_of(const hsr::Polygon3& polygon, const glm::dvec3& eye,
                                        const glm::dvec3& forward) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -127,75 +137,180 @@ std::vector<hsr::Polygon3> in_front_of(const hsr::Polygon3& polygon, const glm::
   if (lo >= 0.0) return {polygon};
   if (hi <= 0.0) return {};
   const hsr::Plane3 plane = hsr::plane_of(polygon);
-  const glm::dvec3 a = glm::abs(plane.normal);
   if (!(glm::length(plane.normal) > 0.0)) return {polygon};  // no area: hsr drops it
-  const int k = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
-  const int i = (k + 1) % 3, j = (k + 2) % 3;
-  std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original;
-  auto to_chart = [&](const hsr::Loop3& loop) {
-    clipper::Loop2 out;
-    for (const glm::dvec3& p : loop) {
-      out.push_back({p[i], p[j]});
-      original.emplace(out.back(), p);
-    }
-    return out;
-  };
-  clipper::PolygonWithHoles2 flat{to_chart(polygon.outer), {}};
-  for (const hsr::Loop3& hole : polygon.holes) flat.holes.push_back(to_chart(hole));
-  const glm::dvec3& n = plane.normal;
-  // depth = fu·u + fv·v + f0 on the chart.
-  const double fu = forward[i] - forward[k] * n[i] / n[k];
-  const double fv = forward[j] - forward[k] * n[j] / n[k];
-  const double f0 = forward[k] * plane.offset / n[k] - glm::dot(forward, eye);
-  Box box;
-  box.add(flat.outer);
-  const double margin = 0.125 * std::max(box.x1 - box.x0, box.y1 - box.y0) + 1.0;
-  const clipper::Loop2 rectangle{{box.x0 - margin, box.y0 - margin},
-                                 {box.x1 + margin, box.y0 - margin},
-                                 {box.x1 + margin, box.y1 + margin},
-                                 {box.x0 - margin, box.y1 + margin}};
-  // The rectangle cut by the half-plane depth >= 0 (Sutherland–Hodgman, one plane).
-  clipper::Loop2 keep;
-  auto depth = [&](const clipper::Point2& q) { return fu * q.x + fv * q.y + f0; };
-  for (std::size_t e = 0; e < rectangle.size(); ++e) {
-    const clipper::Point2& p = rectangle[e];
-    const clipper::Point2& q = rectangle[(e + 1) % rectangle.size()];
-    const double dp = depth(p), dq = depth(q);
-    if (dp >= 0.0) keep.push_back(p);
-    if ((dp < 0.0) != (dq < 0.0)) {
-      const double t = dp / (dp - dq);
-      keep.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+  hsr::ChartedPlane chart(plane.normal, polygon.outer.front(), hsr::ChartFrom::kWorld);
+  const clipper::PolygonWithHoles2 flat = chart.flatten_known(polygon);
+  hsr::ChartAffine depth = chart.dot_on_plane(forward);
+  depth.c -= glm::dot(forward, eye);
+  const clipper::Loop2 keep = nonnegative_part(depth, clipper::box_of(flat));
+  if (keep.size() < 3) return {};
+  return chart.lift(clipper::intersection({flat}, {{keep, {}}}));
+}
+
+void check_lit_shape(const ShadowedScene& shadowed) {
+  const Scene& scene = shadowed.scene;
+  if (shadowed.lit.size() != scene.faces.size()) {
+    throw std::invalid_argument("the shadowed database's lit polygons are not one list per face");
+  }
+  for (const auto& per_light : shadowed.lit) {
+    if (per_light.size() != scene.lights.size()) {
+      throw std::invalid_argument(
+          "the shadowed database's lit polygons are not one list per (face, light)");
     }
   }
-  if (keep.size() < 3) return {};
-  auto lift = [&](const clipper::Loop2& loop) {
-    hsr::Loop3 out;
-    for (const clipper::Point2& q : loop) {
-      if (const auto it = original.find(q); it != original.end()) {
-        out.push_back(it->second);
+}
+
+// The face parts hidden-surface removal is given, each with the (face, part) it is of.
+struct Parents {
+  std::vector<hsr::Polygon3> polygons;
+  std::vector<std::pair<std::size_t, std::size_t>> owner;
+};
+
+Parents parents_of(const Scene& scene, const glm::dvec3& eye, const hsr::View& view) {
+  Parents parents;
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    for (std::size_t p = 0; p < scene.faces[f].parts.size(); ++p) {
+      if (view.is_perspective()) {
+        parents.polygons.push_back(scene.faces[f].parts[p]);  // hsr cuts at the near plane
+        parents.owner.emplace_back(f, p);
         continue;
       }
-      glm::dvec3 p(0.0);
-      p[i] = q.x;
-      p[j] = q.y;
-      p[k] = (plane.offset - n[i] * q.x - n[j] * q.y) / n[k];
-      out.push_back(p);
+      for (hsr::Polygon3& piece : in_front_of(scene.faces[f].parts[p], eye, view.forward())) {
+        parents.polygons.push_back(std::move(piece));
+        parents.owner.emplace_back(f, p);
+      }
     }
-    return out;
-  };
-  std::vector<hsr::Polygon3> front;
-  for (const clipper::PolygonWithHoles2& piece : clipper::intersection({flat}, {{keep, {}}})) {
-    hsr::Polygon3 p{lift(piece.outer), {}};
-    for (const clipper::Loop2& hole : piece.holes) p.holes.push_back(lift(hole));
-    // The chart may mirror the plane: keep the part's own orientation (its front side).
-    if (glm::dot(hsr::plane_of(p).normal, n) < 0.0) {
-      std::reverse(p.outer.begin(), p.outer.end());
-      for (hsr::Loop3& hole : p.holes) std::reverse(hole.begin(), hole.end());
-    }
-    front.push_back(std::move(p));
   }
-  return front;
+  return parents;
 }
+
+using Fragments = std::vector<std::pair<std::size_t, clipper::PolygonWithHoles2>>;
+
+// The visible fragments within the picture with their parents, sorted by parent.
+// Perspective views are clipped to their window by hsr; orthographic ones here.
+Fragments fragments_in_picture(std::vector<hsr::Fragment>& visible, const CameraView& camera) {
+  Fragments fragments;
+  if (camera.view().is_perspective()) {
+    for (hsr::Fragment& fragment : visible) {
+      fragments.emplace_back(fragment.parent, std::move(fragment.shape));
+    }
+  } else {
+    const clipper::PolygonWithHoles2 window = camera.window();
+    for (hsr::Fragment& fragment : visible) {
+      if (inside_window(fragment.shape, window.outer)) {
+        fragments.emplace_back(fragment.parent, std::move(fragment.shape));
+        continue;
+      }
+      for (clipper::PolygonWithHoles2& piece : clipper::intersection({fragment.shape}, {window})) {
+        fragments.emplace_back(fragment.parent, std::move(piece));
+      }
+    }
+  }
+  std::stable_sort(fragments.begin(), fragments.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  return fragments;
+}
+
+// Steps 2 and 3 of render.h: fragments split by their face's light-set regions, shaded
+// and mapped to pixels. Fragments come face by face; each face's regions are projected
+// once, when its first fragment comes.
+class Painter {
+ public:
+  Painter(const ShadowedScene& shadowed, const CameraView& camera, const RenderOptions& options,
+          const Parents& parents, const std::vector<hsr::Plane3>& planes, Picture& picture)
+      : shadowed_(shadowed),
+        camera_(camera),
+        options_(options),
+        parents_(parents),
+        planes_(planes),
+        picture_(picture),
+        current_face_(shadowed.scene.faces.size()) {}
+
+  void paint(std::size_t parent, const clipper::PolygonWithHoles2& shape) {
+    const auto [f, part] = parents_.owner[parent];
+    const hsr::View& view = camera_.view();
+    const hsr::Plane3& plane = planes_[parent];
+    const bool front = view.is_perspective() ? plane.signed_distance(view.eye()) > 0.0
+                                             : glm::dot(plane.normal, view.forward()) < 0.0;
+    if (!front) {
+      add_piece(parent, {}, true, shape);
+      return;
+    }
+    if (f != current_face_) project_regions(f);
+    clipper::PolygonSet2 remaining{shape};
+    const clipper::Box2 box = box_of(remaining);
+    for (std::size_t r = 0; r < regions_.size() && !remaining.empty(); ++r) {
+      const RegionImage& image = images_[r][part];
+      // A region whose box only touches the fragment's covers none of its area.
+      if (image.shape.empty() || !image.box.overlaps(box)) continue;
+      remaining = split_off(parent, r, remaining);
+    }
+    for (const clipper::PolygonWithHoles2& rest : remaining) add_piece(parent, {}, false, rest);
+  }
+
+ private:
+  void project_regions(std::size_t f) {
+    current_face_ = f;
+    regions_ = light_regions(shadowed_, f);
+    images_.assign(regions_.size(),
+                   std::vector<RegionImage>(shadowed_.scene.faces[f].parts.size()));
+    for (std::size_t r = 0; r < regions_.size(); ++r) {
+      if (regions_[r].lights.empty()) continue;  // shadow is what the others leave
+      for (const LitPolygon& lit : regions_[r].polygons) {
+        for (clipper::PolygonWithHoles2& p : hsr::project_polygon(lit.polygon, camera_.view())) {
+          images_[r][lit.part].shape.push_back(std::move(p));
+        }
+      }
+      for (RegionImage& image : images_[r]) image.box = box_of(image.shape);
+    }
+  }
+
+  // Paints what of `remaining` lies in region r; returns the rest.
+  clipper::PolygonSet2 split_off(std::size_t parent, std::size_t r,
+                                 const clipper::PolygonSet2& remaining) {
+    const RegionImage& image = images_[r][parents_.owner[parent].second];
+    // One subject against the region's polygons: this form of the clip drops the
+    // slivers that only rounding makes where two regions' images meet along a seam.
+    clipper::PolygonSet2 outside;
+    for (const clipper::PolygonWithHoles2& subject : remaining) {
+      clipper::ClipResult split = clipper::clip(subject, image.shape);
+      ++picture_.stats.region_clips;
+      for (const clipper::PolygonWithHoles2& inside : split.inside) {
+        add_piece(parent, regions_[r].lights, false, inside);
+      }
+      for (clipper::PolygonWithHoles2& rest : split.outside) outside.push_back(std::move(rest));
+    }
+    return outside;
+  }
+
+  void add_piece(std::size_t parent, const std::vector<std::size_t>& lights, bool back_side,
+                 const clipper::PolygonWithHoles2& image) {
+    if (!(clipper::area(image) > 0.0)) return;
+    const Scene& scene = shadowed_.scene;
+    const hsr::Plane3& plane = planes_[parent];
+    Piece piece;
+    piece.face = parents_.owner[parent].first;
+    piece.part = parents_.owner[parent].second;
+    piece.face_id = scene.faces[piece.face].id;
+    piece.lights = lights;
+    piece.light_set = light_set_name(scene, lights);
+    piece.back_side = back_side;
+    const glm::dvec3 centroid = centroid_3d(image, camera_.view(), plane);
+    piece.colour = shade(scene, lights, centroid, plane.normal, options_);
+    piece.shape = to_pixels(image, camera_);
+    picture_.pieces.push_back(std::move(piece));
+  }
+
+  const ShadowedScene& shadowed_;
+  const CameraView& camera_;
+  const RenderOptions& options_;
+  const Parents& parents_;
+  const std::vector<hsr::Plane3>& planes_;
+  Picture& picture_;
+  std::size_t current_face_;
+  std::vector<LightRegion> regions_;
+  std::vector<std::vector<RegionImage>> images_;  // [region][part]
+};
 
 }  // namespace
 
@@ -236,16 +351,8 @@ Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm:
 }
 
 Picture render(const ShadowedScene& shadowed, const Camera& camera, const RenderOptions& options) {
+  check_lit_shape(shadowed);
   const Scene& scene = shadowed.scene;
-  if (shadowed.lit.size() != scene.faces.size()) {
-    throw std::invalid_argument("the shadowed database's lit polygons are not one list per face");
-  }
-  for (const auto& per_light : shadowed.lit) {
-    if (per_light.size() != scene.lights.size()) {
-      throw std::invalid_argument(
-          "the shadowed database's lit polygons are not one list per (face, light)");
-    }
-  }
   const CameraView camera_view(camera, scene, options.width, options.height);
   const hsr::View& view = camera_view.view();
 
@@ -256,116 +363,16 @@ Picture render(const ShadowedScene& shadowed, const Camera& camera, const Render
   picture.background = options.background;
 
   // 1. Hidden-surface removal on the parents only.
-  std::vector<hsr::Polygon3> parents;
-  std::vector<std::pair<std::size_t, std::size_t>> owner;  // (face, part) per parent
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    for (std::size_t p = 0; p < scene.faces[f].parts.size(); ++p) {
-      if (view.is_perspective()) {
-        parents.push_back(scene.faces[f].parts[p]);  // hsr cuts at the near plane itself
-        owner.emplace_back(f, p);
-        continue;
-      }
-      for (hsr::Polygon3& piece :
-           in_front_of(scene.faces[f].parts[p], camera.eye, view.forward())) {
-        parents.push_back(std::move(piece));
-        owner.emplace_back(f, p);
-      }
-    }
-  }
-  picture.stats.parent_polygons = parents.size();
-  hsr::VisibleSurfaces visible = hsr::remove_hidden_surfaces(parents, view);
+  const Parents parents = parents_of(scene, camera.eye, view);
+  picture.stats.parent_polygons = parents.polygons.size();
+  hsr::VisibleSurfaces visible = hsr::remove_hidden_surfaces(parents.polygons, view);
   picture.stats.hsr = visible.stats;
-
-  // Perspective views are clipped to their window by hsr; orthographic ones here.
-  std::vector<std::pair<std::size_t, clipper::PolygonWithHoles2>> fragments;
-  if (view.is_perspective()) {
-    for (hsr::Fragment& fragment : visible.fragments) {
-      fragments.emplace_back(fragment.parent, std::move(fragment.shape));
-    }
-  } else {
-    const clipper::PolygonWithHoles2 window = camera_view.window();
-    for (hsr::Fragment& fragment : visible.fragments) {
-      if (inside_window(fragment.shape, window.outer)) {
-        fragments.emplace_back(fragment.parent, std::move(fragment.shape));
-        continue;
-      }
-      for (clipper::PolygonWithHoles2& piece : clipper::intersection({fragment.shape}, {window})) {
-        fragments.emplace_back(fragment.parent, std::move(piece));
-      }
-    }
-  }
-  std::stable_sort(fragments.begin(), fragments.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  const Fragments fragments = fragments_in_picture(visible.fragments, camera_view);
   picture.stats.fragments = fragments.size();
 
   // 2. and 3., face by face (fragments are sorted by parent, parents by face).
-  std::size_t current_face = scene.faces.size();
-  std::vector<LightRegion> regions;
-  std::vector<std::vector<RegionImage>> images;  // [region][part]
-  auto add_piece = [&](std::size_t f, std::size_t part, std::size_t parent,
-                       const std::vector<std::size_t>& lights, bool back_side,
-                       const clipper::PolygonWithHoles2& image) {
-    if (!(clipper::area(image) > 0.0)) return;
-    const hsr::Plane3& plane = visible.planes[parent];
-    Piece piece;
-    piece.face = f;
-    piece.part = part;
-    piece.face_id = scene.faces[f].id;
-    piece.lights = lights;
-    piece.light_set = light_set_name(scene, lights);
-    piece.back_side = back_side;
-    piece.colour = shade(scene, lights, centroid_3d(image, view, plane), plane.normal, options);
-    piece.shape = to_pixels(image, camera_view);
-    picture.pieces.push_back(std::move(piece));
-  };
-
-  for (auto& [parent, shape] : fragments) {
-    const auto [f, part] = owner[parent];
-    const hsr::Plane3& plane = visible.planes[parent];
-    const bool front = view.is_perspective() ? plane.signed_distance(view.eye()) > 0.0
-                                             : glm::dot(plane.normal, view.forward()) < 0.0;
-    if (!front) {
-      add_piece(f, part, parent, {}, true, shape);
-      continue;
-    }
-    if (f != current_face) {
-      current_face = f;
-      const Face& face = scene.faces[f];
-      regions = light_regions(shadowed, f);
-      images.assign(regions.size(), std::vector<RegionImage>(face.parts.size()));
-      for (std::size_t r = 0; r < regions.size(); ++r) {
-        if (regions[r].lights.empty()) continue;  // shadow is what the others leave
-        for (const LitPolygon& lit : regions[r].polygons) {
-          for (clipper::PolygonWithHoles2& p : hsr::project_polygon(lit.polygon, view)) {
-            images[r][lit.part].shape.push_back(std::move(p));
-          }
-        }
-        for (RegionImage& image : images[r]) image.box.add(image.shape);
-      }
-    }
-    clipper::PolygonSet2 remaining{shape};
-    Box box;
-    box.add(remaining);
-    for (std::size_t r = 0; r < regions.size() && !remaining.empty(); ++r) {
-      const RegionImage& image = images[r][part];
-      if (image.shape.empty() || !image.box.overlaps(box)) continue;
-      // One subject against the region's polygons: this form of the clip drops the
-      // slivers that only rounding makes where two regions' images meet along a seam.
-      clipper::PolygonSet2 outside;
-      for (const clipper::PolygonWithHoles2& subject : remaining) {
-        clipper::ClipResult split = clipper::clip(subject, image.shape);
-        ++picture.stats.region_clips;
-        for (const clipper::PolygonWithHoles2& inside : split.inside) {
-          add_piece(f, part, parent, regions[r].lights, false, inside);
-        }
-        for (clipper::PolygonWithHoles2& rest : split.outside) outside.push_back(std::move(rest));
-      }
-      remaining = std::move(outside);
-    }
-    for (const clipper::PolygonWithHoles2& rest : remaining) {
-      add_piece(f, part, parent, {}, false, rest);
-    }
-  }
+  Painter painter(shadowed, camera_view, options, parents, visible.planes, picture);
+  for (const auto& [parent, shape] : fragments) painter.paint(parent, shape);
   picture.stats.pieces = picture.pieces.size();
   for (const Piece& piece : picture.pieces) picture.stats.back_side_pieces += piece.back_side;
   return picture;

@@ -12,7 +12,7 @@
 //      first cut in 3D at the plane through its eye; perspective ones are cut at the near
 //      plane by hsr);
 //   2. every visible fragment of a face seen from its front side is split by the face's
-//      light-set regions (shadowgen/light_regions.h), each projected into the image by
+//      light-set regions (shadowgen/shadows/light_regions.h), each projected into the image by
 //      hsr::project_polygon (cut at the near plane in 3D): the fragment is clipped by the
 //      regions of non-empty sets in turn with the Weiler–Atherton clipper, the inside
 //      going to that set, and what is left at the end is in shadow. So the pieces of one
@@ -52,8 +52,8 @@
 
 #include "clipper/polygon.h"
 #include "hsr/hidden_surface.h"
-#include "shadowgen/view/camera.h"
 #include "shadowgen/model/shadowed_scene.h"
+#include "shadowgen/view/camera.h"
 
 namespace shadowgen {
 

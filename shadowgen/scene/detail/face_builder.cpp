@@ -7,10 +7,10 @@
 #include <utility>
 
 #include "clipper/predicates.h"
-#include "hsr/collinearity.h"
-#include "loop_validation.h"
-#include "hsr/plane_chart.h"
 #include "clipper/triangulate.h"
+#include "hsr/collinearity.h"
+#include "hsr/plane_chart.h"
+#include "loop_validation.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
@@ -47,13 +47,6 @@ hsr::PlaneChart chart_without_normal(const hsr::Loop3& loop) {
     }
   }
   return {};
-}
-
-clipper::Loop2 to_chart(const hsr::Loop3& loop, const hsr::PlaneChart& chart) {
-  clipper::Loop2 out;
-  out.reserve(loop.size());
-  for (const glm::dvec3& p : loop) out.push_back(chart(p));
-  return out;
 }
 
 // Orthonormal coordinates on the plane through `origin` with unit normal n, oriented so
@@ -113,53 +106,93 @@ Planarity planarity(const hsr::Polygon3& polygon, const glm::dvec3& normal) {
   return result;
 }
 
-}  // namespace
+// The steps of build_face, sharing what it reports to.
+class FaceBuilder {
+ public:
+  FaceBuilder(const FaceSource& source, bool strict, std::vector<std::string>& warnings)
+      : source_(source),
+        strict_(strict),
+        warnings_(warnings),
+        mesh_(source.kind == FaceKind::kMeshFace),
+        outer_name_(mesh_ ? "the face" : "the outer loop") {}
 
-std::string face_message(const std::string& file, const std::string& face_id,
-                         const std::string& what) {
-  return InputError(file, face_id, what).what();
-}
+  Face build(hsr::Polygon3 polygon) {
+    Face face{source_.id, {}, source_.file};
+    check_vertex_counts(polygon);
+    if (degenerate(polygon)) {  // kept as given
+      face.parts.push_back(std::move(polygon));
+      return face;
+    }
+    const std::vector<std::string> loop_names = drop_collinear_holes(polygon);
+    const glm::dvec3 normal = hsr::plane_of(polygon).normal;
+    const bool has_normal = finite(normal) && normal != glm::dvec3(0.0);
+    const std::string how_far = distance_from_plane(polygon, normal, has_normal);
+    const bool planar = how_far.empty();
+    if (!planar && strict_) fail("not planar (" + how_far + ")");
 
-Face build_face(hsr::Polygon3 polygon, const FaceSource& source, bool strict,
-                std::vector<std::string>& warnings) {
-  auto fail = [&](const std::string& what) { throw InputError(source.file, source.id, what); };
-  auto warn = [&](const std::string& what) {
-    warnings.push_back(face_message(source.file, source.id, what));
-  };
-  const bool mesh = source.kind == FaceKind::kMeshFace;
-  const std::string outer_name = mesh ? "the face" : "the outer loop";
-  Face face{source.id, {}, source.file};
-
-  if (polygon.outer.size() < 3) {
-    fail(outer_name + " has " + std::to_string(polygon.outer.size()) +
-         " vertices; at least 3 are needed");
+    // A planar face is checked in its exact chart; a non-planar one in its projection on
+    // the best-fit plane, where it will be triangulated (a coordinate chart could fold it).
+    std::vector<clipper::Loop2> loops;
+    if (planar) {
+      const hsr::PlaneChart chart =
+          has_normal ? hsr::chart_facing(normal) : chart_without_normal(polygon.outer);
+      loops = flatten_loops(polygon, [&chart](const hsr::Loop3& l) { return chart.flatten(l); });
+    } else {
+      const PlaneFrame frame(polygon.outer[0], normal);
+      loops = flatten_loops(polygon, [&frame](const hsr::Loop3& l) { return frame.project(l); });
+    }
+    orient_holes(polygon, loops, loop_names);
+    if (planar) {
+      face.parts.push_back(std::move(polygon));
+      return face;
+    }
+    face.parts = triangles(polygon, loops, how_far);
+    warn("not planar (" + how_far + "): split into " + std::to_string(face.parts.size()) +
+         " triangles");
+    return face;
   }
-  for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
-    if (polygon.holes[k].size() < 3) {
-      fail("hole " + std::to_string(k) + " has " + std::to_string(polygon.holes[k].size()) +
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(source_.file, source_.id, what);
+  }
+  void warn(const std::string& what) {
+    warnings_.push_back(face_message(source_.file, source_.id, what));
+  }
+
+  void check_vertex_counts(const hsr::Polygon3& polygon) const {
+    if (polygon.outer.size() < 3) {
+      fail(outer_name_ + " has " + std::to_string(polygon.outer.size()) +
            " vertices; at least 3 are needed");
     }
-    if (hsr::distinct_points_up_to_3(polygon.holes[k]) < 3) {
-      fail("hole " + std::to_string(k) + " has fewer than 3 distinct vertices");
+    for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
+      if (polygon.holes[k].size() < 3) {
+        fail("hole " + std::to_string(k) + " has " + std::to_string(polygon.holes[k].size()) +
+             " vertices; at least 3 are needed");
+      }
+      if (hsr::distinct_points_up_to_3(polygon.holes[k]) < 3) {
+        fail("hole " + std::to_string(k) + " has fewer than 3 distinct vertices");
+      }
     }
   }
 
-  // Degenerate faces are kept as given.
-  const bool too_few = hsr::distinct_points_up_to_3(polygon.outer) < 3;
-  if (too_few && !mesh) fail(outer_name + " has fewer than 3 distinct vertices");
-  if (too_few || hsr::all_collinear(polygon.outer)) {
+  // Whether the face has no area; degenerate faces are kept as given, with a warning.
+  bool degenerate(const hsr::Polygon3& polygon) {
+    const bool too_few = hsr::distinct_points_up_to_3(polygon.outer) < 3;
+    if (too_few && !mesh_) fail(outer_name_ + " has fewer than 3 distinct vertices");
+    if (!too_few && !hsr::all_collinear(polygon.outer)) return false;
     if (!polygon.holes.empty()) {
       fail("the outer loop has no area (its vertices are collinear), so no hole can lie in it");
     }
     warn(std::string("zero area (") +
          (too_few ? "fewer than 3 distinct vertices" : "collinear vertices") +
          "): kept, with area 0");
-    face.parts.push_back(std::move(polygon));
-    return face;
+    return true;
   }
 
-  std::vector<std::string> loop_names{outer_name};
-  {
+  // Drops the holes without area; returns the names of the loops left, outer loop first.
+  std::vector<std::string> drop_collinear_holes(hsr::Polygon3& polygon) {
+    std::vector<std::string> loop_names{outer_name_};
     std::vector<hsr::Loop3> holes;
     for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
       if (hsr::all_collinear(polygon.holes[k])) {
@@ -170,61 +203,75 @@ Face build_face(hsr::Polygon3 polygon, const FaceSource& source, bool strict,
       loop_names.push_back("hole " + std::to_string(k));
     }
     polygon.holes = std::move(holes);
+    return loop_names;
   }
 
-  const glm::dvec3 normal = hsr::plane_of(polygon).normal;
-  const bool has_normal = finite(normal) && normal != glm::dvec3(0.0);
-  const Planarity flat = has_normal ? planarity(polygon, normal) : Planarity{};
-  const bool planar = !(flat.deviation > kPlanarityTolerance * flat.extent);
-  const std::string how_far =
-      planar ? std::string()
-             : "a vertex lies " + short_number(flat.deviation) + " from the best-fit plane, " +
-                   short_number(flat.deviation / flat.extent) +
-                   " of the face's extent; tolerance " + short_number(kPlanarityTolerance);
-  if (!planar && strict) fail("not planar (" + how_far + ")");
-
-  // A planar face is checked in its exact chart; a non-planar one in its projection on
-  // the best-fit plane, where it will be triangulated (a coordinate chart could fold it).
-  std::vector<clipper::Loop2> loops;
-  if (planar) {
-    const hsr::PlaneChart chart =
-        has_normal ? hsr::chart_facing(normal) : chart_without_normal(polygon.outer);
-    loops.push_back(to_chart(polygon.outer, chart));
-    for (const hsr::Loop3& hole : polygon.holes) loops.push_back(to_chart(hole, chart));
-  } else {
-    const PlaneFrame frame(polygon.outer[0], normal);
-    loops.push_back(frame.project(polygon.outer));
-    for (const hsr::Loop3& hole : polygon.holes) loops.push_back(frame.project(hole));
+  // "" for a planar face; otherwise how far from its best-fit plane it is, in words.
+  static std::string distance_from_plane(const hsr::Polygon3& polygon, const glm::dvec3& normal,
+                                         bool has_normal) {
+    const Planarity flat = has_normal ? planarity(polygon, normal) : Planarity{};
+    if (!(flat.deviation > kPlanarityTolerance * flat.extent)) return "";
+    return "a vertex lies " + short_number(flat.deviation) + " from the best-fit plane, " +
+           short_number(flat.deviation / flat.extent) + " of the face's extent; tolerance " +
+           short_number(kPlanarityTolerance);
   }
 
-  const LoopCheck check = check_loops(loops, loop_names);
-  if (check.problem) fail(*check.problem);
-  for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
-    if (check.counter_clockwise[k + 1] == check.counter_clockwise[0]) {
-      std::reverse(polygon.holes[k].begin(), polygon.holes[k].end());
-      std::reverse(loops[k + 1].begin(), loops[k + 1].end());
+  template <typename Flatten>
+  static std::vector<clipper::Loop2> flatten_loops(const hsr::Polygon3& polygon, Flatten flatten) {
+    std::vector<clipper::Loop2> loops{flatten(polygon.outer)};
+    for (const hsr::Loop3& hole : polygon.holes) loops.push_back(flatten(hole));
+    return loops;
+  }
+
+  // Validates the loops; turns holes to run opposite to the outer loop.
+  void orient_holes(hsr::Polygon3& polygon, std::vector<clipper::Loop2>& loops,
+                    const std::vector<std::string>& loop_names) const {
+    const LoopCheck check = check_loops(loops, loop_names);
+    if (check.problem) fail(*check.problem);
+    for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
+      if (check.counter_clockwise[k + 1] == check.counter_clockwise[0]) {
+        std::reverse(polygon.holes[k].begin(), polygon.holes[k].end());
+        std::reverse(loops[k + 1].begin(), loops[k + 1].end());
+      }
     }
   }
-  if (planar) {
-    face.parts.push_back(std::move(polygon));
-    return face;
+
+  // A non-planar face as triangles on its own 3D vertices, those without area left out.
+  std::vector<hsr::Polygon3> triangles(const hsr::Polygon3& polygon,
+                                       const std::vector<clipper::Loop2>& loops,
+                                       const std::string& how_far) const {
+    const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
+    if (!triangles) fail("not planar (" + how_far + "), and could not be split into triangles");
+    std::vector<glm::dvec3> vertices(polygon.outer);
+    for (const hsr::Loop3& hole : polygon.holes) {
+      vertices.insert(vertices.end(), hole.begin(), hole.end());
+    }
+    std::vector<hsr::Polygon3> parts;
+    for (const clipper::Triangle& t : *triangles) {
+      hsr::Loop3 corners{vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+      if (hsr::all_collinear(corners)) continue;  // no area in 3D either: adds nothing
+      parts.push_back({std::move(corners), {}});
+    }
+    return parts;
   }
 
-  const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
-  if (!triangles) fail("not planar (" + how_far + "), and could not be split into triangles");
+  const FaceSource& source_;
+  bool strict_;
+  std::vector<std::string>& warnings_;
+  bool mesh_;
+  std::string outer_name_;
+};
 
-  std::vector<glm::dvec3> vertices(polygon.outer);
-  for (const hsr::Loop3& hole : polygon.holes) {
-    vertices.insert(vertices.end(), hole.begin(), hole.end());
-  }
-  for (const clipper::Triangle& t : *triangles) {
-    hsr::Loop3 corners{vertices[t[0]], vertices[t[1]], vertices[t[2]]};
-    if (hsr::all_collinear(corners)) continue;  // no area in 3D either: adds nothing
-    face.parts.push_back({std::move(corners), {}});
-  }
-  warn("not planar (" + how_far + "): split into " + std::to_string(face.parts.size()) +
-       " triangles");
-  return face;
+}  // namespace
+
+std::string face_message(const std::string& file, const std::string& face_id,
+                         const std::string& what) {
+  return InputError(file, face_id, what).what();
+}
+
+Face build_face(hsr::Polygon3 polygon, const FaceSource& source, bool strict,
+                std::vector<std::string>& warnings) {
+  return FaceBuilder(source, strict, warnings).build(std::move(polygon));
 }
 
 }  // namespace shadowgen::detail

@@ -16,7 +16,7 @@
 //     otherwise it is split into triangles on its original 3D vertices (triangulate.h),
 //     each exactly planar, all keeping the face's id, with a warning.
 //   - Loops must be simple, holes inside the outer loop and apart from each other
-//     (loop_validation.h). A planar face is checked in its plane chart (plane_chart.h),
+//     (loop_validation.h). A planar face is checked in its plane chart (hsr/plane_chart.h),
 //     exactly; a non-planar one in its projection on the best-fit plane (rounded
 //     coordinates, exact predicates on them), the same 2D image its triangulation uses,
 //     since a coordinate chart can fold a strongly bent face onto itself.

@@ -7,7 +7,7 @@
 
 #include "clipper/clip.h"
 #include "clipper/normalize.h"
-#include "plane_lifter.h"
+#include "hsr/plane_chart.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -43,10 +43,12 @@ clipper::PolygonWithHoles2 grown_box(const clipper::Loop2& loop) {
 
 // The face's plane: heights above it, and its chart relative to a vertex.
 struct FaceFrame {
-  glm::dvec3 origin;
-  glm::dvec3 normal;
-  hsr::PlaneChart chart;
-  double height(const glm::dvec3& p) const { return glm::dot(normal, p - origin); }
+  const hsr::ChartedPlane& plane;
+  const glm::dvec3& origin() const { return plane.origin(); }
+  const glm::dvec3& normal() const { return plane.normal(); }
+  // Chart coordinates of an offset from the origin.
+  clipper::Point2 chart(const glm::dvec3& offset) const { return plane.chart()(offset); }
+  double height(const glm::dvec3& p) const { return glm::dot(normal(), p - origin()); }
 };
 
 // Where the light sends a point of an occluder onto the face's plane.
@@ -60,11 +62,11 @@ struct Projection {
   clipper::Point2 operator()(const glm::dvec3& p, double t) const {
     if (light.type == LightType::kDirectional) {
       // Along the light by the height over its normal component.
-      const double along = glm::dot(face.normal, light.direction);
+      const double along = glm::dot(face.normal(), light.direction);
       return face.chart(p - (t * slab / along) * light.direction);
     }
     // From the lamp through the point, to height 0: scaled by slab / (slab − h).
-    const glm::dvec3 lamp = light.position - face.origin;
+    const glm::dvec3 lamp = light.position - face.origin();
     return face.chart(lamp + (p - lamp) / (1.0 - t));
   }
 };
@@ -73,9 +75,9 @@ struct Projection {
 clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& occluder_normal,
                                const Projection& project) {
   const FaceFrame& face = project.face;
-  const glm::dvec3 g = face.normal - glm::dot(face.normal, occluder_normal) * occluder_normal;
+  const glm::dvec3 g = face.normal() - glm::dot(face.normal(), occluder_normal) * occluder_normal;
   const double g2 = glm::dot(g, g);
-  const glm::dvec3 l = glm::cross(occluder_normal, face.normal);
+  const glm::dvec3 l = glm::cross(occluder_normal, face.normal());
   const double l_length = glm::length(l);
   if (g2 == 0.0 || l_length == 0.0) {
     // Parallel to the face: one height, every vertex moved as it is.
@@ -85,7 +87,7 @@ clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& 
       for (const glm::dvec3& v : loop) {
         const double t = face.height(v) / project.slab;
         if (!(t > 0.0 && t <= project.t_max)) return clipper::Loop2{};
-        out.push_back(project(v - face.origin, t));
+        out.push_back(project(v - face.origin(), t));
       }
       return out;
     };
@@ -96,7 +98,7 @@ clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& 
   }
   const glm::dvec3 along_l = l / l_length;
   const glm::dvec3& v0 = occluder.outer.front();
-  const glm::dvec3 x0 = (v0 - face.origin) - (face.height(v0) / g2) * g;
+  const glm::dvec3 x0 = (v0 - face.origin()) - (face.height(v0) / g2) * g;
   const glm::dvec3 m = (project.slab / g2) * g;
   auto to_st = [&](const hsr::Loop3& loop) {
     clipper::Loop2 out;
@@ -156,10 +158,10 @@ std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
                                                 std::span<const hsr::Plane3> planes,
                                                 std::span<const int> coplanar, const Light& light) {
   const hsr::Polygon3& face = polygons[part];
-  const FaceFrame frame{face.outer.front(), planes[part].normal, hsr::chart_facing(planes[part].normal)};
+  hsr::ChartedPlane plane(planes[part].normal, face.outer.front(), hsr::ChartFrom::kOrigin);
+  const clipper::PolygonWithHoles2 region = plane.flatten_known(face);
+  const FaceFrame frame{plane};
   const double sine = grazing_sine(face, planes[part], light);
-  PlaneLifter lifter(planes[part], frame.origin);
-  const clipper::PolygonWithHoles2 region = lifter.flatten(face);
   const clipper::PolygonSet2 around{grown_box(region.outer)};
   Box3 face_box;
   face_box.add(face.outer);
@@ -194,7 +196,7 @@ std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
       shadows.push_back(std::move(p));
     }
   }
-  return lifter.lift(clipper::clip(region, shadows).outside);
+  return plane.lift(clipper::clip(region, shadows).outside);
 }
 
 }  // namespace shadowgen::detail

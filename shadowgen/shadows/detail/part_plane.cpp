@@ -5,11 +5,10 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
-#include <unordered_map>
 
 #include "clipper/clip.h"
 #include "clipper/merge.h"
-#include "plane_lifter.h"
+#include "hsr/plane_chart.h"
 
 namespace shadowgen::detail {
 
@@ -22,27 +21,27 @@ std::vector<hsr::Polygon3> unite_views(std::span<const std::vector<hsr::Polygon3
       break;
     }
   }
-  PlaneLifter lifter(plane, origin);
+  hsr::ChartedPlane chart(plane.normal, origin, hsr::ChartFrom::kOrigin);
   clipper::PolygonSet2 united;
   for (const std::vector<hsr::Polygon3>& view : per_view) {
     clipper::PolygonSet2 seen;
-    for (const hsr::Polygon3& p : view) seen.push_back(lifter.flatten(p));
+    for (const hsr::Polygon3& p : view) seen.push_back(chart.flatten_known(p));
     if (seen.empty()) continue;
     // What this view adds: its pieces less what earlier views lit. Disjoint by
     // construction, with boundaries shared exactly, so the merge below joins them.
     clipper::PolygonSet2 added = united.empty() ? seen : clipper::difference(seen, united);
     for (clipper::PolygonWithHoles2& q : added) united.push_back(std::move(q));
   }
-  return lifter.lift(clipper::merge_adjacent(united));
+  return chart.lift(clipper::merge_adjacent(united));
 }
 
 std::vector<hsr::Polygon3> within_part(std::span<const hsr::Polygon3> lit,
                                        const hsr::Polygon3& part, const hsr::Plane3& plane) {
-  PlaneLifter lifter(plane, part.outer.front());
-  const clipper::PolygonWithHoles2 region = lifter.flatten(part);
+  hsr::ChartedPlane chart(plane.normal, part.outer.front(), hsr::ChartFrom::kOrigin);
+  const clipper::PolygonWithHoles2 region = chart.flatten_known(part);
   clipper::PolygonSet2 flat;
-  for (const hsr::Polygon3& p : lit) flat.push_back(lifter.flatten(p));
-  return lifter.lift(clipper::intersection(flat, {region}));
+  for (const hsr::Polygon3& p : lit) flat.push_back(chart.flatten_known(p));
+  return chart.lift(clipper::intersection(flat, {region}));
 }
 
 bool inside_box_of(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part) {

@@ -7,7 +7,7 @@
 // view, each cut at the seam in its own view's image. The two cuts are rounded apart, so
 // the pieces may overlap or leave a gap a rounding wide, and summing their areas can give
 // a lit area above the part's own (a lit fraction of 1.0000000000000029). Here the
-// pieces are united in the part's plane chart (plane_chart.h), exactly as regions: each
+// pieces are united in the part's plane chart (hsr/plane_chart.h), exactly as regions: each
 // view's pieces minus what earlier views already lit, then merged along shared edges.
 
 #include <span>
