@@ -1,45 +1,26 @@
+// `shadowgen export`: the shadowed scene as a Wavefront OBJ and its MTL.
+
 #include <filesystem>
-#include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 
-#include "commands.h"
-#include "shadowgen/output/atomic_file.h"
-#include "shadowgen/output/database.h"
-#include "shadowgen/json/document.h"
-#include "shadowgen/shadows/generate.h"
+#include "cli/command.h"
+#include "clipper/clip.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/obj_export.h"
-#include "shadowgen/scene/scene_reader.h"
 
 namespace shadowgen::cli {
 namespace {
 
-// A scene is generated first (as `report` does); a shadowed database is read as it is.
-ShadowedScene load_shadowed(const ExportArgs& args) {
-  const Document document = read_document(args.input);
-  if (document.format == kShadowedFormat) return parse_database(document.text, document.path);
-  if (document.format != kSceneFormat) {
-    throw InputError(args.input, "",
-                     "\"format\" is \"" + document.format + "\", expected \"" +
-                         std::string(kSceneFormat) + "\" or \"" + std::string(kShadowedFormat) +
-                         "\"");
-  }
-  ReadOptions read_options;
-  read_options.strict = args.strict;
-  ReadResult read = parse_scene(document.text, document.path, read_options);
-  if (!args.quiet) {
-    for (const std::string& warning : read.warnings) {
-      std::cerr << "shadowgen: warning: " << warning << '\n';
-    }
-  }
-  GenerateOptions options;
-  options.threads = args.threads;
-  return generate_shadows(read.scene, options).shadowed;
-}
-
-}  // namespace
+// The MTL goes next to the OBJ (same stem, ".mtl"): every face split by the set of lights
+// reaching it, one material per set (shadowgen/output/obj_export.h).
+struct ExportArgs {
+  std::string input;  // a scene (generated first) or a shadowed database
+  std::string obj;    // OBJ file to write
+  ReadingArgs reading;
+};
 
 void run_export(const ExportArgs& args) {
   const std::filesystem::path obj_path = args.obj;
@@ -51,25 +32,42 @@ void run_export(const ExportArgs& args) {
                      "the same stem and \".mtl\"");
   }
 
-  const ShadowedScene shadowed = load_shadowed(args);
+  const ShadowedScene shadowed =
+      load_shadowed(args.input, load_options(args.reading, Accept::kSceneOrDatabase));
   ObjFiles files;
   try {
     files = obj_export(shadowed, mtl_path.filename().string());
+  } catch (const clipper::SnapRoundingError&) {
+    throw;  // not the input's fault (main.cpp)
   } catch (const std::runtime_error& e) {
     throw InputError(args.input, "", e.what());
   }
+  // Both texts are complete before either file is touched, and written as one set: the
+  // MTL first, the OBJ that names it last, so a failed run leaves neither behind.
+  write_files_atomically({{mtl_path, files.mtl}, {obj_path, files.obj}});
+}
 
-  // Both texts are complete before either file is touched. The MTL goes first (the OBJ
-  // names it); should the OBJ then fail, the new MTL is removed again, so a failed run
-  // leaves neither behind.
-  write_file_atomically(mtl_path, files.mtl);
-  try {
-    write_file_atomically(obj_path, files.obj);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(mtl_path, ignored);
-    throw;
-  }
+}  // namespace
+
+Command add_export_command(CLI::App& app) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* command = app.add_subcommand(
+      "export",
+      "Write the shadowed scene as a Wavefront OBJ and its MTL (same stem, \".mtl\", next to "
+      "the OBJ): every face split into the regions lit by the same set of lights, grouped by "
+      "face id, one material per light set (\"shadow\", \"sun\", \"sun+lamp\"; shadow grey "
+      "0.2, lit parts lighter). A scene is generated first; a shadowed database is read as "
+      "it is.");
+  command
+      ->add_option("input", args->input,
+                   "scene (shadowgen-scene/1) or shadowed database (shadowgen-shadowed/1)")
+      ->required();
+  command
+      ->add_option("--obj", args->obj,
+                   "OBJ file to write (replaced whole); the MTL goes next to it")
+      ->required();
+  add_reading_options(*command, args->reading);
+  return {command, [args] { run_export(*args); }};
 }
 
 }  // namespace shadowgen::cli

@@ -1,34 +1,68 @@
-#include <glm/vec3.hpp>
-#include <string>
+// `shadowgen render`: a picture of a shadowed database, as SVG.
 
-#include "commands.h"
-#include "shadowgen/view/camera.h"
-#include "shadowgen/output/database.h"
-#include "shadowgen/json/document.h"
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "cli/command.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/view/camera.h"
 #include "shadowgen/view/render.h"
 #include "shadowgen/view/svg_writer.h"
 
 namespace shadowgen::cli {
 namespace {
 
-glm::dvec3 vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+// A picture of a shadowed database (never a scene: no shadow pass runs) from the
+// database's view `view` or from eye/target/up/fov.
+struct RenderArgs {
+  std::string database;
+  std::string view;             // a view id of the database, or empty
+  std::string eye, target, up;  // X,Y,Z (kTriple), or empty
+  double fov_deg = 45.0;
+  bool ortho = false;
+  double scale = 0.0;  // orthographic pixels per scene unit; 0 fits the scene
+  std::string svg;
+  int width = 800;
+  int height = 600;
+};
 
-}  // namespace
-
-void run_render(const RenderArgs& args) {
-  const Document document = read_document(args.database);
-  if (document.format == kSceneFormat) {
-    throw InputError(args.database, "",
-                     "is a scene; render takes a shadowed database (run shadowgen generate)");
+// "X,Y,Z" as three finite doubles; nullopt when it is not.
+std::optional<glm::dvec3> parse_triple(std::string_view text) {
+  std::array<double, 3> v{};
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (i > 0) {
+      if (p == end || *p != ',') return std::nullopt;
+      ++p;
+    }
+    const auto [next, error] = std::from_chars(p, end, v[i]);
+    if (error != std::errc() || !std::isfinite(v[i])) return std::nullopt;
+    p = next;
   }
-  if (document.format != kShadowedFormat) {
-    throw InputError(args.database, "",
-                     "\"format\" is \"" + document.format + "\", expected \"" +
-                         std::string(kShadowedFormat) + "\"");
-  }
-  const ShadowedScene shadowed = parse_database(document.text, document.path);
+  if (p != end) return std::nullopt;
+  return glm::dvec3(v[0], v[1], v[2]);
+}
 
+// A triple the parser has checked (kTriple), or `fallback` when not given.
+glm::dvec3 triple_or(const std::string& text, const glm::dvec3& fallback) {
+  return text.empty() ? fallback : parse_triple(text).value_or(fallback);
+}
+
+const CLI::Validator kTriple(
+    [](std::string& text) {
+      return parse_triple(text) ? std::string() : "expected X,Y,Z (three numbers), got " + text;
+    },
+    "X,Y,Z");
+
+Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
   Camera camera;
   if (!args.view.empty()) {
     const ViewSpec* spec = nullptr;
@@ -40,14 +74,21 @@ void run_render(const RenderArgs& args) {
     }
     camera = camera_from_view(*spec, args.ortho);
   } else {
-    camera.eye = vec(args.eye.value_or(std::array<double, 3>{}));
-    camera.target = vec(args.target);
-    camera.up = vec(args.up);
+    camera.eye = triple_or(args.eye, glm::dvec3(0.0));
+    camera.target = triple_or(args.target, glm::dvec3(0.0));
+    camera.up = triple_or(args.up, glm::dvec3(0.0, 0.0, 1.0));
     camera.fov_deg = args.fov_deg;
     camera.orthographic = args.ortho;
   }
   camera.pixels_per_unit = args.scale;
+  return camera;
+}
 
+void run_render(const RenderArgs& args) {
+  LoadOptions load;
+  load.accept = Accept::kDatabase;
+  const ShadowedScene shadowed = load_shadowed(args.database, load);
+  const Camera camera = camera_for(args, shadowed);
   RenderOptions options;
   options.width = args.width;
   options.height = args.height;
@@ -55,11 +96,60 @@ void run_render(const RenderArgs& args) {
   try {
     picture = render(shadowed, camera, options);
   } catch (const std::invalid_argument& e) {
-    // A camera the database's view or the arguments describe badly (eye == target).
+    // A camera the database's view or the arguments describe badly (eye == target): the
+    // camera does not know which of them it came from.
     throw InputError(args.view.empty() ? std::string("--eye/--target") : args.database, "",
                      e.what());
   }
   write_svg(picture, args.svg);
+}
+
+void add_camera_options(CLI::App& command, RenderArgs& args) {
+  CLI::Option_group* camera =
+      command.add_option_group("camera", "where to look from: exactly one of these");
+  camera->add_option("--view", args.view, "id of one of the database's views");
+  CLI::Option* eye =
+      camera->add_option("--eye", args.eye, "eye position X,Y,Z (with --target)")->check(kTriple);
+  camera->require_option(1);
+  CLI::Option* target =
+      command.add_option("--target", args.target, "point looked at X,Y,Z (with --eye)")
+          ->check(kTriple);
+  CLI::Option* up =
+      command.add_option("--up", args.up, "up direction X,Y,Z (default 0,0,1)")->check(kTriple);
+  CLI::Option* fov = command.add_option("--fov", args.fov_deg,
+                                        "full vertical field of view in degrees (default 45)");
+  eye->needs(target);
+  target->needs(eye);
+  up->needs(eye);
+  fov->needs(eye);
+  fov->check(CLI::Range(0.0, 180.0));
+  CLI::Option* ortho = command.add_flag("--ortho", args.ortho,
+                                        "orthographic (parallel) projection along target - eye");
+  command
+      .add_option("--scale", args.scale,
+                  "orthographic: pixels per scene unit (default: fit the scene)")
+      ->check(CLI::PositiveNumber)
+      ->needs(ortho);
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* command = app.add_subcommand(
+      "render",
+      "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
+      "eye, each visible face split by the lights reaching it, flat shaded. Reads only the "
+      "database; no shadows are recomputed.");
+  command->add_option("database", args->database, "shadowed database (shadowgen-shadowed/1)")
+      ->required();
+  add_camera_options(*command, *args);
+  command->add_option("--svg", args->svg, "SVG file to write")->required();
+  command->add_option("--width", args->width, "picture width in pixels (default 800)")
+      ->check(CLI::Range(1, 1 << 20));
+  command->add_option("--height", args->height, "picture height in pixels (default 600)")
+      ->check(CLI::Range(1, 1 << 20));
+  return {command, [args] { run_render(*args); }};
 }
 
 }  // namespace shadowgen::cli

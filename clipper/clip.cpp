@@ -5,10 +5,11 @@
 #include <span>
 #include <vector>
 
+#include "clipper/box.h"
+#include "clipper/normalize.h"
 #include "detail/boundary_graph.h"
 #include "detail/overlay.h"
 #include "detail/snap_rounding.h"
-#include "clipper/normalize.h"
 
 namespace shadowgen::clipper {
 namespace {
@@ -26,34 +27,12 @@ Boundary boundary_of(const PolygonSet2& polygons) {
   return loops;
 }
 
-struct Box {
-  double xmin, xmax, ymin, ymax;
-};
-
-void extend(Box& b, const Loop2& loop) {
-  for (const Point2& p : loop) {
-    b.xmin = std::min(b.xmin, p.x);
-    b.xmax = std::max(b.xmax, p.x);
-    b.ymin = std::min(b.ymin, p.y);
-    b.ymax = std::max(b.ymax, p.y);
+Box2 bounds(const Boundary& loops) {
+  Box2 b;
+  for (const Loop2& l : loops) {
+    for (const Point2& p : l) b.add(p);
   }
-}
-
-Box bounds(const Boundary& loops) {
-  Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
-  for (const Loop2& l : loops) extend(b, l);
   return b;
-}
-
-// A polygon's holes lie inside its outer loop: the outer loop's box is the polygon's.
-Box bounds(const PolygonWithHoles2& p) {
-  Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
-  extend(b, p.outer);
-  return b;
-}
-
-bool overlap(const Box& a, const Box& b) {
-  return a.xmin <= b.xmax && b.xmin <= a.xmax && a.ymin <= b.ymax && b.ymin <= a.ymax;
 }
 
 // The clip of operands already normalized.
@@ -61,7 +40,7 @@ ClipResult clip_normalized(PolygonSet2 a, const PolygonSet2& b) {
   ClipResult result;
   if (a.empty()) return result;
   Boundary loops[2] = {boundary_of(a), boundary_of(b)};
-  if (b.empty() || !overlap(bounds(loops[0]), bounds(loops[1]))) {
+  if (b.empty() || !bounds(loops[0]).touches_or_overlaps(bounds(loops[1]))) {
     result.outside = std::move(a);
     return result;
   }
@@ -92,10 +71,10 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   // the subject's cannot meet it and are left out.
   PolygonSet2 s = normalized(PolygonSet2{subject});
   if (s.empty()) return {};
-  const Box box = bounds(s.front());  // one polygon in, at most one out
+  const Box2 box = box_of(s.front());  // one polygon in, at most one out
   PolygonSet2 near;
   for (const PolygonWithHoles2& c : clips) {
-    if (overlap(box, bounds(c))) near.push_back(c);
+    if (box.touches_or_overlaps(box_of(c))) near.push_back(c);
   }
   return clip_normalized(std::move(s), normalized(near));
 }

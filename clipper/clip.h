@@ -50,19 +50,47 @@
 // wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
 // count such folds as they are, so the pieces are the Boolean combination of the snapped
 // operands, which differ from the input by the pixels that moved them. The snapping is
-// iterated (at most 16 rounds), and nothing proves that it always ends with edges
-// meeting only at vertices; where it did not, the pieces would still be valid loops but
-// their areas could be wrong by more than the pixels account for (README, Limits).
+// iterated (at most 17 rounds of changes), and nothing proves that it always ends with
+// edges meeting only at vertices. Where the limit stops it, the snapped edges are
+// checked exactly: if some still cross or end inside another, the pieces would still be
+// valid loops but their areas could be wrong by more than the pixels account for
+// (README, Limits), so the call throws SnapRoundingError instead of returning them.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
 // whose x-ranges overlap, instead of the all-pairs O(n²).
 
 #include <span>
+#include <stdexcept>
 
 #include "clipper/polygon.h"
 
 namespace shadowgen::clipper {
+
+// The snapping stopped at its round limit with edges still meeting elsewhere than at
+// common vertices (see Limit above): thrown by clip(), intersection(), difference() and
+// merge_adjacent() (merge.h) in place of pieces whose areas could be wrong. The clipper
+// does not know what its operands stand for; a caller that does names it and passes the
+// failure on.
+class SnapRoundingError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// For tests of that failure, which no known input causes: while one lives, the snapping
+// stops after `rounds` rounds of changes instead of 17 (with 0 it changes nothing, and
+// operands whose edges cross or end inside one another fail). Process-wide; the previous
+// limit comes back when it ends.
+class SnapRoundLimitForTesting {
+ public:
+  explicit SnapRoundLimitForTesting(int rounds);
+  ~SnapRoundLimitForTesting();
+  SnapRoundLimitForTesting(const SnapRoundLimitForTesting&) = delete;
+  SnapRoundLimitForTesting& operator=(const SnapRoundLimitForTesting&) = delete;
+
+ private:
+  int previous_;
+};
 
 struct ClipResult {
   PolygonSet2 inside;   // subject ∩ clip

@@ -15,7 +15,8 @@ namespace shadowgen::clipper {
 // pixel of each other, become runs of the same segments and cancel too; the joined
 // boundary moves by at most a pixel. The result bounds the points some piece covers
 // (pieces that do overlap, by rounding or otherwise, are joined as a union would), as
-// few polygons as the snapped boundaries allow.
+// few polygons as the snapped boundaries allow. Throws SnapRoundingError (clip.h) where
+// the snapping does not settle.
 PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons);
 
 }  // namespace shadowgen::clipper

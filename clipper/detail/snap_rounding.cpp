@@ -1,24 +1,33 @@
 #include "snap_rounding.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
+#include "clipper/clip.h"
+#include "clipper/predicates.h"
 #include "close_pairs.h"
 #include "crossing.h"
 #include "snap.h"
-#include "clipper/predicates.h"
 
 namespace shadowgen::clipper::detail {
 namespace {
 
-// Rounds after which the snapping stops. A round looks only at what the previous one
-// changed; a second round finds something on near-degenerate input only, a third was
-// seen on adversarial input alone. The bound keeps the cost finite whatever the input.
-constexpr int kMaxRounds = 16;
+// Rounds of changes after which the snapping stops. A round looks only at what the
+// previous one changed; a second round finds something on near-degenerate input only, a
+// third was seen on adversarial input alone. The bound keeps the cost finite whatever the
+// input: some inputs (a route that comes back to a point it passes, on self-crossing
+// boundaries) cut and put back the same point round after round, and are left as the
+// limit finds them, provided their edges meet only at vertices (noded, below).
+constexpr int kMaxRounds = 17;
+
+// The limit in force: kMaxRounds but while a SnapRoundLimitForTesting lives (clip.h).
+std::atomic<int> round_limit{kMaxRounds};
 
 using PointSet = std::unordered_set<Point2, Point2Hash>;
 
@@ -227,6 +236,25 @@ bool near_each_other(const Point2& a, const Point2& b, const Point2& from, const
 }
 
 class SnapRounder {
+  // A point to put into a route, in the piece that ends at route[position].
+  struct Insertion {
+    std::uint32_t segment, position;
+    Point2 at;
+    bool crossing;  // with the edge f0-f1, this piece being its whole input edge
+    Point2 f0, f1;
+  };
+  // A stretch of a route to cut out.
+  struct Cut {
+    std::uint32_t segment;
+    std::size_t first, last;  // route[first, last) goes
+  };
+
+  // What one round changes in the routes.
+  struct Changes {
+    std::vector<Insertion> insertions;
+    std::vector<Cut> cuts;
+  };
+
  public:
   explicit SnapRounder(const std::vector<Loop2> (&loops)[2]) {
     for (int side = 0; side < 2; ++side) {
@@ -241,6 +269,7 @@ class SnapRounder {
 
   SnapRoundingStats run() {
     SnapRoundingStats stats;
+    const int limit = round_limit.load(std::memory_order_relaxed);
     for (int round = 0;; ++round) {
       build_pieces();
       Contacts found;
@@ -250,81 +279,21 @@ class SnapRounder {
           pieces_, [this](std::size_t i) { return pieces_[i].margin; },
           [this](std::size_t i) { return pieces_[i].fresh; },
           [&finder](std::size_t i, std::size_t j) { finder.find(i, j); });
-      stats.crossings += found.crossings;
-      const bool merged = apply_merges(found.merges);
-      // Each point goes into the piece it was found on, once per segment, so no two
-      // points can take turns. A point the route already passes elsewhere (where an
-      // earlier round put it) means the route comes back to it: the stretch between,
-      // a sliver loop narrower than the pixels it passes, is cut out (one cut per
-      // route and round, and no insertions into that route in the same round).
-      struct Insertion {
-        std::uint32_t segment, position;
-        Point2 at;
-        bool crossing;  // with the edge f0-f1, this piece being its whole input edge
-        Point2 f0, f1;
-      };
-      struct Cut {
-        std::uint32_t segment;
-        std::size_t first, last;  // route[first, last) goes
-      };
-      std::vector<Insertion> insertions;
-      std::vector<Cut> cuts;
-      for (const Through& found_point : found.through) {
-        const Point2& point = found_point.at;
-        const Piece& e = pieces_[found_point.piece];
-        const Segment& s = segments_[e.segment];
-        const Point2 r = resolve(point);
-        // Its place on the route extended by the segment's ends: 0 for the start,
-        // j + 1 for route[j], route.size() + 1 for the end. The piece runs from place
-        // e.position to place e.position + 1.
-        std::size_t place = s.route.size() + 2;
-        if (r == resolve(s.from)) {
-          place = 0;
-        } else if (r == resolve(s.to)) {
-          place = s.route.size() + 1;
-        } else {
-          const auto it = std::find(s.route.begin(), s.route.end(), r);
-          if (it != s.route.end()) place = static_cast<std::size_t>(it - s.route.begin()) + 1;
-        }
-        if (place == s.route.size() + 2) {
-          insertions.push_back({e.segment, e.position, r, found_point.crossing && r == point,
-                                found_point.f0, found_point.f1});
-          continue;
-        }
-        const std::size_t p = e.position;
-        const Cut cut = place <= p ? Cut{e.segment, place, p} : Cut{e.segment, p, place - 1};
-        if (cut.first < cut.last) cuts.push_back(cut);
-      }
-      if (!cuts.empty()) {
-        std::sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) {
-          // The shortest cut of a route first: it removes the least.
-          if (a.segment != b.segment) return a.segment < b.segment;
-          if (a.last - a.first != b.last - b.first) return a.last - a.first < b.last - b.first;
-          return a.first < b.first;
-        });
-        cuts.erase(std::unique(cuts.begin(), cuts.end(),
-                               [](const Cut& a, const Cut& b) { return a.segment == b.segment; }),
-                   cuts.end());
-        std::vector<char> cut_here(segments_.size(), 0);
-        for (const Cut& cut : cuts) cut_here[cut.segment] = 1;
-        std::erase_if(insertions,
-                      [&cut_here](const Insertion& in) { return cut_here[in.segment]; });
-      }
-      const bool added = !insertions.empty() || !cuts.empty();
-      insert(insertions);
-      for (const Cut& cut : cuts) {
-        Loop2& route = segments_[cut.segment].route;
-        route.erase(route.begin() + static_cast<std::ptrdiff_t>(cut.first),
-                    route.begin() + static_cast<std::ptrdiff_t>(cut.last));
-        changed_[cut.segment] = 1;
-      }
-      if (!merged && !added) break;
-      if (round == kMaxRounds) {
+      if (found.through.empty() && found.merges.empty()) break;
+      if (round == limit) {
+        // Stopped with this round's changes not made: whether the edges meet only at
+        // vertices is then checked exactly (snap_round).
         stats.converged = false;
         break;
       }
+      stats.crossings += found.crossings;
+      const bool merged = apply_merges(found.merges);
+      Changes changes = plan(found.through);
+      const bool added = !changes.insertions.empty() || !changes.cuts.empty();
+      apply(changes);
+      if (!merged && !added) break;
       ++stats.rounds;
-      stats.splits += insertions.size();
+      stats.splits += changes.insertions.size();
       if (merged) {
         std::fill(changed_.begin(), changed_.end(), 1);
         resolve_routes();
@@ -357,6 +326,69 @@ class SnapRounder {
   }
 
  private:
+  // Each point goes into the piece it was found on, once per segment, so no two points
+  // can take turns. A point the route already passes elsewhere (where an earlier round
+  // put it) means the route comes back to it: the stretch between, a sliver loop
+  // narrower than the pixels it passes, is cut out (one cut per route and round, and no
+  // insertions into that route in the same round).
+  Changes plan(const std::vector<Through>& through) const {
+    Changes changes;
+    std::vector<Insertion>& insertions = changes.insertions;
+    std::vector<Cut>& cuts = changes.cuts;
+    for (const Through& found_point : through) {
+      const Point2& point = found_point.at;
+      const Piece& e = pieces_[found_point.piece];
+      const Segment& s = segments_[e.segment];
+      const Point2 r = resolve(point);
+      // Its place on the route extended by the segment's ends: 0 for the start,
+      // j + 1 for route[j], route.size() + 1 for the end. The piece runs from place
+      // e.position to place e.position + 1.
+      std::size_t place = s.route.size() + 2;
+      if (r == resolve(s.from)) {
+        place = 0;
+      } else if (r == resolve(s.to)) {
+        place = s.route.size() + 1;
+      } else {
+        const auto it = std::find(s.route.begin(), s.route.end(), r);
+        if (it != s.route.end()) place = static_cast<std::size_t>(it - s.route.begin()) + 1;
+      }
+      if (place == s.route.size() + 2) {
+        insertions.push_back({e.segment, e.position, r, found_point.crossing && r == point,
+                              found_point.f0, found_point.f1});
+        continue;
+      }
+      const std::size_t p = e.position;
+      const Cut cut = place <= p ? Cut{e.segment, place, p} : Cut{e.segment, p, place - 1};
+      if (cut.first < cut.last) cuts.push_back(cut);
+    }
+    if (!cuts.empty()) {
+      std::sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) {
+        // The shortest cut of a route first: it removes the least.
+        if (a.segment != b.segment) return a.segment < b.segment;
+        if (a.last - a.first != b.last - b.first) return a.last - a.first < b.last - b.first;
+        return a.first < b.first;
+      });
+      cuts.erase(std::unique(cuts.begin(), cuts.end(),
+                             [](const Cut& a, const Cut& b) { return a.segment == b.segment; }),
+                 cuts.end());
+      std::vector<char> cut_here(segments_.size(), 0);
+      for (const Cut& cut : cuts) cut_here[cut.segment] = 1;
+      std::erase_if(insertions, [&cut_here](const Insertion& in) { return cut_here[in.segment]; });
+    }
+    return changes;
+  }
+
+  // Puts the points in and cuts the stretches out.
+  void apply(Changes& changes) {
+    insert(changes.insertions);
+    for (const Cut& cut : changes.cuts) {
+      Loop2& route = segments_[cut.segment].route;
+      route.erase(route.begin() + static_cast<std::ptrdiff_t>(cut.first),
+                  route.begin() + static_cast<std::ptrdiff_t>(cut.last));
+      changed_[cut.segment] = 1;
+    }
+  }
+
   Point2 resolve(const Point2& p) const {
     if (to_.empty()) return p;  // no merges, the common case: no hashing
     const auto it = to_.find(p);
@@ -426,7 +458,6 @@ class SnapRounder {
   }
 
   // Puts each point into its piece, points into one piece in order along it.
-  template <typename Insertion>
   void insert(std::vector<Insertion>& insertions) {
     std::sort(insertions.begin(), insertions.end(), [](const Insertion& a, const Insertion& b) {
       return a.segment != b.segment ? a.segment < b.segment : a.position < b.position;
@@ -497,13 +528,76 @@ class SnapRounder {
   std::unordered_map<Point2, Point2, Point2Hash> to_;  // merged vertex -> the one it became
 };
 
+// Whether two edges meet only at a common endpoint or as the very same segment (exact):
+// no proper crossing, no endpoint of one inside the other.
+bool meet_at_vertices(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
+  if ((a0 == b0 && a1 == b1) || (a0 == b1 && a1 == b0)) return true;
+  auto inside = [](const Point2& p, const Point2& e0, const Point2& e1) {
+    return p != e0 && p != e1 && on_segment(e0, e1, p);
+  };
+  if (inside(b0, a0, a1) || inside(b1, a0, a1) || inside(a0, b0, b1) || inside(a1, b0, b1)) {
+    return false;
+  }
+  return !properly_cross(a0, a1, b0, b1);
+}
+
+// Whether the loops' edges all meet only at vertices: the plane graph the overlay needs,
+// which a round limit can leave the snapping short of.
+bool noded(const std::vector<Loop2> (&loops)[2]) {
+  struct Edge {
+    Point2 from, to;
+  };
+  std::vector<Edge> edges;
+  for (const auto& side : loops) {
+    for (const Loop2& loop : side) {
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Point2& to = loop[i + 1 == loop.size() ? 0 : i + 1];
+        if (loop[i] != to) edges.push_back({loop[i], to});
+      }
+    }
+  }
+  bool all = true;
+  for_each_close_pair(
+      edges, [](std::size_t) { return 0.0; }, [](std::size_t) { return true; },
+      [&](std::size_t i, std::size_t j) {
+        all = all && meet_at_vertices(edges[i].from, edges[i].to, edges[j].from, edges[j].to);
+      });
+  return all;
+}
+
 }  // namespace
 
 void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats) {
   SnapRounder rounder(loops);
   const SnapRoundingStats local = rounder.run();
-  rounder.write_back(loops);
   if (stats != nullptr) *stats = local;
+  if (local.converged) {
+    rounder.write_back(loops);
+    return;
+  }
+  std::vector<Loop2> snapped[2] = {loops[0], loops[1]};
+  rounder.write_back(snapped);
+  if (!noded(snapped)) {
+    std::size_t edges = 0;
+    for (const auto& side : loops) {
+      for (const Loop2& loop : side) edges += loop.size();
+    }
+    throw SnapRoundingError("snap rounding of " + std::to_string(edges) +
+                            " edges did not settle within " + std::to_string(local.rounds) +
+                            " rounds: edges still meet elsewhere than at common vertices");
+  }
+  loops[0] = std::move(snapped[0]);
+  loops[1] = std::move(snapped[1]);
 }
 
 }  // namespace shadowgen::clipper::detail
+
+namespace shadowgen::clipper {
+
+// The test hook of clip.h, here beside the limit it sets.
+SnapRoundLimitForTesting::SnapRoundLimitForTesting(int rounds)
+    : previous_(detail::round_limit.exchange(std::max(rounds, 0))) {}
+
+SnapRoundLimitForTesting::~SnapRoundLimitForTesting() { detail::round_limit.store(previous_); }
+
+}  // namespace shadowgen::clipper

@@ -13,7 +13,10 @@
 //   - faces wholly beyond range.end are left out entirely; faces turned away from the
 //     light (or seeing it edge-on) get no lit area but still occlude.
 // The visible fragments are mapped back onto their parent face's plane and merged per
-// (face, light). Lights are independent and run in parallel.
+// (face, light). Lights are independent and run in parallel. The stages of one light are
+// in detail/: receivers.h (the parts in range), light_view_pass.h (per view: hidden-
+// surface removal, coplanar_receivers.h, back-projection), lit_parts.h (grazed faces,
+// views joined per face).
 //
 // Coplanar faces do not shadow each other (the spec's meaning of "lit"): where hidden-
 // surface removal gives an overlap of exactly coplanar faces to one of them, the lit
@@ -21,6 +24,9 @@
 
 #include <cstddef>
 #include <functional>
+#include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "shadowgen/model/scene.h"
@@ -50,6 +56,33 @@ struct GenerateResult {
   std::vector<LightStats> stats;  // per light
 };
 
+// Shadows that could not be computed: an internal failure, not the input's fault. Names the face
+// (where one was being worked on) and the light, and the file where the caller knows it; its
+// message is the line to show, like InputError's. The one cause so far: a clip whose snap rounding
+// did not settle (clipper::SnapRoundingError, clipper/clip.h), whose pieces could have wrong areas.
+class GenerationError : public std::runtime_error {
+ public:
+  GenerationError(std::string file, std::string face_id, std::string light_id,
+                  const std::string& problem)
+      : std::runtime_error(format(file, face_id, light_id, problem)),
+        file_(std::move(file)),
+        face_id_(std::move(face_id)),
+        light_id_(std::move(light_id)),
+        problem_(problem) {}
+
+  const std::string& file() const { return file_; }        // empty when not known
+  const std::string& face_id() const { return face_id_; }  // empty when no face is to blame
+  const std::string& light_id() const { return light_id_; }
+  const std::string& problem() const { return problem_; }
+
+ private:
+  static std::string format(const std::string& file, const std::string& face_id,
+                            const std::string& light_id, const std::string& problem);
+  std::string file_, face_id_, light_id_, problem_;
+};
+
+// Throws GenerationError (with no file) where the shadows of a face cannot be computed;
+// nothing else of the result comes back then.
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options = {});
 
 }  // namespace shadowgen

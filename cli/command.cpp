@@ -1,0 +1,36 @@
+#include "cli/command.h"
+
+#include <iostream>
+
+namespace shadowgen::cli {
+
+void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
+  command.add_flag("--strict", args.strict,
+                   "reading warnings are errors: a non-planar polygon (instead of being "
+                   "triangulated), an unknown key");
+  command.add_option("--threads", args.threads,
+                     "worker threads when generating, one light each (0: one per hardware "
+                     "thread)");
+  command.add_flag("-q,--quiet", args.quiet,
+                   progress ? "do not print reading warnings or the progress line"
+                            : "do not print reading warnings");
+}
+
+CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::string& what) {
+  return command.add_option("-o,--output", path, what);
+}
+
+LoadOptions load_options(const ReadingArgs& args, Accept accept) {
+  LoadOptions options;
+  options.accept = accept;
+  options.strict = args.strict;
+  options.threads = args.threads;
+  if (!args.quiet) {
+    options.on_warning = [](const std::string& warning) {
+      std::cerr << "shadowgen: warning: " << warning << '\n';
+    };
+  }
+  return options;
+}
+
+}  // namespace shadowgen::cli

@@ -1,0 +1,54 @@
+#pragma once
+
+// What the subcommands of `shadowgen` share, each defined once: the shape of a subcommand,
+// the reading options (--strict, --threads, --quiet) and -o/--output, and the error for
+// arguments that parse but do not fit together. main.cpp wires the subcommands
+// (generate_command.cpp, report_command.cpp, export_command.cpp, render_command.cpp)
+// and turns their errors into exit codes.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "shadowgen/pipeline/load_shadowed.h"
+
+namespace shadowgen::cli {
+
+// Arguments that parse but do not fit together (exit code 2, as for a parse error).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A subcommand: its parser, and what runs it once the arguments are parsed. The run
+// throws InputError for bad input, GenerationError where shadows cannot be computed,
+// std::runtime_error where output cannot be written, and UsageError.
+struct Command {
+  CLI::App* parser = nullptr;
+  std::function<void()> run;
+};
+
+Command add_generate_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
+Command add_export_command(CLI::App& app);
+Command add_render_command(CLI::App& app);
+
+// How an input is read and its shadows generated.
+struct ReadingArgs {
+  bool strict = false;
+  unsigned threads = 0;  // 0: one per hardware thread
+  bool quiet = false;    // no reading warnings (and no progress line)
+};
+
+// --strict, --threads and -q/--quiet on `command`; `progress`: the subcommand shows a
+// progress line, which --quiet also silences.
+void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress = false);
+
+// -o/--output on `command`, described as naming `what`.
+CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::string& what);
+
+// The loading options these arguments ask for: reading warnings on stderr unless quiet.
+LoadOptions load_options(const ReadingArgs& args, Accept accept);
+
+}  // namespace shadowgen::cli

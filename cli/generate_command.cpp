@@ -1,0 +1,138 @@
+// `shadowgen generate`: scenes in, shadowed databases out.
+
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "cli/command.h"
+#include "cli/progress.h"
+#include "shadowgen/output/database.h"
+
+namespace shadowgen::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Several scenes are processed in turn, each read, generated and written (atomically)
+// before the next is read. Where the databases go (database_paths): with one scene,
+// `output` is the database file; with several, `output` is a folder (made when missing)
+// and scene DIR/NAME.json gives OUTPUT/NAME.shadowed.json. A bad scene stops the run with
+// its error: the databases of the scenes before it stay written, none is written for it
+// or for the scenes after it.
+struct GenerateArgs {
+  std::vector<std::string> scenes;
+  std::string output;
+  ReadingArgs reading;
+};
+
+// Two spellings of one file compare equal (weakly_canonical resolves "." and ".." and
+// the links of the part that exists).
+fs::path comparable(const fs::path& path) {
+  std::error_code error;
+  const fs::path resolved = fs::weakly_canonical(path, error);
+  return error ? fs::absolute(path).lexically_normal() : resolved;
+}
+
+// The database path of each scene, in order, by the rule above. Checked before any work:
+// throws UsageError when, with several scenes, two of them would be written to the same
+// file, a database would replace one of the scenes, or `output` exists and is not a
+// folder.
+std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
+                                     const std::string& output) {
+  if (scenes.size() == 1) return {fs::path(output)};
+
+  std::error_code error;
+  if (fs::exists(output, error) && !fs::is_directory(output, error)) {
+    throw UsageError("-o " + output + ": with several scenes, -o names a folder");
+  }
+  std::set<fs::path> inputs;
+  for (const std::string& scene : scenes) inputs.insert(comparable(scene));
+
+  std::vector<fs::path> paths;
+  std::set<fs::path> taken;
+  for (const std::string& scene : scenes) {
+    const fs::path name = fs::path(scene).stem();
+    if (name.empty() || name == "." || name == "..") {
+      throw UsageError(scene + ": not a scene file name");
+    }
+    fs::path path = fs::path(output) / name;
+    path += ".shadowed.json";
+    const fs::path key = comparable(path);
+    if (inputs.count(key) > 0) {
+      throw UsageError(scene + ": its database " + path.string() +
+                       " would replace one of the scenes");
+    }
+    if (!taken.insert(key).second) {
+      throw UsageError(scene + ": another scene's database is also " + path.string() +
+                       " (scenes need different file names)");
+    }
+    paths.push_back(std::move(path));
+  }
+  return paths;
+}
+
+// Scene `index` of `args`, read and generated, with a progress line when `show_progress`.
+ShadowedScene generated(const GenerateArgs& args, std::size_t index, bool show_progress) {
+  LoadOptions options = load_options(args.reading, Accept::kScene);
+  // Ends its line when it goes, so that an error printed afterwards has a line of its own.
+  std::optional<ProgressDisplay> progress;
+  if (show_progress) {
+    options.on_scene = [&](const Scene& scene) {
+      ProgressLine line;
+      line.scene = args.scenes[index];
+      line.scene_index = index;
+      line.scene_count = args.scenes.size();
+      line.lights_total = scene.lights.size();
+      progress.emplace(&std::cerr, line);
+    };
+    options.on_light_done = [&](std::size_t, const LightStats& stats) {
+      progress->light_done(stats);
+    };
+  }
+  ShadowedScene shadowed = load_shadowed(args.scenes[index], options);
+  if (progress) progress->finish();
+  return shadowed;
+}
+
+void run_generate(const GenerateArgs& args) {
+  const std::vector<fs::path> paths = database_paths(args.scenes, args.output);
+  const bool show_progress = !args.reading.quiet && stderr_is_terminal();
+  for (std::size_t i = 0; i < args.scenes.size(); ++i) {
+    const ShadowedScene shadowed = generated(args, i, show_progress);
+    if (args.scenes.size() > 1) {
+      std::error_code error;
+      fs::create_directories(args.output, error);
+      if (error) {
+        throw std::runtime_error("cannot make the folder " + args.output + ": " + error.message());
+      }
+    }
+    write_database(shadowed, paths[i]);
+  }
+}
+
+}  // namespace
+
+Command add_generate_command(CLI::App& app) {
+  auto args = std::make_shared<GenerateArgs>();
+  CLI::App* command = app.add_subcommand(
+      "generate",
+      "Compute the lit detail polygons of every (face, light) of a scene and write the "
+      "shadowed database (shadowgen-shadowed/1). Several scenes are done in turn, each "
+      "written before the next is read; a bad one stops the run with exit code 1, leaving "
+      "the databases already written. On a terminal a progress line is shown on stderr.");
+  command->add_option("scene", args->scenes, "scene files (shadowgen-scene/1), one or more")
+      ->required();
+  add_output_option(*command, args->output,
+                    "one scene: the shadowed database to write; several scenes: a folder "
+                    "(made when missing) that gets NAME.shadowed.json for each scene NAME.json")
+      ->required();
+  add_reading_options(*command, args->reading, /*progress=*/true);
+  return {command, [args] { run_generate(*args); }};
+}
+
+}  // namespace shadowgen::cli

@@ -1,0 +1,76 @@
+// `shadowgen report`: area, lit area and lit fraction per (face, light).
+
+#include <cstddef>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "cli/command.h"
+#include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/report.h"
+
+namespace shadowgen::cli {
+namespace {
+
+struct ReportArgs {
+  std::string input;           // a scene (generated first) or a shadowed database
+  std::string format = "csv";  // csv, json or table
+  std::string output;          // empty: standard output
+  std::size_t top = 10;        // table: most shadowed faces listed per light
+  ReadingArgs reading;
+};
+
+std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
+  if (args.format == "json") return report_json(shadowed);
+  if (args.format == "table") return report_table(shadowed, args.top);
+  return report_csv(shadowed);
+}
+
+void run_report(const ReportArgs& args) {
+  const ShadowedScene shadowed =
+      load_shadowed(args.input, load_options(args.reading, Accept::kSceneOrDatabase));
+  const std::string report = report_text(shadowed, args);
+  if (args.output.empty()) {
+    std::cout << report << std::flush;
+    if (!std::cout) throw std::runtime_error("cannot write the report to standard output");
+  } else {
+    write_file_atomically(args.output, report);
+  }
+}
+
+}  // namespace
+
+Command add_report_command(CLI::App& app) {
+  auto args = std::make_shared<ReportArgs>();
+  CLI::App* command =
+      app.add_subcommand("report",
+                         "Area, lit area and lit fraction per (face, light). A scene is generated "
+                         "first; a shadowed database is read as it is.");
+  command
+      ->add_option("input", args->input,
+                   "scene (shadowgen-scene/1) or shadowed database (shadowgen-shadowed/1)")
+      ->required();
+  command
+      ->add_option("--format", args->format,
+                   "csv (default; the spec's rows), json (rows and totals) or table (totals "
+                   "per light and the most shadowed faces, for reading)")
+      ->check(CLI::IsMember({"csv", "json", "table"}));
+  CLI::Option* top = command
+                         ->add_option("--top", args->top,
+                                      "with --format table: most shadowed faces listed per "
+                                      "light (default 10, 0 for none)")
+                         ->check(CLI::NonNegativeNumber);
+  add_output_option(*command, args->output,
+                    "file to write (replaced whole); default: standard output");
+  add_reading_options(*command, args->reading);
+  // Run at the end of parsing, so that the error is reported as a parse error is.
+  command->callback([args, top] {
+    if (top->count() > 0 && args->format != "table") {
+      throw CLI::ValidationError("--top", "applies only to --format table");
+    }
+  });
+  return {command, [args] { run_report(*args); }};
+}
+
+}  // namespace shadowgen::cli

@@ -1,0 +1,71 @@
+#include "shadowgen/pipeline/load_shadowed.h"
+
+#include <string>
+#include <vector>
+
+#include "shadowgen/json/document.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/scene/database_reader.h"
+#include "shadowgen/scene/scene_reader.h"
+
+namespace shadowgen {
+namespace {
+
+void pass_on(const std::vector<std::string>& warnings, const LoadOptions& options) {
+  if (!options.on_warning) return;
+  for (const std::string& warning : warnings) options.on_warning(warning);
+}
+
+ShadowedScene generated(const ReadResult& read, const std::filesystem::path& path,
+                        const LoadOptions& options) {
+  pass_on(read.warnings, options);
+  if (options.on_scene) options.on_scene(read.scene);
+  GenerateOptions generate;
+  generate.threads = options.threads;
+  generate.on_light_done = options.on_light_done;
+  try {
+    return generate_shadows(read.scene, generate).shadowed;
+  } catch (const GenerationError& e) {
+    // Only here is the file known.
+    throw GenerationError(path.string(), e.face_id(), e.light_id(), e.problem());
+  }
+}
+
+ShadowedScene database(const Document& document, const ReadOptions& read,
+                       const LoadOptions& options) {
+  std::vector<std::string> warnings;
+  ShadowedScene shadowed = parse_database(document.text, document.path, read, warnings);
+  pass_on(warnings, options);
+  return shadowed;
+}
+
+[[noreturn]] void refuse(const Document& document, const LoadOptions& options) {
+  if (options.accept == Accept::kDatabase && document.format == kSceneFormat) {
+    throw InputError(document.path.string(), "",
+                     "is a scene, not a shadowed database (shadowgen generate makes one)");
+  }
+  std::string expected = "\"" + std::string(kShadowedFormat) + "\"";
+  if (options.accept == Accept::kSceneOrDatabase) {
+    expected = "\"" + std::string(kSceneFormat) + "\" or " + expected;
+  }
+  throw InputError(document.path.string(), "",
+                   "\"format\" is \"" + document.format + "\", expected " + expected);
+}
+
+}  // namespace
+
+ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options) {
+  ReadOptions read;
+  read.strict = options.strict;
+  // A scene only: the scene reader's own messages, a wrong "format" included.
+  if (options.accept == Accept::kScene) return generated(read_scene(path, read), path, options);
+
+  const Document document = read_document(path);
+  if (document.format == kShadowedFormat) return database(document, read, options);
+  if (document.format != kSceneFormat || options.accept == Accept::kDatabase) {
+    refuse(document, options);
+  }
+  return generated(parse_scene(document.text, document.path, read), path, options);
+}
+
+}  // namespace shadowgen

@@ -1,0 +1,43 @@
+#pragma once
+
+// From an input file to a shadowed scene: the one place that tells a scene from a
+// shadowed database, by the document's top-level "format" key (shadowgen/json/document.h).
+// A scene is read and its shadows generated; a database is read as it is. The command
+// line's subcommands all load their input here.
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
+#include "shadowgen/shadows/generate.h"
+
+namespace shadowgen {
+
+// Which inputs a caller takes.
+enum class Accept {
+  kSceneOrDatabase,  // a scene is generated, a database read as it is (report, export)
+  kScene,            // a scene only, read as read_scene reads it (generate)
+  kDatabase,         // a shadowed database only; a scene is refused, saying so (render)
+};
+
+struct LoadOptions {
+  Accept accept = Accept::kSceneOrDatabase;
+  bool strict = false;   // ReadOptions::strict, for a scene and a database alike
+  unsigned threads = 0;  // GenerateOptions::threads
+  // Each reading warning, a line naming the file; dropped when empty.
+  std::function<void(const std::string& warning)> on_warning;
+  // A scene once read, before its shadows are generated (to start a progress display).
+  std::function<void(const Scene& scene)> on_scene;
+  // GenerateOptions::on_light_done.
+  std::function<void(std::size_t light, const LightStats& stats)> on_light_done;
+};
+
+// Throws InputError naming the file for bad input (a format the caller does not take
+// included), and GenerationError naming the file, the face and the light where shadows
+// cannot be generated.
+ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options = {});
+
+}  // namespace shadowgen

@@ -1,0 +1,104 @@
+#include "coplanar_receivers.h"
+
+#include <algorithm>
+#include <optional>
+#include <unordered_map>
+
+#include "clipper/box.h"
+#include "hsr/convex_window.h"
+#include "hsr/hidden_surface.h"
+#include "hsr/spatial_grid.h"
+#include "part_failure.h"
+
+namespace shadowgen::detail {
+namespace {
+
+// The visible pieces of one coplanar group in a grid of their boxes: a receiver clips
+// only the pieces whose box overlaps its image's (a ground of 16,641 coplanar tiles would
+// otherwise clip every tile against every other). Boxes that only touch hold regions that
+// share no area, so their intersection would be empty anyway.
+class GroupPieces {
+ public:
+  GroupPieces(const std::vector<std::size_t>& members,
+              const std::vector<clipper::PolygonSet2>& seen) {
+    for (std::size_t m : members) {
+      for (const auto& piece : seen[m]) {
+        pieces_.push_back({m, &piece});
+        boxes_.push_back(clipper::box_of(piece));
+        extent_.add(boxes_.back());
+      }
+    }
+    if (pieces_.empty()) return;
+    grid_.emplace(extent_, pieces_.size());
+    for (std::size_t i = 0; i < pieces_.size(); ++i) grid_->insert(i, boxes_[i]);
+  }
+
+  bool empty() const { return pieces_.empty(); }
+
+  // The pieces of other members than `receiver` within `image`, the receiver's image,
+  // appended to `out`. Not when empty().
+  void within(std::size_t receiver, const clipper::PolygonSet2& image, clipper::PolygonSet2& out) {
+    clipper::Box2 box;
+    std::vector<hsr::ConvexWindow> windows;
+    for (const auto& p : image) {
+      box.add(clipper::box_of(p));
+      windows.emplace_back(p);
+    }
+    near_.clear();
+    grid_->query(box, near_);
+    // In the pieces' own order, so the result does not depend on the grid's.
+    std::sort(near_.begin(), near_.end());
+    for (std::size_t i : near_) {
+      if (pieces_[i].owner == receiver || !box.overlaps(boxes_[i])) continue;
+      // The image's parts are disjoint: the piece within each, in turn.
+      for (const hsr::ConvexWindow& window : windows) {
+        for (auto& q : window.clip(*pieces_[i].shape).inside) out.push_back(std::move(q));
+      }
+    }
+  }
+
+ private:
+  struct Owned {
+    std::size_t owner;  // receiver
+    const clipper::PolygonWithHoles2* shape;
+  };
+  std::vector<Owned> pieces_;
+  std::vector<clipper::Box2> boxes_;
+  clipper::Box2 extent_;
+  std::optional<hsr::SpatialGrid> grid_;  // of the boxes, when there are pieces
+  std::vector<std::size_t> near_;
+};
+
+// The receivers of each coplanar group of two or more.
+std::unordered_map<int, std::vector<std::size_t>> coplanar_receivers(const Receivers& receivers) {
+  std::unordered_map<int, std::vector<std::size_t>> groups;
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
+    const int g = receivers.coplanar()[k];
+    if (g >= 0) groups[g].push_back(k);
+  }
+  std::erase_if(groups, [](const auto& group) { return group.second.size() < 2; });
+  return groups;
+}
+
+}  // namespace
+
+std::vector<clipper::PolygonSet2> seen_on_shared_planes(
+    const Receivers& receivers, const hsr::View& view,
+    const std::vector<clipper::PolygonSet2>& seen) {
+  std::vector<clipper::PolygonSet2> extra(receivers.size());
+  const std::span<const hsr::Polygon3> polygons = receivers.polygons();
+  for (const auto& [group, members] : coplanar_receivers(receivers)) {
+    GroupPieces pieces(members, seen);
+    if (pieces.empty()) continue;
+    for (std::size_t k : members) {
+      if (!receivers.lit_side(k)) continue;
+      on_part(receivers.part(k), [&] {
+        const clipper::PolygonSet2 image = hsr::project_polygon(polygons[k], view);
+        if (!image.empty()) pieces.within(k, image, extra[k]);
+      });
+    }
+  }
+  return extra;
+}
+
+}  // namespace shadowgen::detail

@@ -1,0 +1,38 @@
+#include "face_parts.h"
+
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "coplanar_groups.h"
+
+namespace shadowgen::detail {
+
+FaceParts flatten(const Scene& scene) {
+  FaceParts parts;
+  parts.face_count = scene.faces.size();
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k) {
+      const hsr::Polygon3& p = scene.faces[f].parts[k];
+      parts.polygons.push_back(p);
+      parts.planes.push_back(hsr::plane_of(p));
+      parts.owners.push_back({f, k});
+      for (const glm::dvec3& v : p.outer) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+      }
+    }
+  }
+  if (!parts.polygons.empty()) parts.centre = 0.5 * (lo + hi);
+  parts.coplanar = coplanar_groups(parts.polygons, parts.planes);
+  return parts;
+}
+
+bool faces_light(const hsr::Plane3& plane, const Light& light) {
+  if (glm::length(plane.normal) == 0.0) return false;
+  if (light.type == LightType::kDirectional) return glm::dot(plane.normal, light.direction) < 0.0;
+  return plane.signed_distance(light.position) > 0.0;
+}
+
+}  // namespace shadowgen::detail

@@ -1,0 +1,59 @@
+#include "light_view_pass.h"
+
+#include <utility>
+
+#include "back_projector.h"
+#include "clipper/merge.h"
+#include "coplanar_receivers.h"
+#include "hsr/hidden_surface.h"
+#include "part_failure.h"
+
+namespace shadowgen::detail {
+namespace {
+
+// Stage 1: the fragments the view sees, per receiver, in image coordinates.
+std::vector<clipper::PolygonSet2> seen_by_view(const Receivers& receivers, const hsr::View& view,
+                                               LightStats& stats) {
+  hsr::VisibleSurfaces visible;
+  try {
+    visible = hsr::remove_hidden_surfaces(receivers.polygons(), view);
+  } catch (const hsr::PolygonClipError& e) {
+    throw PartFailure(receivers.part(e.polygon()), e.problem());
+  }
+  stats.fragments += visible.fragments.size();
+  std::vector<clipper::PolygonSet2> seen(receivers.size());
+  for (hsr::Fragment& f : visible.fragments) seen[f.parent].push_back(std::move(f.shape));
+  return seen;
+}
+
+// Stage 3: receiver k's lit pieces in the image, merged and cast back onto its plane.
+std::vector<hsr::Polygon3> cast_back(const Receivers& receivers, std::size_t k,
+                                     const hsr::View& view, const clipper::PolygonSet2& lit) {
+  const BackProjector back(view, receivers.polygons()[k], receivers.planes()[k]);
+  const clipper::PolygonSet2 merged =
+      on_part(receivers.part(k), [&] { return clipper::merge_adjacent(lit); });
+  std::vector<hsr::Polygon3> polygons;
+  for (const clipper::PolygonWithHoles2& p : merged) {
+    hsr::Polygon3 detail = back.lift(p);
+    if (detail.outer.size() >= 3) polygons.push_back(std::move(detail));
+  }
+  return polygons;
+}
+
+}  // namespace
+
+void light_through_view(const Receivers& receivers, const hsr::View& view,
+                        std::vector<LitPart>& lit, LightStats& stats) {
+  std::vector<clipper::PolygonSet2> seen = seen_by_view(receivers, view, stats);
+  std::vector<clipper::PolygonSet2> extra = seen_on_shared_planes(receivers, view, seen);
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
+    if (!receivers.lit_side(k) || (seen[k].empty() && extra[k].empty())) continue;
+    clipper::PolygonSet2 pieces = std::move(seen[k]);
+    for (auto& q : extra[k]) pieces.push_back(std::move(q));
+    // Every view that saw the part gets its list, empty or not, for the join
+    // (lit_parts.h) to see.
+    lit[receivers.part(k)].by_view.push_back(cast_back(receivers, k, view, pieces));
+  }
+}
+
+}  // namespace shadowgen::detail

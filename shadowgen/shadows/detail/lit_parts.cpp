@@ -1,0 +1,63 @@
+#include "lit_parts.h"
+
+#include <utility>
+
+#include "grazing_light.h"
+#include "part_failure.h"
+#include "part_plane.h"
+
+namespace shadowgen::detail {
+namespace {
+
+// One part's lit polygons: the views joined, cut to the part where rounding carried them
+// out of it.
+std::vector<hsr::Polygon3> joined(LitPart lit, const hsr::Polygon3& polygon,
+                                  const hsr::Plane3& plane) {
+  std::vector<hsr::Polygon3> polygons;
+  if (lit.by_view.size() == 1) {
+    polygons = std::move(lit.by_view[0]);
+  } else if (lit.by_view.size() > 1) {
+    // Lit through several frusta of a point light: one region, not overlapping pieces.
+    polygons = unite_views(lit.by_view, plane);
+  }
+  // A part seen almost edge-on by the light: cast back onto its plane, a rounded image
+  // point can land far off the part. Its lit region is the part's at most.
+  if (!polygons.empty() && !inside_box_of(polygons, polygon)) {
+    polygons = within_part(polygons, polygon, plane);
+  }
+  return polygons;
+}
+
+}  // namespace
+
+void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
+                          LightStats& stats) {
+  const std::span<const hsr::Polygon3> polygons = receivers.polygons();
+  const std::span<const hsr::Plane3> planes = receivers.planes();
+  const Light& light = receivers.light();
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
+    if (!receivers.lit_side(k) || !grazes(polygons[k], planes[k], light)) continue;
+    ++stats.faces_grazed;
+    const std::size_t part = receivers.part(k);
+    lit[part].by_view = {on_part(part, [&] {
+      return lit_by_grazing_light(k, polygons, planes, receivers.coplanar(), light);
+    })};
+  }
+}
+
+std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::vector<LitPart> lit,
+                                                   LightStats& stats) {
+  std::vector<std::vector<LitPolygon>> lit_by_face(parts.face_count);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const PartOwner& owner = parts.owners[i];
+    std::vector<hsr::Polygon3> polygons =
+        on_part(i, [&] { return joined(std::move(lit[i]), parts.polygons[i], parts.planes[i]); });
+    for (hsr::Polygon3& p : polygons) {
+      ++stats.lit_polygons;
+      lit_by_face[owner.face].push_back({owner.part, std::move(p)});
+    }
+  }
+  return lit_by_face;
+}
+
+}  // namespace shadowgen::detail

@@ -1,0 +1,34 @@
+#pragma once
+
+// What one light lights of each face part, gathered view by view, and the last two stages
+// of its shadows: the parts it grazes worked out again in their own planes, and each
+// part's views joined into the lit polygons of its face.
+
+#include <vector>
+
+#include "face_parts.h"
+#include "hsr/polygon3.h"
+#include "receivers.h"
+#include "shadowgen/model/shadowed_scene.h"
+#include "shadowgen/shadows/generate.h"
+
+namespace shadowgen::detail {
+
+// The lit polygons of one face part, one list per light view that saw some of it (a
+// point light may see a part through several frusta).
+struct LitPart {
+  std::vector<std::vector<hsr::Polygon3>> by_view;
+};
+
+// Receivers the light grazes: cast back from its image, their lit region would carry the
+// image's rounding divided by a tiny sine; it is worked out in their plane instead
+// (grazing_light.h) and replaces what the views gave. `lit` is indexed like the
+// FaceParts. Counts them in stats.faces_grazed.
+void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit, LightStats& stats);
+
+// The lit polygons of every face (parts.face_count lists), each part's views joined into
+// one region that stays within the part. Counts them in stats.lit_polygons.
+std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::vector<LitPart> lit,
+                                                   LightStats& stats);
+
+}  // namespace shadowgen::detail
