@@ -7,7 +7,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "shadowgen/json/json_text.h"
+#include "detail/json_parse.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
@@ -19,6 +19,8 @@ using Json = nlohmann::json;
 // from any event ends the scan.
 class FormatScanner {
  public:
+  explicit FormatScanner(std::string_view text) : text_(text) {}
+
   // The outcome once the scan has stopped: the format, or why there is none.
   std::optional<std::string> format;
   std::string problem = "no \"format\" key";
@@ -62,8 +64,9 @@ class FormatScanner {
     if (depth_ == 1) expecting_format_ = (k == "format");
     return true;
   }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) {
-    problem = "not valid JSON: " + detail::json_error_message(e);
+  bool parse_error(std::size_t position, const std::string& last_token,
+                   const nlohmann::detail::exception& e) {
+    problem = detail::describe_parse_error(text_, position, last_token, e.id, e.what());
     return false;
   }
 
@@ -83,6 +86,7 @@ class FormatScanner {
     return true;
   }
 
+  std::string_view text_;
   int depth_ = 0;
   bool expecting_format_ = false;
 };
@@ -103,7 +107,7 @@ std::string read_text_file(const std::filesystem::path& path) {
 }
 
 std::string document_format(const std::string& json_text, const std::filesystem::path& path) {
-  FormatScanner scanner;
+  FormatScanner scanner(json_text);
   Json::sax_parse(json_text, &scanner);
   if (!scanner.format) throw InputError(path.string(), "", scanner.problem);
   return *scanner.format;

@@ -33,15 +33,4 @@ void append_json_string(std::string& out, std::string_view text) {
              .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-std::string json_error_message(const std::exception& error) {
-  const std::string_view what = error.what();
-  constexpr std::string_view kTag = "[json.exception.";
-  if (what.starts_with(kTag)) {
-    if (const std::size_t end = what.find("] "); end != std::string_view::npos) {
-      return std::string(what.substr(end + 2));
-    }
-  }
-  return std::string(what);
-}
-
 }  // namespace shadowgen::detail

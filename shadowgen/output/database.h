@@ -4,7 +4,7 @@
 // detail polygons of every (face, light). Written and read back losslessly: every double
 // is printed in the shortest form that reads back to the same value.
 //
-// Layout (keys in this order when written; readers ignore keys they do not know):
+// Layout (keys in this order when written; a reader warns about keys it does not know):
 //
 //   {
 //     "format": "shadowgen-shadowed/1",
@@ -39,6 +39,7 @@
 // three vertices. Numbers are written with a '.' or an exponent ("28.0", "-0.0", "1e-300");
 // readers take integers too. A light keeps only the keys of its type (a directional
 // light's position is not stored). The writer puts one light, view or polygon per line.
+// Reading, with the checks a database must pass: shadowgen/scene/database_reader.h.
 
 #include <filesystem>
 #include <string>
@@ -51,11 +52,8 @@ namespace shadowgen {
 // hold: a non-finite number, a loop of fewer than three vertices, a face without parts,
 // duplicate ids, or `lit` not shaped [face][light].
 std::string database_json(const ShadowedScene& shadowed);
-// Throws InputError naming `path`, the face (when one is to blame) and what is wrong.
-ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path);
 
 // Writes through a temporary file in the same folder and a rename: never a partial file.
 void write_database(const ShadowedScene& shadowed, const std::filesystem::path& path);
-ShadowedScene read_database(const std::filesystem::path& path);
 
 }  // namespace shadowgen

@@ -11,13 +11,13 @@
 #include <vector>
 
 #include "hsr/area.h"
-#include "shadowgen/json/json_text.h"
+#include "shadowgen/json/json_writer.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
 namespace {
 
-using detail::append_json_number;
-using detail::append_json_string;
+using Layout = JsonWriter::Layout;
 
 double fraction(double part, double whole) { return whole == 0.0 ? 0.0 : part / whole; }
 
@@ -64,13 +64,9 @@ void append_csv_field(std::string& out, std::string_view field) {
   out += '"';
 }
 
-void append_totals(std::string& out, const Sum& area, const Sum& lit_area) {
-  out += "\"area\":";
-  append_json_number(out, area.value());
-  out += ",\"lit_area\":";
-  append_json_number(out, lit_area.value());
-  out += ",\"lit_fraction\":";
-  append_json_number(out, fraction(lit_area.value(), area.value()));
+void write_totals(JsonWriter& out, double area, double lit_area) {
+  out.key("area").value(area).key("lit_area").value(lit_area);
+  out.key("lit_fraction").value(fraction(lit_area, area));
 }
 
 // A number for people: `precision` significant digits (general) or decimals (fixed),
@@ -163,6 +159,58 @@ double clamped_lit_area(double lit, double face_area) {
   return lit;
 }
 
+// No output holds inf or nan (docs/scene-format.md): an area beyond a double's range comes
+// from coordinates beyond the range the readers support, and is bad input.
+void check_finite(const ReportRow& row, const Scene& scene) {
+  const Face& face = scene.faces[row.face];
+  if (!std::isfinite(row.area)) {
+    throw InputError(face.source_file, face.id,
+                     "its area is not a finite number (coordinates too large)");
+  }
+  if (!std::isfinite(row.lit_area) || !std::isfinite(row.lit_fraction)) {
+    throw InputError(face.source_file, face.id,
+                     "its lit area for light '" + scene.lights[row.light].id +
+                         "' is not a finite number (coordinates too large)");
+  }
+}
+
+// The totals of report_json and report_table: per light, and for the scene.
+struct Totals {
+  std::vector<double> light_area;
+  std::vector<double> light_lit_area;
+  std::vector<std::size_t> lit_faces;  // per light, the faces with some lit area
+  double area = 0.0;
+  double lit_area = 0.0;
+};
+
+Totals totals_of(const Scene& scene, const std::vector<ReportRow>& rows) {
+  const std::size_t lights = scene.lights.size();
+  std::vector<Sum> light_area(lights);
+  std::vector<Sum> light_lit_area(lights);
+  Sum area;
+  Sum lit_area;
+  Totals totals;
+  totals.lit_faces.assign(lights, 0);
+  for (const ReportRow& row : rows) {
+    light_area[row.light].add(row.area);
+    light_lit_area[row.light].add(row.lit_area);
+    area.add(row.area);
+    lit_area.add(row.lit_area);
+    if (row.lit_area > 0.0) ++totals.lit_faces[row.light];
+  }
+  for (std::size_t l = 0; l < lights; ++l) {
+    totals.light_area.push_back(light_area[l].value());
+    totals.light_lit_area.push_back(light_lit_area[l].value());
+  }
+  totals.area = area.value();
+  totals.lit_area = lit_area.value();
+  if (!std::isfinite(totals.area) || !std::isfinite(totals.lit_area)) {
+    throw InputError(scene.faces.front().source_file, "",
+                     "the faces' total area is not a finite number (coordinates too large)");
+  }
+  return totals;
+}
+
 }  // namespace
 
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
@@ -187,6 +235,7 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
       row.area = face_area;
       row.lit_area = clamped_lit_area(lit_area(shadowed.lit[f][l]), face_area);
       row.lit_fraction = fraction(row.lit_area, face_area);
+      check_finite(row, scene);
       rows.push_back(row);
     }
   }
@@ -214,68 +263,49 @@ std::string report_csv(const ShadowedScene& shadowed) {
 std::string report_json(const ShadowedScene& shadowed) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   const Scene& scene = shadowed.scene;
-  std::vector<Sum> light_area(scene.lights.size());
-  std::vector<Sum> light_lit_area(scene.lights.size());
-  Sum total_area;
-  Sum total_lit_area;
+  const Totals totals = totals_of(scene, rows);
 
-  std::string out = "{\n  \"format\": \"shadowgen-report/1\",\n  \"rows\": [";
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const ReportRow& row = rows[i];
-    out += i == 0 ? "\n    " : ",\n    ";
-    out += "{\"face_id\":";
-    append_json_string(out, scene.faces[row.face].id);
-    out += ",\"light_id\":";
-    append_json_string(out, scene.lights[row.light].id);
-    out += ",\"area\":";
-    append_json_number(out, row.area);
-    out += ",\"lit_area\":";
-    append_json_number(out, row.lit_area);
-    out += ",\"lit_fraction\":";
-    append_json_number(out, row.lit_fraction);
-    out += '}';
-    light_area[row.light].add(row.area);
-    light_lit_area[row.light].add(row.lit_area);
-    total_area.add(row.area);
-    total_lit_area.add(row.lit_area);
+  JsonWriter out;
+  out.begin_object(Layout::kLines).key("format").value("shadowgen-report/1");
+  out.key("rows").begin_array(Layout::kLines);
+  for (const ReportRow& row : rows) {
+    out.begin_object();
+    out.key("face_id").value(scene.faces[row.face].id);
+    out.key("light_id").value(scene.lights[row.light].id);
+    out.key("area").value(row.area).key("lit_area").value(row.lit_area);
+    out.key("lit_fraction").value(row.lit_fraction);
+    out.end_object();
   }
-  out += rows.empty() ? "],\n  \"lights\": [" : "\n  ],\n  \"lights\": [";
+  out.end_array();
+  out.key("lights").begin_array(Layout::kLines);
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    out += l == 0 ? "\n    " : ",\n    ";
-    out += "{\"light_id\":";
-    append_json_string(out, scene.lights[l].id);
-    out += ',';
-    append_totals(out, light_area[l], light_lit_area[l]);
-    out += '}';
+    out.begin_object().key("light_id").value(scene.lights[l].id);
+    write_totals(out, totals.light_area[l], totals.light_lit_area[l]);
+    out.end_object();
   }
-  out += scene.lights.empty() ? "],\n  \"totals\": {" : "\n  ],\n  \"totals\": {";
-  append_totals(out, total_area, total_lit_area);
-  out += "}\n}\n";
-  return out;
+  out.end_array();
+  out.key("totals").begin_object();
+  write_totals(out, totals.area, totals.lit_area);
+  out.end_object();
+  out.end_object();
+  return out.take();
 }
 
 std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   const Scene& scene = shadowed.scene;
   const std::size_t lights = scene.lights.size();
-  std::vector<Sum> light_area(lights);
-  std::vector<Sum> light_lit_area(lights);
-  std::vector<std::size_t> lit_faces(lights, 0);
-  for (const ReportRow& row : rows) {
-    light_area[row.light].add(row.area);
-    light_lit_area[row.light].add(row.lit_area);
-    if (row.lit_area > 0.0) ++lit_faces[row.light];
-  }
+  const Totals sums = totals_of(scene, rows);
 
   std::string out;
   TextTable totals({false, true, true, true, true, true});
   totals.add({"light_id", "faces", "lit_faces", "area", "lit_area", "lit_fraction"});
   for (std::size_t l = 0; l < lights; ++l) {
-    const double area_value = light_area[l].value();
-    const double lit_value = light_lit_area[l].value();
+    const double area_value = sums.light_area[l];
+    const double lit_value = sums.light_lit_area[l];
     totals.add({table_id(scene.lights[l].id), std::to_string(scene.faces.size()),
-                std::to_string(lit_faces[l]), readable_area(area_value), readable_area(lit_value),
-                readable_fraction(fraction(lit_value, area_value))});
+                std::to_string(sums.lit_faces[l]), readable_area(area_value),
+                readable_area(lit_value), readable_fraction(fraction(lit_value, area_value))});
   }
   totals.append_to(out);
   if (lights == 0) out += "(no lights)\n";

@@ -23,7 +23,9 @@ struct ReportRow {
 // face's area (holes removed, shadowgen::area of its parts), `lit_area` that of its lit
 // polygons for the light, never above `area` by rounding (an excess within 2^-40 of the
 // area is clamped, so 0 <= lit_fraction <= 1; anything larger is left to show). Throws
-// std::invalid_argument when `lit` is not shaped [face][light].
+// std::invalid_argument when `lit` is not shaped [face][light], and InputError (naming the
+// face's file and the face) when an area is not a finite number: no report, in any of the
+// forms below, holds inf or nan.
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed);
 
 // The spec's CSV: header face_id,light_id,area,lit_area,lit_fraction; numbers with %.17g;

@@ -4,21 +4,19 @@
 // holes and mesh files (OBJ, OFF, PLY, STL) with optional transforms. JSON coordinates
 // keep full double precision; OFF and PLY meshes go through OpenMesh, whose readers pass
 // vertices through single precision (shadowgen/scene/detail/mesh_reader.h).
-// Every problem is an InputError naming the file, the face id and what is wrong; nothing
-// is returned half-read.
+// Every problem is an InputError naming the file, the face id and what is wrong, with the
+// JSON path where the problem is (`lights[1] ('lamp').range.end`); nothing is returned
+// half-read. A key the format does not define is a warning naming its path and the key
+// probably meant (an error under ReadOptions::strict); a key given twice is an error.
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "shadowgen/model/scene.h"
+#include "shadowgen/scene/read_options.h"
 
 namespace shadowgen {
-
-struct ReadOptions {
-  // Non-planar polygons are an error instead of being split into triangles.
-  bool strict = false;
-};
 
 struct ReadResult {
   Scene scene;

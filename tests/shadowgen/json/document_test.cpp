@@ -47,12 +47,13 @@ TEST(DocumentFormat, ExplainsWhatIsMissing) {
   EXPECT_EQ(problem_of("42"), "the top level is a number, not an object");
   EXPECT_EQ(problem_of(R"({"format": 1})"), "\"format\" is a number, not a string");
   EXPECT_EQ(problem_of(R"({"format": {"name": "x"}})"), "\"format\" is an object, not a string");
+  // Worded as the readers word it (json_reader.h).
   EXPECT_EQ(problem_of(""),
-            "not valid JSON: parse error at line 1, column 1: syntax error while parsing value - "
-            "unexpected end of input; expected '[', '{', or a literal");
+            "line 1, column 1: invalid JSON: syntax error while parsing value - unexpected end "
+            "of input; expected '[', '{', or a literal");
   EXPECT_EQ(problem_of(R"({"polygons": [1, 2,)"),
-            "not valid JSON: parse error at line 1, column 20: syntax error while parsing value "
-            "- unexpected end of input; expected '[', '{', or a literal");
+            "line 1, column 20: invalid JSON: syntax error while parsing value - unexpected end "
+            "of input; expected '[', '{', or a literal");
 }
 
 TEST(ReadDocument, NamesAFileThatCannotBeRead) {

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "hsr/area.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
 namespace {
@@ -149,6 +150,51 @@ TEST(ReportRows, LitDetailsMustBeShapedFaceByLight) {
   EXPECT_THROW((void)report_rows(s), std::invalid_argument);
   s.lit.pop_back();
   EXPECT_THROW((void)report_csv(s), std::invalid_argument);
+}
+
+// No report holds inf or nan (docs/scene-format.md). A face 1e100 across has an area of
+// 1e200; should its computation overflow (the Newell vector's length squares 1e200), the
+// report refuses the input naming the face rather than print "inf".
+TEST(ReportRows, NoReportHoldsInfOrNan) {
+  ShadowedScene s;
+  s.scene.faces = {Face{"huge", {rectangle(0, 0, 1e100, 1e100)}, "big.json"}};
+  s.scene.lights = {directional("sun")};
+  s.lit = {{{{0, rectangle(0, 0, 1e100, 5e99)}}}};
+  for (auto* report : {+[](const ShadowedScene& x) { return report_csv(x); },
+                       +[](const ShadowedScene& x) { return report_json(x); },
+                       +[](const ShadowedScene& x) { return report_table(x); }}) {
+    try {
+      const std::string text = report(s);
+      EXPECT_EQ(text.find("inf"), std::string::npos) << text;
+      EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), "big.json");
+      EXPECT_EQ(e.face_id(), "huge");
+      EXPECT_EQ(e.problem(), "its area is not a finite number (coordinates too large)");
+    }
+  }
+}
+
+// One row per line, numbers in their shortest round-trip form.
+TEST(ReportJson, LayoutToTheByte) {
+  const ShadowedScene s = scene_with_ids("ground", "sun");
+  EXPECT_EQ(report_json(s), R"({
+  "format": "shadowgen-report/1",
+  "rows": [
+    {"face_id":"ground","light_id":"sun","area":98.0,"lit_area":82.0,"lit_fraction":0.8367346938775511},
+    {"face_id":"ground","light_id":"lamp","area":98.0,"lit_area":1.0,"lit_fraction":0.01020408163265306},
+    {"face_id":"sliver","light_id":"sun","area":0.0,"lit_area":0.0,"lit_fraction":0.0},
+    {"face_id":"sliver","light_id":"lamp","area":0.0,"lit_area":0.0,"lit_fraction":0.0},
+    {"face_id":"roof","light_id":"sun","area":16.0,"lit_area":16.0,"lit_fraction":1.0},
+    {"face_id":"roof","light_id":"lamp","area":16.0,"lit_area":10.0,"lit_fraction":0.625}
+  ],
+  "lights": [
+    {"light_id":"sun","area":114.0,"lit_area":98.0,"lit_fraction":0.8596491228070176},
+    {"light_id":"lamp","area":114.0,"lit_area":11.0,"lit_fraction":0.09649122807017543}
+  ],
+  "totals": {"area":228.0,"lit_area":109.0,"lit_fraction":0.4780701754385965}
+}
+)");
 }
 
 TEST(ReportJson, RowsAndTotals) {

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "shadowgen/output/database.h"
+#include "shadowgen/scene/database_reader.h"
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/output/report.h"
 #include "tests/shadowgen/shadows/shadow_check.h"

@@ -1,0 +1,179 @@
+#include "detail/json_parse.h"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace shadowgen::detail {
+namespace {
+
+using Json = nlohmann::json;
+
+// Line and column (1-based, columns in bytes) of the byte at `offset` (0-based).
+std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t offset) {
+  std::size_t line = 1;
+  std::size_t column = 1;
+  for (std::size_t i = 0; i < std::min(offset, text.size()); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+// Builds the tree as nlohmann's own DOM parser does. Every open container sits on a stack
+// with the step that leads to it from its parent ("[2]" or ".key"), so that a repeated
+// key can be named by its path. Pointers into the tree stay valid while a container is
+// open: nothing is appended to an array while one of its elements is being built, and
+// object members (std::map nodes) never move.
+class DomBuilder {
+ public:
+  DomBuilder(std::string_view text, Json& root) : text_(text), root_(root) {}
+
+  std::optional<std::string> problem;
+
+  bool null() { return put(nullptr) != nullptr; }
+  bool boolean(bool value) { return put(value) != nullptr; }
+  bool number_integer(Json::number_integer_t value) { return put(value) != nullptr; }
+  bool number_unsigned(Json::number_unsigned_t value) { return put(value) != nullptr; }
+  bool number_float(Json::number_float_t value, const Json::string_t&) {
+    return put(value) != nullptr;
+  }
+  bool string(Json::string_t& value) { return put(std::move(value)) != nullptr; }
+  bool binary(Json::binary_t& value) { return put(Json::binary(std::move(value))) != nullptr; }
+
+  bool start_object(std::size_t) { return open(Json::object()); }
+  bool start_array(std::size_t) { return open(Json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(Json::string_t& key) {
+    Json& object = *open_.back().container;
+    const auto [it, fresh] = object.emplace(key, nullptr);
+    if (!fresh) {
+      const std::string where = path();
+      problem = (where.empty() ? std::string() : where + ": ") + "the key '" + key +
+                "' is given twice (a key may appear once in an object)";
+      return false;
+    }
+    member_ = &it.value();
+    member_key_ = key;
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string& last_token,
+                   const nlohmann::detail::exception& error) {
+    problem = describe_parse_error(text_, position, last_token, error.id, error.what());
+    return false;
+  }
+
+ private:
+  struct Open {
+    Json* container;
+    std::string step;  // from the parent: "[i]" or "key"
+  };
+
+  // Places a value where the parser is: the root, the next element of the open array,
+  // or the member whose key was just read.
+  Json* put(Json value) {
+    if (open_.empty()) {
+      root_ = std::move(value);
+      return &root_;
+    }
+    Json& parent = *open_.back().container;
+    if (parent.is_array()) {
+      parent.push_back(std::move(value));
+      return &parent.back();
+    }
+    *member_ = std::move(value);
+    return member_;
+  }
+
+  bool open(Json container) {
+    std::string step;
+    if (!open_.empty()) {
+      const Json& parent = *open_.back().container;
+      if (parent.is_array()) {
+        step += '[';  // appended piece by piece: g++ 12 warns falsely on "[" + std::string
+        step += std::to_string(parent.size());
+        step += ']';
+      } else {
+        step = member_key_;
+      }
+    }
+    Json* placed = put(std::move(container));
+    open_.push_back({placed, std::move(step)});
+    return true;
+  }
+
+  bool close() {
+    open_.pop_back();
+    return true;
+  }
+
+  // The path of the innermost open container, an object with a string "id" (read so far)
+  // labelled by it: `lights[1] ('lamp')`.
+  std::string path() const {
+    std::string out;
+    for (const Open& level : open_) {
+      if (!level.step.empty()) {
+        if (level.step.front() != '[' && !out.empty()) out += '.';
+        out += level.step;
+      }
+      const Json& container = *level.container;
+      if (container.is_object() && !out.empty()) {
+        const auto id = container.find("id");
+        if (id != container.end() && id->is_string()) {
+          out += " ('" + id->get<std::string>() + "')";
+        }
+      }
+    }
+    return out;
+  }
+
+  std::string_view text_;
+  Json& root_;
+  std::vector<Open> open_;
+  Json* member_ = nullptr;
+  std::string member_key_;
+};
+
+}  // namespace
+
+std::string describe_parse_error(std::string_view text, std::size_t position,
+                                 const std::string& last_token, int id, const std::string& what) {
+  std::size_t offset = position > 0 ? position - 1 : 0;  // position counts bytes read
+  std::string problem;
+  if (id == 406) {  // number overflow: point at the number's start
+    offset = position >= last_token.size() ? position - last_token.size() : 0;
+    problem = "the number " + last_token + " is out of the range of a double";
+  } else {
+    // nlohmann's text: "[json.exception.parse_error.101] parse error at line 2, column 4:
+    // syntax error while parsing ..."; keep what follows the position.
+    problem = what;
+    const std::size_t column = problem.find(", column ");
+    const std::size_t colon = column == std::string::npos ? column : problem.find(": ", column);
+    if (colon != std::string::npos) {
+      problem = problem.substr(colon + 2);
+    } else if (const std::size_t bracket = problem.find("] "); bracket != std::string::npos) {
+      problem = problem.substr(bracket + 2);
+    }
+  }
+  const auto [line, column] = line_column(text, offset);
+  return "line " + std::to_string(line) + ", column " + std::to_string(column) +
+         ": invalid JSON: " + problem;
+}
+
+ParseOutcome parse_json(std::string_view text, Json& root) {
+  DomBuilder builder(text, root);
+  Json::sax_parse(text, &builder);
+  ParseOutcome outcome;
+  outcome.problem = std::move(builder.problem);
+  if (outcome.problem) root = Json();
+  return outcome;
+}
+
+}  // namespace shadowgen::detail

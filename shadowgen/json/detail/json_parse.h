@@ -1,0 +1,31 @@
+#pragma once
+
+// JSON text to a document, in one pass of nlohmann's SAX parser that builds the tree as
+// json::parse does and also refuses what json::parse lets through: a key given twice in
+// one object (json::parse keeps the last value and silently drops the first, so a second
+// "polygons": [] would empty a scene). Syntax errors, and numbers beyond a double's range,
+// are located by line and column.
+
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace shadowgen::detail {
+
+struct ParseOutcome {
+  // What is wrong, worded for the file's reader ("line 3, column 18: invalid JSON: ...",
+  // "lights[1] ('lamp'): the key 'range' is given twice"); empty when the text is valid.
+  std::optional<std::string> problem;
+};
+
+ParseOutcome parse_json(std::string_view text, nlohmann::json& root);
+
+// "line L, column C: invalid JSON: what", for a SAX parse error at `position` (bytes read,
+// as nlohmann counts them). `last_token` is the token being read, `id` nlohmann's error
+// id, `what` its message.
+std::string describe_parse_error(std::string_view text, std::size_t position,
+                                 const std::string& last_token, int id, const std::string& what);
+
+}  // namespace shadowgen::detail

@@ -1,0 +1,141 @@
+#include "detail/json_entities.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <optional>
+#include <utility>
+
+namespace shadowgen::detail {
+namespace {
+
+// Only a direction's direction matters (the spec: it need not be unit length). Scaled by
+// a power of two, which is exact, so that its largest component lies in [0.5, 1): then
+// 1e-300 or 1e300 long directions neither underflow nor overflow in dot products.
+glm::dvec3 power_of_two_scaled(const glm::dvec3& v) {
+  const double largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return {std::ldexp(v.x, -exponent), std::ldexp(v.y, -exponent), std::ldexp(v.z, -exponent)};
+}
+
+// A member a database must have and a scene may leave out.
+std::optional<JsonValue> member(JsonObject& object, std::string_view key, Source source) {
+  if (source == Source::kDatabase) return object.get(key);
+  return object.find(key);
+}
+
+LightRange read_range(const JsonValue& value, Source source) {
+  JsonObject object = value.object();
+  LightRange range;
+  const JsonValue end = object.get("end");
+  range.end = end.number();
+  const std::optional<JsonValue> start = member(object, "falloff_start", source);
+  if (start) range.falloff_start = start->number();
+  const std::optional<JsonValue> exponent = member(object, "exponent", source);
+  if (exponent) range.exponent = exponent->number();
+  // Absent members keep their defaults, which pass these checks.
+  if (!(range.end > 0.0)) end.fail("must be greater than 0");
+  if (start && range.falloff_start < 0.0) start->fail("must not be negative");
+  if (start && range.falloff_start > range.end) start->fail("must not exceed 'end'");
+  if (exponent && range.exponent < 0.0) exponent->fail("must not be negative");
+  object.finish();
+  return range;
+}
+
+void read_light_kind(JsonObject& entry, Light& light, Source source) {
+  const JsonValue type = entry.get("type");
+  const std::string kind = type.string();
+  if (kind == "directional") {
+    light.type = LightType::kDirectional;
+    const JsonValue direction = entry.get("direction");
+    light.direction = direction.vec3();
+    if (light.direction == glm::dvec3(0.0)) direction.fail("must not be zero");
+    // A database keeps what it was written with, bit for bit (scenes read by shadowgen
+    // hold scaled directions already).
+    if (source == Source::kScene) light.direction = power_of_two_scaled(light.direction);
+    if (const std::optional<JsonValue> range = entry.find("range")) {
+      range->fail("a range applies to point lights only");
+    }
+  } else if (kind == "point") {
+    light.type = LightType::kPoint;
+    light.position = entry.get("position").vec3();
+    if (const std::optional<JsonValue> range = entry.find("range")) {
+      light.range = read_range(*range, source);
+    }
+  } else {
+    type.fail("unknown light type '" + kind + "' (expected 'directional' or 'point')");
+  }
+}
+
+}  // namespace
+
+void IdRegistry::claim(const std::string& id, std::string owner, const JsonValue& at) {
+  const auto [it, fresh] = owners_.emplace(id, std::move(owner));
+  if (!fresh) at.fail("duplicate id '" + id + "' (already used by " + it->second + ")");
+}
+
+std::string read_id(JsonObject& entry) {
+  const JsonValue value = entry.get("id");
+  std::string id = value.string();
+  if (id.empty()) value.fail("an id must not be empty");
+  return id;
+}
+
+Light read_light(const JsonValue& value, IdRegistry& ids, Source source) {
+  JsonObject entry = value.object();
+  Light light;
+  light.id = read_id(entry);
+  ids.claim(light.id, "another light", entry.get("id"));
+  entry.name("light '" + light.id + "'", light.id);
+  read_light_kind(entry, light, source);
+  if (const std::optional<JsonValue> intensity = member(entry, "intensity", source)) {
+    light.intensity = intensity->vec3();
+    if (light.intensity.x < 0.0 || light.intensity.y < 0.0 || light.intensity.z < 0.0) {
+      intensity->fail("must not be negative");
+    }
+  }
+  entry.finish();
+  return light;
+}
+
+ViewSpec read_view(const JsonValue& value, IdRegistry& ids, Source source) {
+  JsonObject entry = value.object();
+  ViewSpec view;
+  view.id = read_id(entry);
+  ids.claim(view.id, "another view", entry.get("id"));
+  entry.name("view '" + view.id + "'", view.id);
+  view.eye = entry.get("eye").vec3();
+  view.target = entry.get("target").vec3();
+  const std::optional<JsonValue> up = member(entry, "up", source);
+  if (up) view.up = up->vec3();
+  const std::optional<JsonValue> fov = member(entry, "fov_deg", source);
+  if (fov) view.fov_deg = fov->number();
+  if (view.eye == view.target) entry.value().fail("'eye' and 'target' must differ");
+  const bool parallel = glm::cross(view.target - view.eye, view.up) == glm::dvec3(0.0);
+  if (up && view.up == glm::dvec3(0.0)) up->fail("must not be zero");
+  if (up && parallel) up->fail("must not be parallel to the direction from 'eye' to 'target'");
+  if (parallel) {
+    entry.value().fail(
+        "the default 'up' [0, 0, 1] is parallel to the direction from 'eye' to 'target'; give "
+        "an 'up'");
+  }
+  if (fov && !(view.fov_deg > 0.0 && view.fov_deg < 180.0)) {
+    fov->fail("must lie strictly between 0 and 180");
+  }
+  entry.finish();
+  return view;
+}
+
+hsr::Polygon3 read_polygon(JsonObject& object) {
+  hsr::Polygon3 polygon;
+  polygon.outer = object.get("outer").vec3_list();
+  if (const std::optional<JsonValue> holes = object.find("holes")) {
+    const JsonArray list = holes->array();
+    polygon.holes.reserve(list.size());
+    for (std::size_t k = 0; k < list.size(); ++k) polygon.holes.push_back(list.at(k).vec3_list());
+  }
+  return polygon;
+}
+
+}  // namespace shadowgen::detail

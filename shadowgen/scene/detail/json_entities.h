@@ -1,0 +1,48 @@
+#pragma once
+
+// The entries a scene and a shadowed database share (docs/scene-format.md): ids, lights,
+// views and polygons with holes, read with the same checks from either, so that a
+// database is held to what a scene is. Each reader leaves the object's unknown keys to
+// JsonObject::finish.
+
+#include <string>
+#include <unordered_map>
+
+#include "hsr/polygon3.h"
+#include "shadowgen/json/json_reader.h"
+#include "shadowgen/model/scene.h"
+
+namespace shadowgen::detail {
+
+// What a database holds that a scene may leave out: a scene's light may omit `intensity`
+// and parts of `range`, a scene's view `up` and `fov_deg` (defaults in scene.h); a
+// database written by shadowgen has them all, and one without them is damaged.
+enum class Source { kScene, kDatabase };
+
+// Ids unique within one namespace: "duplicate id 'x' (already used by polygon 'x')".
+class IdRegistry {
+ public:
+  // `owner` says who holds `id`, for the message of a later clash. `at` is the id's value.
+  void claim(const std::string& id, std::string owner, const JsonValue& at);
+  bool contains(const std::string& id) const { return owners_.count(id) > 0; }
+
+ private:
+  std::unordered_map<std::string, std::string> owners_;
+};
+
+// The entry's "id": a non-empty string.
+std::string read_id(JsonObject& entry);
+
+// lights[i]: its id claimed in `ids`; then named `light 'id'` in messages. In a scene, the
+// direction of a directional light is scaled by a power of two into [0.5, 1)
+// (Light::direction); a database's is kept as written.
+Light read_light(const JsonValue& value, IdRegistry& ids, Source source);
+
+// views[i], named `view 'id'` in messages.
+ViewSpec read_view(const JsonValue& value, IdRegistry& ids, Source source);
+
+// "outer" (a loop) and "holes" (optional, an array of loops), as given: the face checks
+// are the caller's. Other keys are left for the caller to read or report.
+hsr::Polygon3 read_polygon(JsonObject& object);
+
+}  // namespace shadowgen::detail

@@ -1,0 +1,144 @@
+// The JSON layer the scene and database readers share (shadowgen/json/json_reader.h):
+// typed reads that fail naming the file, the face and the path; unknown keys reported
+// with the key probably meant; a key given twice refused while parsing.
+
+#include "shadowgen/json/json_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "shadowgen/json/detail/key_suggestion.h"
+#include "shadowgen/model/input_error.h"
+
+namespace shadowgen {
+namespace {
+
+// The message of the InputError `read` throws, or "(no error)".
+template <class Read>
+std::string error_of(Read read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string parse_error(const std::string& text) {
+  return error_of([&] { const JsonDocument document(text, {"in.json"}); });
+}
+
+TEST(JsonReader, TypedReadsNameThePathOfWhatIsWrong) {
+  const JsonDocument document(R"({"lights": [{"id": "lamp", "range": {"end": "far"}},
+                                             {"id": "sun", "direction": [0, 1]}],
+                                  "n": 2.5, "i": 3, "neg": -1})",
+                              {"in.json"});
+  JsonObject top = document.root().object();
+  const JsonArray lights = top.get("lights").array();
+  ASSERT_EQ(lights.size(), 2u);
+  JsonObject lamp = lights.at(0).object();
+  EXPECT_EQ(lamp.get("id").string(), "lamp");
+  lamp.name("light 'lamp'", "lamp");
+  JsonObject range = lamp.get("range").object();
+  EXPECT_EQ(range.value().path(), "lights[0] ('lamp').range");
+  EXPECT_EQ(error_of([&] { (void)range.get("end").number(); }),
+            "in.json: light 'lamp': lights[0] ('lamp').range.end: expected a number, found a "
+            "string");
+  EXPECT_EQ(error_of([&] { (void)range.get("exponent"); }),
+            "in.json: light 'lamp': lights[0] ('lamp').range: missing 'exponent'");
+  JsonObject sun = lights.at(1).object();
+  sun.for_face("sun");
+  EXPECT_EQ(error_of([&] { (void)sun.get("direction").vec3(); }),
+            "in.json: face 'sun': lights[1].direction: expected an array of 3 numbers, found an "
+            "array of 2");
+  EXPECT_EQ(top.get("n").number(), 2.5);
+  EXPECT_EQ(top.get("i").index(), 3u);
+  EXPECT_EQ(error_of([&] { (void)top.get("neg").index(); }),
+            "in.json: neg: expected a non-negative integer, found a number");
+  EXPECT_EQ(error_of([&] { (void)top.get("n").array(); }),
+            "in.json: n: expected an array, found a number");
+}
+
+TEST(JsonReader, PointListsNameTheBadPoint) {
+  const JsonDocument document(R"({"outer": [[0, 0, 0], [1, 0, 0], [1, null, 0]]})", {"in.json"});
+  JsonObject top = document.root().object();
+  EXPECT_EQ(error_of([&] { (void)top.get("outer").vec3_list(); }),
+            "in.json: outer[2][1]: expected a number, found null");
+}
+
+TEST(JsonReader, UnknownKeysWarnWithTheKeyMeantOrFailWhenStrict) {
+  const std::string text = R"({"rnage": 1, "range": 2, "colour": 3})";
+  std::vector<std::string> warnings;
+  {
+    const JsonDocument document(text, {"in.json", false, &warnings});
+    JsonObject top = document.root().object();
+    (void)top.find("range");
+    (void)top.find("holes");  // asked for, absent: still a candidate for "did you mean"
+    top.finish();
+  }
+  EXPECT_EQ(warnings,
+            (std::vector<std::string>{"in.json: unknown key 'colour'",
+                                      "in.json: unknown key 'rnage' (did you mean 'range'?)"}));
+
+  const JsonDocument strict(text, {"in.json", true, &warnings});
+  JsonObject top = strict.root().object();
+  (void)top.find("range");
+  EXPECT_EQ(error_of([&] { top.finish(); }), "in.json: unknown key 'colour'");
+}
+
+TEST(JsonReader, EntriesOfAMapAreAllKnown) {
+  std::vector<std::string> warnings;
+  const JsonDocument document(R"({"lit": {"sun": [], "lamp": []}})", {"in.json", true, &warnings});
+  JsonObject lit = document.root().object().get("lit").object();
+  const auto entries = lit.entries();
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].first, "lamp");
+  EXPECT_EQ(entries[0].second.path(), "lit['lamp']");
+  lit.finish();
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(JsonReader, AKeyGivenTwiceIsRefusedWithItsPath) {
+  EXPECT_EQ(parse_error(R"({"a": 1, "a": 2})"),
+            "in.json: the key 'a' is given twice (a key may appear once in an object)");
+  EXPECT_EQ(
+      parse_error(R"({"lights": [{"id": "x"}, {"id": "lamp", "range": {"end": 1, "end": 2}}]})"),
+      "in.json: lights[1] ('lamp').range: the key 'end' is given twice (a key may appear "
+      "once in an object)");
+  EXPECT_EQ(
+      parse_error(R"({"faces": [[{"k": 1}], [{"k": 1, "k": 1}]]})"),
+      "in.json: faces[1][0]: the key 'k' is given twice (a key may appear once in an object)");
+  // The same key in different objects is fine.
+  EXPECT_EQ(parse_error(R"({"a": {"k": 1}, "b": {"k": 1}, "c": [{"k": 1}, {"k": 2}]})"),
+            "(no error)");
+}
+
+TEST(JsonReader, SyntaxErrorsAndOverflowsAreLocated) {
+  EXPECT_EQ(parse_error("{\n  \"a\": [1,,]\n}"),
+            "in.json: line 2, column 11: invalid JSON: syntax error while parsing value - "
+            "unexpected ','; expected '[', '{', or a literal");
+  EXPECT_EQ(parse_error("{\"a\":\n [1, -1e999]}"),
+            "in.json: line 2, column 6: invalid JSON: the number -1e999 is out of the range of a "
+            "double");
+  EXPECT_EQ(parse_error(""),
+            "in.json: line 1, column 1: invalid JSON: syntax error while parsing value - "
+            "unexpected end of input; expected '[', '{', or a literal");
+}
+
+TEST(KeySuggestion, TyposAreCloseOtherWordsAreNot) {
+  const std::vector<std::string> known = {"id", "outer", "holes", "range", "transform", "up"};
+  EXPECT_EQ(detail::closest_key("rnage", known), "range");         // two letters swapped
+  EXPECT_EQ(detail::closest_key("tranform", known), "transform");  // one left out
+  EXPECT_EQ(detail::closest_key("hole", known), "holes");
+  EXPECT_EQ(detail::closest_key("Outer", known), "outer");
+  EXPECT_EQ(detail::closest_key("colour", known), std::nullopt);
+  EXPECT_EQ(detail::closest_key("ip", known), "id");  // one edit: the first of equals
+  EXPECT_EQ(detail::closest_key("xy", known), std::nullopt);
+  EXPECT_EQ(detail::edit_distance("abc", "acb"), 1u);
+  EXPECT_EQ(detail::edit_distance("", "abc"), 3u);
+}
+
+}  // namespace
+}  // namespace shadowgen

@@ -1,0 +1,189 @@
+// A shadowed database is checked as strictly as a scene (shadowgen/scene/
+// database_reader.h): tampered lit polygons, broken faces, lights and views that a scene
+// would refuse, repeated keys. Each is an InputError naming the file, the face where one
+// is to blame, and the JSON path.
+
+#include "shadowgen/scene/database_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/output/database.h"
+
+namespace shadowgen {
+namespace {
+
+// A database with one face, "wall": the unit square in z = 0 with a hole, and one light,
+// "sun", whose lit polygons on it are `lit` (the inside of a JSON array).
+std::string database(const std::string& lit,
+                     const std::string& parts = R"({"outer": [[0,0,0],[4,0,0],[4,4,0],[0,4,0]],
+                                                     "holes": [[[1,1,0],[1,2,0],[2,2,0],[2,1,0]]]})",
+                     const std::string& views = "") {
+  return R"({"format": "shadowgen-shadowed/1",
+    "lights": [{"id": "sun", "type": "directional", "direction": [0.0, 0.0, -1.0],
+                "intensity": [1.0, 1.0, 1.0]}],
+    "views": [)" +
+         views + R"(],
+    "faces": [{"id": "wall", "source_file": "scene.json", "parts": [)" +
+         parts + R"(], "lit": {"sun": [)" + lit + "]}}]}";
+}
+
+std::string square(double x0, double y0, double size, double z = 0.0) {
+  auto point = [](double px, double py, double pz) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "[" << px << "," << py << "," << pz << "]";
+    return s.str();
+  };
+  return R"({"outer": [)" + point(x0, y0, z) + "," + point(x0 + size, y0, z) + "," +
+         point(x0 + size, y0 + size, z) + "," + point(x0, y0 + size, z) + R"(], "holes": []})";
+}
+
+struct Refusal {
+  std::string file, face, problem;
+};
+
+Refusal refusal(const std::string& text) {
+  try {
+    (void)parse_database(text, "db.json");
+  } catch (const InputError& e) {
+    return {e.file(), e.face_id(), e.problem()};
+  }
+  return {"", "", "(no error)"};
+}
+
+// The problem, checked to name db.json and the face.
+std::string wall_problem(const std::string& text) {
+  const Refusal r = refusal(text);
+  EXPECT_EQ(r.file, "db.json") << r.problem;
+  EXPECT_EQ(r.face, "wall") << r.problem;
+  return r.problem;
+}
+
+bool starts_with(const std::string& text, const std::string& start) {
+  return text.rfind(start, 0) == 0;
+}
+
+TEST(DatabaseReader, GoodLitPolygonsAreRead) {
+  const ShadowedScene s =
+      parse_database(database(square(0, 0, 1) + "," + square(2.5, 2.5, 1)), "db.json");
+  ASSERT_EQ(s.lit[0][0].size(), 2u);
+  // Touching the face's boundary and touching each other is fine.
+  EXPECT_NO_THROW(parse_database(
+      database(square(0, 0, 1) + "," + square(1, 0, 1) + "," + square(3, 3, 1)), "db.json"));
+  // The face lit whole, hole and all.
+  EXPECT_NO_THROW(parse_database(database(R"({"outer": [[0,0,0],[4,0,0],[4,4,0],[0,4,0]],
+                                               "holes": [[[1,1,0],[1,2,0],[2,2,0],[2,1,0]]]})"),
+                                 "db.json"));
+}
+
+TEST(DatabaseReader, LitAreaAboveTheFacesIsAnError) {
+  // Three times the face's area (15), and 2500 times.
+  const std::string big = R"({"outer": [[-2,-2,0],[7,-2,0],[7,3,0],[-2,3,0]], "holes": []})";
+  EXPECT_TRUE(starts_with(wall_problem(database(big)),
+                          "faces[0].lit['sun']: the lit polygons cover an area of 45, more than "
+                          "the face's area of 15 (a lit fraction of 3)"))
+      << wall_problem(database(big));
+  EXPECT_NE(wall_problem(database(square(-100, -100, 193.6492))).find("a lit fraction of 2500"),
+            std::string::npos);
+}
+
+TEST(DatabaseReader, ALitPolygonOffTheFacesPlaneIsAnError) {
+  const std::string problem = wall_problem(database(square(0, 0, 1) + "," + square(3, 3, 1, 0.5)));
+  EXPECT_TRUE(starts_with(problem,
+                          "faces[0].lit['sun'][1]: lies off its face's plane: a vertex "
+                          "is 0.5 from it"))
+      << problem;
+  // A hair off, within rounding, is the generator's rounding and passes.
+  EXPECT_NO_THROW(parse_database(database(square(0, 0, 1, 1e-15)), "db.json"));
+}
+
+TEST(DatabaseReader, ALitPolygonOutsideTheFaceIsAnError) {
+  const std::string outside = wall_problem(database(square(0, 0, 1) + "," + square(5, 5, 1)));
+  EXPECT_TRUE(starts_with(outside,
+                          "faces[0].lit['sun'][1]: lies outside its face: an area of 1 "
+                          "of its 1 is beyond the face's boundary"))
+      << outside;
+  // Over the face's hole.
+  const std::string in_hole = wall_problem(database(square(1.25, 1.25, 0.5)));
+  EXPECT_TRUE(starts_with(in_hole, "faces[0].lit['sun'][0]: lies outside its face")) << in_hole;
+  // Half across the edge.
+  const std::string across = wall_problem(database(square(3.5, 0, 1)));
+  EXPECT_TRUE(starts_with(across,
+                          "faces[0].lit['sun'][0]: lies outside its face: an area of 0.5 "
+                          "of its 1"))
+      << across;
+}
+
+TEST(DatabaseReader, ARepeatedOrOverlappingLitPolygonIsAnError) {
+  const std::string repeated =
+      wall_problem(database(square(0, 0, 1) + "," + square(3, 3, 1) + "," + square(0, 0, 1)));
+  EXPECT_EQ(repeated, "faces[0].lit['sun'][2]: repeats lit polygon 0 of this light");
+  const std::string overlapping = wall_problem(database(square(0, 0, 1) + "," + square(0.5, 0, 1)));
+  EXPECT_TRUE(starts_with(overlapping, "faces[0].lit['sun']: the lit polygons overlap"))
+      << overlapping;
+}
+
+TEST(DatabaseReader, FacePartsGetTheScenesFaceChecks) {
+  EXPECT_TRUE(
+      starts_with(wall_problem(database("", R"({"outer": [[0,0,0],[1,1,0],[1,0,0],[0,1,0]]})")),
+                  "faces[0].parts[0]: the outer loop intersects itself"));
+  EXPECT_TRUE(
+      starts_with(wall_problem(database("", R"({"outer": [[0,0,0],[1,0,0],[1,1,0.5],[0,1,0]]})")),
+                  "faces[0].parts[0]: not planar"));
+  EXPECT_TRUE(starts_with(wall_problem(database("", R"({"outer": [[0,0,0],[4,0,0],[4,4,0],[0,4,0]],
+                                    "holes": [[[5,5,0],[6,5,0],[6,6,0]]]})")),
+                          "faces[0].parts[0]: hole 0 is not inside the outer loop"));
+  // A part without area is kept, as a scene's degenerate face is, and nothing on it is lit.
+  const std::string line = R"({"outer": [[0,0,0],[1,1,1],[2,2,2]]})";
+  EXPECT_NO_THROW(parse_database(database("", line), "db.json"));
+  EXPECT_TRUE(starts_with(wall_problem(database(square(0, 0, 1), line)),
+                          "faces[0].lit['sun']: the lit polygons cover an area of 1, more than "
+                          "the face's area of 0"));
+}
+
+TEST(DatabaseReader, LightsAndViewsGetTheScenesChecks) {
+  std::string zero = database("");
+  zero.replace(zero.find("[0.0, 0.0, -1.0]"), 16, "[0, 0, 0]");
+  EXPECT_EQ(refusal(zero).problem, "light 'sun': lights[0] ('sun').direction: must not be zero");
+  const std::string view = R"({"id": "v", "eye": [1,2,3], "target": [1,2,3], "up": [0,0,1],
+                               "fov_deg": 45.0})";
+  EXPECT_EQ(refusal(database("", square(0, 0, 4), view)).problem,
+            "view 'v': views[0] ('v'): 'eye' and 'target' must differ");
+}
+
+TEST(DatabaseReader, AKeyGivenTwiceIsAnError) {
+  const std::string twice = database(square(0, 0, 1));
+  const std::string text = twice.substr(0, twice.size() - 1) + R"(, "faces": []})";
+  EXPECT_EQ(refusal(text).problem,
+            "the key 'faces' is given twice (a key may appear once in an object)");
+  EXPECT_EQ(refusal(database(R"({"outer": [[0,0,0],[1,0,0],[0,1,0]], "holes": [], "holes": []})"))
+                .problem,
+            "faces[0] ('wall').lit.sun[0]: the key 'holes' is given twice (a key may appear once "
+            "in an object)");
+}
+
+TEST(DatabaseReader, UnknownKeysWarnAndAreErrorsWhenStrict) {
+  const std::string text =
+      database(R"({"outer": [[0,0,0],[1,0,0],[0,1,0]], "hole": [], "part": 0})");
+  std::vector<std::string> warnings;
+  (void)parse_database(text, "db.json", {}, warnings);
+  EXPECT_EQ(warnings, std::vector<std::string>{"db.json: face 'wall': faces[0].lit['sun'][0]: "
+                                               "unknown key 'hole' (did you mean 'holes'?)"});
+  std::vector<std::string> ignored;
+  EXPECT_THROW((void)parse_database(text, "db.json", {.strict = true}, ignored), InputError);
+}
+
+// What shadowgen writes reads back, bit for bit, through every check.
+TEST(DatabaseReader, WrittenDatabasesReadBack) {
+  const std::string text = database(square(0, 0, 1) + "," + square(2.5, 2.5, 1));
+  const std::string written = database_json(parse_database(text, "db.json"));
+  EXPECT_EQ(database_json(parse_database(written, "again.json")), written);
+}
+
+}  // namespace
+}  // namespace shadowgen
