@@ -1,6 +1,9 @@
 #include "clipper/normalize.h"
 
 #include <algorithm>
+#include <map>
+#include <utility>
+#include <vector>
 
 #include "clipper/predicates.h"
 
@@ -83,11 +86,44 @@ bool remove_spikes(Loop2& loop) {
 }
 
 bool is_counter_clockwise(const Loop2& loop) {
-  const auto lowest = std::min_element(loop.begin(), loop.end());
-  const std::size_t i = static_cast<std::size_t>(lowest - loop.begin());
+  // Edges run once each way (bridges) bound nothing: cancel them. Every direction along
+  // the edges left, from their lowest endpoint, points into one half-plane; the loop may
+  // pass that point more than once, and the first direction clockwise from straight down
+  // is an edge out of the point exactly when the loop runs counter-clockwise.
   const std::size_t n = loop.size();
-  return orient2d(loop[(i + n - 1) % n], loop[i], loop[(i + 1) % n]) ==
-         Orientation::kCounterClockwise;
+  const auto lowest = std::min_element(loop.begin(), loop.end());
+  if (std::count(loop.begin(), loop.end(), *lowest) == 1) {
+    // Passed once: no bridge ends there, and the turn there tells (the usual case).
+    const std::size_t i = static_cast<std::size_t>(lowest - loop.begin());
+    return orient2d(loop[(i + n - 1) % n], loop[i], loop[(i + 1) % n]) ==
+           Orientation::kCounterClockwise;
+  }
+  std::map<std::pair<Point2, Point2>, int> net;  // undirected edge (low, high): +1 low -> high
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& a = loop[i];
+    const Point2& b = loop[(i + 1) % n];
+    if (a == b) continue;
+    if (a < b)
+      ++net[{a, b}];
+    else
+      --net[{b, a}];
+  }
+  const Point2* p = nullptr;
+  for (const auto& [e, k] : net) {
+    if (k != 0 && (p == nullptr || e.first < *p)) p = &e.first;
+  }
+  if (p == nullptr) return false;
+  const Point2 low = *p;
+  std::vector<std::pair<Point2, bool>> rays;
+  for (const auto& [e, k] : net) {
+    if (k != 0 && e.first == low) rays.push_back({e.second, k > 0});
+    if (k != 0 && e.second == low) rays.push_back({e.first, k < 0});
+  }
+  const std::pair<Point2, bool>* first = &rays[0];
+  for (const auto& r : rays) {
+    if (orient2d(low, r.first, first->first) == Orientation::kCounterClockwise) first = &r;
+  }
+  return first->second;
 }
 
 PolygonSet2 normalized(const PolygonSet2& polygons) {

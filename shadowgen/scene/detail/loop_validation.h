@@ -2,17 +2,31 @@
 
 // Validity of a face's loops in its plane chart (plane_chart.h), decided exactly with
 // clipper::orient2d:
-//   - every loop is simple: no two edges meet except consecutive ones at their shared
-//     vertex (an edge that doubles back along its predecessor counts as meeting it);
+//   - every loop bounds a region without crossing itself. It may pass through one point
+//     more than once (pinched, common in mesh faces) and may run along one edge once each
+//     way (a bridge to an inner boundary, as a keyhole cut makes), as long as it does not
+//     cross over there and covers no area twice: it stands for the region it bounds. Any
+//     other meeting of two of its edges is an error: a crossing, a vertex on another
+//     edge, edges running along each other otherwise, or an edge that doubles back along
+//     its predecessor;
 //   - holes lie inside the outer loop, and holes' interiors are disjoint; loops may touch
 //     at isolated points, but neither cross nor run along each other.
 // Consecutive repeated vertices are ignored (they add no edge).
+//
+// How a pinched or bridged loop is checked: at every point it passes more than once, no
+// two of its passages may cross (their directions in and out must not interleave around
+// the point). With the bridges taken out (each pair of opposite runs along one edge), the
+// loop falls into closed pieces that meet only at points; around every point the edges
+// into and out of it must alternate, and each piece must lie where the others leave the
+// winding number at 0 on its outside: then the winding number is 0 or ±1 everywhere, and
+// the loop could be pulled apart into a simple one.
 //
 // Cost: edges are paired by a sort-and-sweep over their bounding boxes, and only pairs
 // whose boxes overlap are tested, so ordinary loops take O(n log n); loops whose boxes
 // all overlap (long parallel slivers) degrade towards O(n^2) cheap box tests. Each hole
 // costs one point-in-polygon test against the outer loop, and one against every hole
-// whose box contains its box.
+// whose box contains its box. A loop that falls into k pieces costs k - 1 winding-number
+// tests more.
 
 #include <optional>
 #include <span>
@@ -27,7 +41,8 @@ struct LoopCheck {
   // What is wrong, naming loops by `loop_names` and vertices by their index in the given
   // loop; empty when the loops are valid.
   std::optional<std::string> problem;
-  // Per loop, when valid: whether it runs counter-clockwise in the chart.
+  // Per loop, when valid: whether it runs counter-clockwise in the chart (for a pinched or
+  // bridged loop: whether the region it bounds lies to its left).
   std::vector<bool> counter_clockwise;
 };
 

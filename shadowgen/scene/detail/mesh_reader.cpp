@@ -12,8 +12,10 @@
 #include <sstream>
 
 #include "obj_reader.h"
-#include "stl_reader.h"
+#include "off_reader.h"
+#include "ply_reader.h"
 #include "shadowgen/model/input_error.h"
+#include "stl_reader.h"
 
 namespace shadowgen::detail {
 
@@ -166,9 +168,30 @@ MeshSoup read_with_openmesh(const std::filesystem::path& file, const std::string
 
 MeshSoup read_mesh(const std::filesystem::path& file, const std::string& mesh_id) {
   const std::string ext = lower_extension(file);
-  if (ext == ".obj") return detail::parse_obj(read_bytes(file), file, mesh_id);
-  if (ext == ".stl") return detail::parse_stl(read_bytes(file), file, mesh_id);
-  return read_with_openmesh(file, ext);
+  MeshSoup soup;
+  std::string faces_are = "face records";
+  if (ext == ".obj") {
+    soup = detail::parse_obj(read_bytes(file), file, mesh_id);
+    faces_are = "'f' lines";
+  } else if (ext == ".stl") {
+    soup = detail::parse_stl(read_bytes(file), file, mesh_id);
+    faces_are = "facets";
+  } else if (ext == ".off") {
+    soup = detail::parse_off(read_bytes(file), file, mesh_id);
+    faces_are = "faces (its header announces none)";
+  } else if (ext == ".ply") {
+    soup = detail::parse_ply(read_bytes(file), file, mesh_id);
+    faces_are = "'face' elements";
+  } else {
+    soup = read_with_openmesh(file, ext);
+  }
+  // A mesh is referenced for its faces: one without any is a mistake (a wrong file, or
+  // one that is not a mesh of its format at all), never a silent nothing.
+  if (soup.faces.empty()) {
+    throw InputError(file.string(), "",
+                     "mesh '" + mesh_id + "' has no faces: the file has no " + faces_are);
+  }
+  return soup;
 }
 
 }  // namespace shadowgen::detail

@@ -4,23 +4,12 @@
 #include <cmath>
 #include <vector>
 
+#include "mesh_text.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
 
 namespace {
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > start) tokens.push_back(line.substr(start, i - start));
-  }
-  return tokens;
-}
 
 class ObjParser {
  public:
@@ -29,18 +18,15 @@ class ObjParser {
 
   MeshSoup parse(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte order mark
-    std::size_t pos = 0;
-    std::size_t line_no = 0;
+    // Unknown statements are skipped, as OBJ allows; so binary junk or UTF-16 text would
+    // pass as a file of unknown statements if it were not refused here.
+    require_text(text, file_);
+    LineReader lines(text);
+    std::string_view line;
     std::string statement;  // a statement may continue over lines ending in '\'
     std::size_t statement_line = 0;
-    while (pos < text.size()) {
-      std::size_t end = text.find('\n', pos);
-      if (end == std::string_view::npos) end = text.size();
-      std::string_view line = text.substr(pos, end - pos);
-      pos = end + 1;
-      ++line_no;
-      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      if (statement.empty()) statement_line = line_no;
+    while (lines.next(line)) {
+      if (statement.empty()) statement_line = lines.number();
       if (!line.empty() && line.back() == '\\') {
         statement.append(line.substr(0, line.size() - 1));
         statement += ' ';
@@ -64,11 +50,25 @@ class ObjParser {
     if (const std::size_t hash = statement.find('#'); hash != std::string_view::npos) {
       statement = statement.substr(0, hash);
     }
-    const std::vector<std::string_view> tokens = split(statement);
+    const std::vector<std::string_view> tokens = split_tokens(statement);
     if (tokens.empty()) return;
     if (tokens[0] == "v") {
-      // x y z, then an optional weight or colour, which we do not use.
+      // x y z, then an optional weight or colour (r g b, maybe a), which we do not use but
+      // check: something else there (two vertices run together) would be lost unseen.
       if (tokens.size() < 4) fail(line, "a vertex needs 3 coordinates", false);
+      if (tokens.size() > 8) {
+        fail(line,
+             "a vertex has 3 coordinates and at most a weight or a colour; this one has " +
+                 std::to_string(tokens.size() - 1) + " numbers",
+             false);
+      }
+      for (std::size_t i = 4; i < tokens.size(); ++i) {
+        if (!parse_number(tokens[i])) {
+          fail(line,
+               "'" + std::string(tokens[i]) + "' after a vertex's coordinates is not a number",
+               false);
+        }
+      }
       soup_.vertices.emplace_back(coordinate(tokens[1], line), coordinate(tokens[2], line),
                                   coordinate(tokens[3], line));
     } else if (tokens[0] == "f" || tokens[0] == "fo") {

@@ -5,6 +5,8 @@
 // materials, lines, points, free-form geometry) is skipped. Face indices may be
 // negative (relative to the vertices read so far) and carry /texture/normal parts,
 // which are ignored. A record with fewer than 3 indices is kept (the caller rejects it).
+// The file must be text (mesh_text.h): ASCII or UTF-8, lines ending in LF, CRLF or CR.
+// A vertex may carry a weight or a colour after its coordinates, numbers all.
 
 #include <filesystem>
 #include <string>

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <vector>
 
+#include "mesh_text.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
@@ -29,29 +30,34 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> tokens;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if (i > start) tokens.push_back(line.substr(start, i - start));
-  }
-  return tokens;
-}
-
 class StlParser {
  public:
   StlParser(const std::filesystem::path& file, const std::string& mesh_id)
       : file_(file.string()), mesh_id_(mesh_id) {}
 
   MeshSoup parse(std::string_view bytes) {
+    // Binary when the size fits the triangle count, whatever the header says: many
+    // binary files begin their 80-byte header with "solid" too.
+    std::uint64_t count = 0;
     if (bytes.size() >= 84) {
-      const std::uint64_t count = little_endian_u32(bytes.data() + 80);
+      count = little_endian_u32(bytes.data() + 80);
       if (bytes.size() == 84 + 50 * count) return parse_binary(bytes, count);
     }
     if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);  // a UTF-8 byte order mark
+    if (const std::optional<std::string> problem = text_problem(bytes)) {
+      if (bytes.size() < 84) {
+        throw InputError(file_, "",
+                         "not an STL file: " + *problem +
+                             ", and too short for binary STL (an 84-byte header, then 50 "
+                             "bytes a triangle)");
+      }
+      throw InputError(file_, "",
+                       "not an STL file: " + *problem + ", and as binary STL its size, " +
+                           std::to_string(bytes.size()) + " bytes, does not match the " +
+                           std::to_string(count) + " triangles its header announces (84 + 50 * " +
+                           std::to_string(count) + " = " + std::to_string(84 + 50 * count) +
+                           " bytes; truncated?)");
+    }
     std::size_t start = 0;
     while (start < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[start]))) ++start;
     if (lower(bytes.substr(start, 5)) != "solid") {
@@ -104,43 +110,62 @@ class StlParser {
     return value;
   }
 
+  // solid NAME, then per facet: facet normal N N N / outer loop / vertex X Y Z ... /
+  // endloop / endfacet, then endsolid NAME; several solids may follow each other. Normals
+  // are not used (nor checked: some writers put "nan" there for degenerate facets).
   MeshSoup parse_ascii(std::string_view text) {
-    std::size_t pos = 0;
-    std::size_t line_no = 0;
-    bool in_facet = false;
+    enum class State { kOutside, kSolid, kFacet, kLoop, kLoopDone };
+    State state = State::kOutside;
+    LineReader lines(text);
+    std::string_view line;
     MeshFaceRecord face;
-    while (pos < text.size()) {
-      std::size_t end = text.find('\n', pos);
-      if (end == std::string_view::npos) end = text.size();
-      const std::vector<std::string_view> tokens = split(text.substr(pos, end - pos));
-      pos = end + 1;
-      ++line_no;
+    auto expect = [&](bool ok, const std::string& keyword, const char* where) {
+      if (!ok) {
+        fail(lines.number(), "'" + keyword + "' " + where,
+             state == State::kFacet || state == State::kLoop || state == State::kLoopDone);
+      }
+    };
+    while (lines.next(line)) {
+      const std::vector<std::string_view> tokens = split_tokens(line);
       if (tokens.empty()) continue;
       const std::string keyword = lower(tokens[0]);
-      if (keyword == "solid" || keyword == "endsolid" || keyword == "outer" ||
-          keyword == "endloop") {
-        continue;
-      }
-      if (keyword == "facet") {
-        if (in_facet) fail(line_no, "'facet' before the previous facet's 'endfacet'", true);
-        in_facet = true;
+      if (keyword == "solid") {
+        expect(state == State::kOutside, keyword, "inside a solid");
+        state = State::kSolid;
+      } else if (keyword == "endsolid") {
+        expect(state == State::kSolid, keyword, "outside a solid, or inside a facet");
+        state = State::kOutside;
+      } else if (keyword == "facet") {
+        expect(state == State::kSolid, keyword, "outside a solid, or inside another facet");
+        state = State::kFacet;
         face = MeshFaceRecord{};
-        face.line = line_no;
+        face.line = lines.number();
+      } else if (keyword == "outer") {
+        expect(state == State::kFacet, keyword, "outside a facet, or twice in one");
+        state = State::kLoop;
       } else if (keyword == "vertex") {
-        if (!in_facet) fail(line_no, "'vertex' outside a facet", false);
-        if (tokens.size() < 4) fail(line_no, "a vertex needs 3 coordinates", true);
+        expect(state == State::kLoop, keyword, "outside a facet's 'outer loop'");
+        if (tokens.size() != 4) fail(lines.number(), "a vertex needs 3 coordinates", true);
         face.vertices.push_back(static_cast<std::int64_t>(soup_.vertices.size()));
-        soup_.vertices.emplace_back(coordinate(tokens[1], line_no), coordinate(tokens[2], line_no),
-                                    coordinate(tokens[3], line_no));
+        soup_.vertices.emplace_back(coordinate(tokens[1], lines.number()),
+                                    coordinate(tokens[2], lines.number()),
+                                    coordinate(tokens[3], lines.number()));
+      } else if (keyword == "endloop") {
+        expect(state == State::kLoop, keyword, "without 'outer loop'");
+        state = State::kLoopDone;
       } else if (keyword == "endfacet") {
-        if (!in_facet) fail(line_no, "'endfacet' without 'facet'", false);
+        expect(state == State::kLoopDone, keyword, "without 'facet' and its loop");
         soup_.faces.push_back(std::move(face));
-        in_facet = false;
+        state = State::kSolid;
       } else {
-        fail(line_no, "unexpected '" + std::string(tokens[0]) + "'", in_facet);
+        fail(lines.number(), "unexpected '" + std::string(tokens[0]) + "'",
+             state == State::kFacet || state == State::kLoop || state == State::kLoopDone);
       }
     }
-    if (in_facet) fail(line_no, "the file ends inside a facet", true);
+    if (state == State::kSolid) {
+      fail(lines.number(), "the file ends before 'endsolid' (truncated?)", false);
+    }
+    if (state != State::kOutside) fail(lines.number(), "the file ends inside a facet", true);
     return std::move(soup_);
   }
 
