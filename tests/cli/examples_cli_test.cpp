@@ -4,6 +4,11 @@
 // light in scene order, lit fractions in [0, 1]), exported as OBJ and MTL (one group per
 // face, its triangles adding up to the report's areas) and drawn from its `main` view
 // (well-formed SVG per xmllint, naming only faces and lights of the scene).
+//
+// The pictures checked in beside the scenes (examples/<name>.svg) are what the build target
+// `example_pictures` makes: every scene has its picture and every picture its scene, and
+// each picture is remade here by examples/render_examples.sh (the script that target runs)
+// into a temporary folder and compared byte for byte with the one checked in.
 
 #include <gtest/gtest.h>
 
@@ -19,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "shadowgen/shadows/generate.h"
 #include "shadowgen/output/report.h"
 #include "shadowgen/scene/scene_reader.h"
+#include "shadowgen/shadows/generate.h"
 #include "tests/cli/cli_harness.h"
 #include "tests/support/obj_text.h"
 
@@ -29,6 +34,11 @@ namespace shadowgen::test {
 namespace {
 
 const fs::path kExamples = fs::path(SHADOWGEN_EXAMPLES_DIR);
+
+// How a checked-in picture is remade, for the messages.
+constexpr const char* kRemake =
+    "remake the pictures with `cmake --build --preset release --target example_pictures` "
+    "(examples/README.md) and commit them";
 
 // The example names (scene file stems), sorted.
 std::vector<std::string> example_names() {
@@ -41,6 +51,47 @@ std::vector<std::string> example_names() {
   }
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// The names (file stems) of the pictures checked in, examples/*.svg, sorted.
+std::vector<std::string> picture_names() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(kExamples, error)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".svg") {
+      names.push_back(entry.path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The paths of an SVG picture: its `<path` elements.
+std::size_t path_count(const std::string& svg) {
+  std::size_t count = 0;
+  for (std::size_t at = svg.find("<path"); at != std::string::npos;
+       at = svg.find("<path", at + 1)) {
+    ++count;
+  }
+  return count;
+}
+
+// Where two texts first differ: "byte B (line L)", both from 1; "" when they are the same.
+std::string first_difference(const std::string& a, const std::string& b) {
+  const auto [ia, ib] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
+  if (ia == a.end() && ib == b.end()) return "";
+  const auto byte = static_cast<std::size_t>(ia - a.begin()) + 1;  // from 1, as cmp counts
+  const auto line = 1 + std::count(a.begin(), ia, '\n');
+  return "byte " + std::to_string(byte) + " (line " + std::to_string(line) + ")";
+}
+
+// A test's name for an example: its name with every character but letters and digits as '_'.
+std::string test_name(const ::testing::TestParamInfo<std::string>& param) {
+  std::string name = param.param;
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return name;
 }
 
 // Faces of an OBJ file: its `f` records.
@@ -101,13 +152,64 @@ TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
       has_main = has_main || view.at("id") == "main";
     }
     EXPECT_TRUE(has_main) << name << " has no view 'main'";
-    // The picture examples/render_examples.sh makes from that view is checked in.
+    // The picture the build target example_pictures makes from that view is checked in
+    // (ExamplePicture below checks its bytes).
     const fs::path picture = kExamples / (name + ".svg");
-    ASSERT_TRUE(fs::is_regular_file(picture)) << picture << ": run examples/render_examples.sh";
+    EXPECT_TRUE(fs::is_regular_file(picture)) << picture << " is missing: " << kRemake;
+  }
+  // ... and every picture checked in is one of a scene: no orphan.
+  for (const std::string& name : picture_names()) {
+    const fs::path picture = kExamples / (name + ".svg");
+    EXPECT_TRUE(std::find(names.begin(), names.end(), name) != names.end())
+        << picture << " is the picture of no scene (no examples/scenes/" << name
+        << ".json): remove it, or add its scene and " << kRemake;
     EXPECT_NE(contents(picture).find("data-face="), std::string::npos) << picture;
     EXPECT_EQ(shell("xmllint --noout " + quoted(picture.string()) + " 2>/dev/null"), 0) << picture;
   }
 }
+
+class ExamplePicture : public CliFolderTest<::testing::TestWithParam<std::string>> {
+ protected:
+  ExamplePicture() : CliFolderTest("shadowgen-example-picture") {}
+};
+
+// A checked-in picture is, byte for byte, what examples/render_examples.sh (the script the
+// build target example_pictures runs) makes from its scene with the shadowgen just built.
+TEST_P(ExamplePicture, IsByteForByteAFreshRender) {
+  const std::string name = GetParam();
+  const fs::path checked_in = kExamples / (name + ".svg");
+  ASSERT_TRUE(fs::is_regular_file(kExamples / "scenes" / (name + ".json")))
+      << checked_in << " is the picture of no scene";
+
+  const fs::path fresh_folder = dir_ / "pictures";
+  const fs::path out = dir_ / "run" / "out";
+  const fs::path err = dir_ / "run" / "err";
+  const std::string command = "bash " + quoted((kExamples / "render_examples.sh").string()) + " " +
+                              quoted(SHADOWGEN_EXECUTABLE) + " --out " +
+                              quoted(fresh_folder.string()) + " --databases " +
+                              quoted((dir_ / "databases").string()) + " " + quoted(name) + " >" +
+                              quoted(out.string()) + " 2>" + quoted(err.string());
+  ASSERT_EQ(shell(command), 0) << command << "\n" << contents(out) << contents(err);
+  EXPECT_EQ(contents(err), "");
+  const fs::path fresh_path = fresh_folder / (name + ".svg");
+  ASSERT_TRUE(fs::is_regular_file(fresh_path)) << command;
+  // The script makes only the picture asked for.
+  EXPECT_EQ(sorted_names(fresh_folder, {}), std::vector<std::string>{name + ".svg"});
+
+  const std::string fresh = contents(fresh_path);
+  const std::string kept = contents(checked_in);
+  ASSERT_FALSE(fresh.empty());
+  EXPECT_TRUE(kept == fresh) << "examples/" << name
+                             << ".svg differs from a fresh render of examples/scenes/" << name
+                             << ".json (" << path_count(kept) << " paths checked in, "
+                             << path_count(fresh) << " fresh; first difference at "
+                             << first_difference(kept, fresh) << "; the fresh one is " << fresh_path
+                             << "): " << kRemake;
+  std::printf("%s.svg: %zu bytes, %zu paths, %s\n", name.c_str(), kept.size(), path_count(kept),
+              kept == fresh ? "same as a fresh render" : "NOT a fresh render");
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, ExamplePicture, ::testing::ValuesIn(picture_names()), test_name);
 
 TEST_P(ExampleCli, GenerateReportExportRender) {
   const std::string name = GetParam();
@@ -231,14 +333,7 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
   EXPECT_GE(seen.size(), 2u);  // the view shows more than one face
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, ExampleCli, ::testing::ValuesIn(example_names()),
-                         [](const ::testing::TestParamInfo<std::string>& param) {
-                           std::string name = param.param;
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Examples, ExampleCli, ::testing::ValuesIn(example_names()), test_name);
 
 }  // namespace
 }  // namespace shadowgen::test
