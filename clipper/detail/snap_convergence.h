@@ -1,0 +1,22 @@
+#pragma once
+
+// When the snapping stops (snap_rounding.h): the bound on its rounds, and the exact check
+// that decides whether what a stopped snapping leaves is still usable. Kept apart from
+// the snapping itself because it judges the result rather than producing it, and because
+// the test hook of clip.h (SnapRoundLimitForTesting) sets the bound here.
+
+#include <vector>
+
+#include "clipper/polygon.h"
+
+namespace shadowgen::clipper::detail {
+
+// The number of rounds of changes after which the snapping stops: a fixed bound, but
+// while a SnapRoundLimitForTesting (clipper/clip.h) lives.
+int snap_round_limit();
+
+// Whether the loops' edges all meet only at vertices: the plane graph the overlay needs,
+// which a round limit can leave the snapping short of.
+bool noded(const std::vector<Loop2> (&loops)[2]);
+
+}  // namespace shadowgen::clipper::detail
