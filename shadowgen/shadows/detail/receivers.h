@@ -1,8 +1,9 @@
 #pragma once
 
-// The parts one light has to model, its receivers: faces wholly beyond the light's
-// range.end are left out (the spec), so a street lamp's shadows cost what its
-// neighbourhood costs.
+// The parts one light has to model. Its receivers are the parts that reach inside its
+// range.end; the parts beyond it are left out (the spec), so a street lamp's shadows cost
+// what its neighbourhood costs, except those near enough to stand between the light and
+// a receiver: they occlude and receive nothing.
 
 #include <cstddef>
 #include <span>
@@ -23,7 +24,8 @@ class Receivers {
   std::size_t size() const { return part_.size(); }
   // Receiver k's index in the FaceParts.
   std::size_t part(std::size_t k) const { return part_[k]; }
-  // Whether the light reaches receiver k's front side (faces_light).
+  // Whether the light reaches receiver k's front side (faces_light); false for a part
+  // kept only as an occluder.
   bool lit_side(std::size_t k) const { return lit_side_[k] != 0; }
 
   // Per receiver, for hidden-surface removal and the light views.
