@@ -2,7 +2,16 @@
 
 #include <iostream>
 
+#include "shadowgen/output/atomic_file.h"
+
 namespace shadowgen::cli {
+
+void refuse_input_as_output(const std::string& option, const std::string& output,
+                            const std::string& input) {
+  if (same_file(output, input)) {
+    throw UsageError(option + " " + output + ": is the input " + input + "; it would be replaced");
+  }
+}
 
 void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
   command.add_flag("--strict", args.strict,

@@ -48,6 +48,11 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress = f
 // -o/--output on `command`, described as naming `what`.
 CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::string& what);
 
+// Throws UsageError when `output` names the same file as `input` (through a link, a hard
+// link or another spelling of the path): a run must never replace what it reads.
+void refuse_input_as_output(const std::string& option, const std::string& output,
+                            const std::string& input);
+
 // The loading options these arguments ask for: reading warnings on stderr unless quiet.
 LoadOptions load_options(const ReadingArgs& args, Accept accept);
 

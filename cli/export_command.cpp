@@ -32,6 +32,10 @@ void run_export(const ExportArgs& args) {
                      "the same stem and \".mtl\"");
   }
 
+  if (args.obj == "-")
+    throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
+  refuse_input_as_output("--obj", obj_path.string(), args.input);
+  refuse_input_as_output("--obj", mtl_path.string(), args.input);
   const ShadowedScene shadowed =
       load_shadowed(args.input, load_options(args.reading, Accept::kSceneOrDatabase));
   ObjFiles files;
@@ -43,7 +47,7 @@ void run_export(const ExportArgs& args) {
     throw InputError(args.input, "", e.what());
   }
   // Both texts are complete before either file is touched, and written as one set: the
-  // MTL first, the OBJ that names it last, so a failed run leaves neither behind.
+  // MTL first, the OBJ that names it last, so a failed run leaves both as they were.
   write_files_atomically({{mtl_path, files.mtl}, {obj_path, files.obj}});
 }
 

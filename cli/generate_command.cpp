@@ -44,7 +44,10 @@ fs::path comparable(const fs::path& path) {
 // folder.
 std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
                                      const std::string& output) {
-  if (scenes.size() == 1) return {fs::path(output)};
+  if (scenes.size() == 1) {
+    refuse_input_as_output("-o", output, scenes[0]);
+    return {fs::path(output)};
+  }
 
   std::error_code error;
   if (fs::exists(output, error) && !fs::is_directory(output, error)) {
@@ -63,6 +66,7 @@ std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
     fs::path path = fs::path(output) / name;
     path += ".shadowed.json";
     const fs::path key = comparable(path);
+    for (const std::string& other : scenes) refuse_input_as_output("-o", path.string(), other);
     if (inputs.count(key) > 0) {
       throw UsageError(scene + ": its database " + path.string() +
                        " would replace one of the scenes");

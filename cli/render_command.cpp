@@ -87,6 +87,7 @@ Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
 void run_render(const RenderArgs& args) {
   LoadOptions load;
   load.accept = Accept::kDatabase;
+  refuse_input_as_output("--svg", args.svg, args.database);
   const ShadowedScene shadowed = load_shadowed(args.database, load);
   const Camera camera = camera_for(args, shadowed);
   RenderOptions options;

@@ -28,6 +28,7 @@ std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
 }
 
 void run_report(const ReportArgs& args) {
+  if (!args.output.empty()) refuse_input_as_output("-o", args.output, args.input);
   const ShadowedScene shadowed =
       load_shadowed(args.input, load_options(args.reading, Accept::kSceneOrDatabase));
   const std::string report = report_text(shadowed, args);

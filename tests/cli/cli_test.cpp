@@ -125,6 +125,42 @@ TEST_F(Cli, AFailedRunLeavesAnExistingOutputAlone) {
   EXPECT_EQ(files(), (std::vector<std::string>{"broken.json", "db.json"}));
 }
 
+// A run never replaces what it reads, however the output is spelled: the same path, a
+// symbolic link to the input, or a hard link.
+TEST_F(Cli, AnOutputThatIsAnInputIsRefused) {
+  const fs::path scene = write("scene.json", kTinyScene);
+  fs::create_symlink(scene, dir_ / "link.json");
+  fs::create_hard_link(scene, dir_ / "hard.json");
+  for (const char* output : {"scene.json", "link.json", "hard.json"}) {
+    const std::string out = (dir_ / output).string();
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"generate", scene.string(), "-o", out},
+          std::vector<std::string>{"report", scene.string(), "-o", out},
+          std::vector<std::string>{"export", scene.string(), "--obj", out}}) {
+      const Outcome r = run(args);
+      EXPECT_EQ(r.code, 2) << args[0] << " -o " << output << ": " << r.err;
+      EXPECT_NE(r.err.find("is the input"), std::string::npos) << r.err;
+    }
+  }
+  EXPECT_EQ(contents(scene), kTinyScene);
+  const fs::path db = dir_ / "db.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const Outcome render =
+      run({"render", db.string(), "--eye", "0,0,10", "--target", "0,0,0", "--svg", db.string()});
+  EXPECT_EQ(render.code, 2) << render.err;
+  EXPECT_EQ(nlohmann::json::parse(contents(db))["format"], "shadowgen-shadowed/1");
+}
+
+// "-" is standard output for a report; an OBJ export is two files and cannot be one stream.
+TEST_F(Cli, DashIsStandardOutput) {
+  const fs::path scene = write("scene.json", kTinyScene);
+  const Outcome report = run({"report", scene.string(), "-o", "-"});
+  ASSERT_EQ(report.code, 0) << report.err;
+  EXPECT_EQ(report.out, kTinyCsv);
+  EXPECT_EQ(run({"export", scene.string(), "--obj", "-"}).code, 2);
+  EXPECT_EQ(files(), (std::vector<std::string>{"scene.json"}));
+}
+
 TEST_F(Cli, UnreadableInputsExitOne) {
   const Outcome missing = run({"report", (dir_ / "missing.json").string()});
   EXPECT_EQ(missing.code, 1);
