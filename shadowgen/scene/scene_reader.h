@@ -2,8 +2,7 @@
 
 // Reading a `shadowgen-scene/1` file (docs/scene-format.md): JSON polygons with
 // holes and mesh files (OBJ, OFF, PLY, STL) with optional transforms. JSON coordinates
-// keep full double precision; OFF and PLY meshes go through OpenMesh, whose readers pass
-// vertices through single precision (shadowgen/scene/detail/mesh_reader.h).
+// and mesh coordinates keep full double precision (shadowgen/scene/detail/mesh_reader.h).
 // Every problem is an InputError naming the file, the face id and what is wrong, with the
 // JSON path where the problem is (`lights[1] ('lamp').range.end`); nothing is returned
 // half-read. A key the format does not define is a warning naming its path and the key
