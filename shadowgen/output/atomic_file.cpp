@@ -1,12 +1,9 @@
 #include "shadowgen/output/atomic_file.h"
 
 #include <fcntl.h>
-#include <limits.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <array>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -19,10 +16,14 @@
 #include <system_error>
 #include <utility>
 
+#include "detail/temporary_files.h"
+
 namespace shadowgen {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::register_temporary;
+using detail::unregister_temporary;
 
 bool is_dash(const fs::path& path) { return path.native() == "-"; }
 
@@ -40,60 +41,6 @@ bool is_dash(const fs::path& path) { return path.native() == "-"; }
   message += ": ";
   message += std::strerror(error);
   throw std::runtime_error(message);
-}
-
-// ---------------------------------------------------------------------------------------
-// The temporary files being written, for the signal handlers. A handler may only use
-// async-signal-safe calls, so the table is preallocated and each slot's state is a
-// lock-free atomic: claimed with a compare-and-swap (no lock a handler could interrupt),
-// filled, then published as live; the handler unlinks the live ones.
-
-constexpr int kSlotFree = 0;
-constexpr int kSlotFilling = 1;
-constexpr int kSlotLive = 2;
-
-struct TemporarySlot {
-  std::atomic<int> state{kSlotFree};
-  std::array<char, PATH_MAX> path{};
-};
-static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads slot states");
-
-// More writes at once than this (threads writing many files together) go unprotected
-// against signals; they are still removed on every failure the program sees.
-constexpr std::size_t kSlots = 64;
-std::array<TemporarySlot, kSlots> temporary_slots;
-
-// Returns the slot now holding `path`, or -1 when none is free or the path is too long.
-int register_temporary(const fs::path& path) {
-  // Absolute, so that a change of the working folder cannot send the unlink elsewhere.
-  std::error_code error;
-  const fs::path absolute = fs::absolute(path, error);
-  if (error || absolute.native().size() >= PATH_MAX) return -1;
-  for (std::size_t i = 0; i < kSlots; ++i) {
-    TemporarySlot& slot = temporary_slots[i];
-    int expected = kSlotFree;
-    if (!slot.state.compare_exchange_strong(expected, kSlotFilling)) continue;
-    std::memcpy(slot.path.data(), absolute.c_str(), absolute.native().size() + 1);
-    slot.state.store(kSlotLive, std::memory_order_release);
-    return static_cast<int>(i);
-  }
-  return -1;
-}
-
-void unregister_temporary(int slot) {
-  if (slot >= 0) temporary_slots[static_cast<std::size_t>(slot)].state.store(kSlotFree);
-}
-
-constexpr std::array<int, 3> kCleanupSignals = {SIGINT, SIGTERM, SIGHUP};
-
-extern "C" void remove_temporaries_and_reraise(int signal_number) {
-  const int saved_errno = errno;
-  remove_temporary_files();
-  // SA_RESETHAND restored the default action on entry, and the signal is blocked while
-  // this handler runs: raised again, it ends the process as soon as the handler returns,
-  // with the status a parent expects from that signal.
-  ::raise(signal_number);
-  errno = saved_errno;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -420,29 +367,6 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     return error ? fs::absolute(path, error).lexically_normal() : resolved;
   };
   return comparable(a) == comparable(b);
-}
-
-void install_temporary_file_cleanup() {
-  for (const int signal_number : kCleanupSignals) {
-    struct sigaction current {};
-    if (::sigaction(signal_number, nullptr, &current) != 0) continue;
-    // Only the default action is replaced: an ignored signal (nohup, a background job)
-    // stays ignored, and a program's own handler stays in charge.
-    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler != SIG_DFL) continue;
-    struct sigaction action {};
-    action.sa_handler = remove_temporaries_and_reraise;
-    sigemptyset(&action.sa_mask);
-    // One cleanup at a time: the other signals wait while a handler runs.
-    for (const int other : kCleanupSignals) sigaddset(&action.sa_mask, other);
-    action.sa_flags = SA_RESETHAND | SA_RESTART;
-    ::sigaction(signal_number, &action, nullptr);
-  }
-}
-
-void remove_temporary_files() noexcept {
-  for (TemporarySlot& slot : temporary_slots) {
-    if (slot.state.load(std::memory_order_acquire) == kSlotLive) ::unlink(slot.path.data());
-  }
 }
 
 }  // namespace shadowgen

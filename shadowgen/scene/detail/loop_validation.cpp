@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <compare>
 #include <cstdint>
-#include <limits>
 #include <map>
-#include <numeric>
 #include <set>
 #include <utility>
 
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 #include "clipper/segment_contact.h"
+#include "loop_geometry.h"
+#include "loop_pieces.h"
 
 namespace shadowgen::detail {
 
@@ -20,31 +20,6 @@ namespace {
 using clipper::orient2d;
 using clipper::Orientation;
 using clipper::Point2;
-
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-int sign(Orientation o) { return static_cast<int>(o); }
-
-// A loop with consecutive repeated vertices removed, remembering where each kept vertex
-// was in the given loop (for messages).
-struct CleanLoop {
-  std::vector<Point2> points;
-  std::vector<std::size_t> original;
-};
-
-CleanLoop clean(const clipper::Loop2& loop) {
-  CleanLoop c;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    if (!c.points.empty() && loop[i] == c.points.back()) continue;
-    c.points.push_back(loop[i]);
-    c.original.push_back(i);
-  }
-  while (c.points.size() > 1 && c.points.back() == c.points.front()) {
-    c.points.pop_back();
-    c.original.pop_back();
-  }
-  return c;
-}
 
 struct Box {
   double xmin, xmax, ymin, ymax;
@@ -60,67 +35,6 @@ struct Edge {
   std::uint32_t index;  // edge index = index of its first vertex in the clean loop
 };
 
-// Where a loop passes through a point: the points before and after it along the loop.
-struct Corner {
-  Point2 prev, at, next;
-};
-
-// Strictly to the left of the path prev -> at -> next, near `at`.
-bool left_of(const Corner& c, const Point2& w) {
-  const int turn = sign(orient2d(c.prev, c.at, c.next));
-  const bool left_of_in = orient2d(c.prev, c.at, w) == Orientation::kCounterClockwise;
-  const bool left_of_out = orient2d(c.at, c.next, w) == Orientation::kCounterClockwise;
-  if (turn > 0) return left_of_in && left_of_out;
-  return left_of_in || left_of_out;  // reflex, or straight (then both agree)
-}
-
-// Whether two passages through one point cross there: the directions in and out of one
-// lie on both sides of the other's path. Their directions must all differ.
-bool cross(const Corner& a, const Corner& b) {
-  return left_of(a, b.prev) != left_of(a, b.next) || left_of(b, a.prev) != left_of(b, a.next);
-}
-
-// Crossing-number test, exact; `p` must not lie on the loop.
-bool inside_loop(const std::vector<Point2>& loop, const Point2& p) {
-  bool inside = false;
-  const std::size_t n = loop.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point2& a = loop[i];
-    const Point2& b = loop[(i + 1) % n];
-    if ((a.y > p.y) == (b.y > p.y)) continue;
-    // The edge crosses the horizontal line through p; count it when it does so right of p.
-    const Orientation o = orient2d(a, b, p);
-    if (b.y > a.y ? o == Orientation::kCounterClockwise : o == Orientation::kClockwise) {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
-
-// What the directed edge a -> b adds to the winding number around x, which is not on it.
-int winding(const Point2& a, const Point2& b, const Point2& x) {
-  if (a.y <= x.y) {
-    if (b.y > x.y && orient2d(a, b, x) == Orientation::kCounterClockwise) return 1;
-  } else if (b.y <= x.y && orient2d(a, b, x) == Orientation::kClockwise) {
-    return -1;
-  }
-  return 0;
-}
-
-// Directions from p, counter-clockwise from +x, exactly; q1 and q2 must not lie in the
-// same direction.
-bool angle_less(const Point2& p, const Point2& q1, const Point2& q2) {
-  auto upper = [&p](const Point2& q) { return q.y > p.y || (q.y == p.y && q.x > p.x); };
-  if (upper(q1) != upper(q2)) return upper(q1);
-  return orient2d(p, q1, q2) == Orientation::kCounterClockwise;
-}
-
-// A direction from a point along a loop: to the vertex before (into the point) or after.
-struct Ray {
-  Point2 to;
-  bool out;
-};
-
 // A loop passes a point at one of its vertices, or inside one of its edges (touching
 // another loop there).
 struct Passage {
@@ -128,21 +42,6 @@ struct Passage {
   std::uint32_t index;  // the vertex, or with inside_edge the edge, in the clean loop
   bool inside_edge;
   friend auto operator<=>(const Passage&, const Passage&) = default;
-};
-
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) {
-    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
-  }
-  std::size_t find(std::size_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void join(std::size_t a, std::size_t b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<std::size_t> parent_;
 };
 
 class Checker {
@@ -164,13 +63,6 @@ class Checker {
   }
 
  private:
-  // A pinched or bridged loop with its bridges taken out: after each edge into a point,
-  // the edge out of it that the loop takes next, jumping over bridges.
-  struct Pieces {
-    std::vector<std::uint32_t> next_edge;                   // by edge; kNone for bridges
-    std::map<Point2, std::vector<std::uint32_t>> edges_in;  // edges ending at each point
-  };
-
   std::optional<std::string> check() {
     for (std::size_t l = 0; l < loops_.size(); ++l) {
       if (loops_[l].points.size() < 3) return names_[l] + " has no area in the face's plane";
@@ -184,8 +76,10 @@ class Checker {
     for (std::uint32_t l = 0; l < loops_.size(); ++l) {
       if (bridge_partner_[l].empty() && !pinched_[l]) {
         ccw_[l] = clipper::is_counter_clockwise(loops_[l].points);
-      } else if (auto problem = check_pieces(l)) {
-        return problem;
+      } else {
+        PiecesCheck pieces = check_pieces(loops_[l], bridge_partner_[l], names_[l], pieces_[l]);
+        if (pieces.problem) return pieces.problem;
+        ccw_[l] = pieces.counter_clockwise;
       }
     }
     for (const auto& [at, passages] : touches_) {
@@ -195,14 +89,13 @@ class Checker {
   }
 
   std::string vertex_name(std::uint32_t loop, std::size_t clean_index) const {
-    const CleanLoop& l = loops_[loop];
-    return std::to_string(l.original[clean_index % l.points.size()]);
+    return detail::vertex_name(loops_[loop], clean_index);
   }
   std::string edge_name(const Edge& e) const {
     return vertex_name(e.loop, e.index) + "-" + vertex_name(e.loop, e.index + 1);
   }
   bool is_bridge(std::uint32_t loop, std::uint32_t edge) const {
-    return !bridge_partner_[loop].empty() && bridge_partner_[loop][edge] != kNone;
+    return !bridge_partner_[loop].empty() && bridge_partner_[loop][edge] != kNoEdge;
   }
 
   std::optional<std::string> sweep_edges() {
@@ -264,7 +157,7 @@ class Checker {
       // The same edge run once each way: a bridge.
       if (m.contact == clipper::Contact::kOverlap && e.a == f.b && e.b == f.a) {
         std::vector<std::uint32_t>& partner = bridge_partner_[e.loop];
-        if (partner.empty()) partner.assign(n, kNone);
+        if (partner.empty()) partner.assign(n, kNoEdge);
         partner[e.index] = f.index;
         partner[f.index] = e.index;
         return std::nullopt;
@@ -364,99 +257,6 @@ class Checker {
     return std::nullopt;
   }
 
-  // A pinched or bridged loop: takes the bridges out, checks that the pieces left bound
-  // each point's neighbourhood once at most, and finds the loop's orientation.
-  std::optional<std::string> check_pieces(std::uint32_t l) {
-    const std::vector<Point2>& p = loops_[l].points;
-    const auto n = static_cast<std::uint32_t>(p.size());
-    Pieces& pieces = pieces_[l];
-    pieces.next_edge.assign(n, kNone);
-    for (std::uint32_t k = 0; k < n; ++k) {
-      if (is_bridge(l, k)) continue;
-      std::uint32_t j = (k + 1) % n;
-      for (std::uint32_t steps = 0; is_bridge(l, j); ++steps) {
-        if (steps > n) return names_[l] + " has no area in the face's plane";
-        j = (bridge_partner_[l][j] + 1) % n;
-      }
-      pieces.next_edge[k] = j;
-      pieces.edges_in[p[(k + 1) % n]].push_back(k);
-    }
-    if (pieces.edges_in.empty()) {
-      return names_[l] + " has no area in the face's plane: it runs along every edge both ways";
-    }
-
-    // The directions in and out of each point, counter-clockwise: they must alternate, or
-    // the winding number would step twice the same way around the point.
-    auto rays_at = [&](const std::vector<std::uint32_t>& in) {
-      std::vector<Ray> rays;
-      for (const std::uint32_t k : in) {
-        rays.push_back({p[k], false});
-        rays.push_back({p[(pieces.next_edge[k] + 1) % n], true});
-      }
-      return rays;
-    };
-    for (const auto& [at, in] : pieces.edges_in) {
-      if (in.size() < 2) continue;
-      std::vector<Ray> rays = rays_at(in);
-      std::sort(rays.begin(), rays.end(),
-                [&at](const Ray& a, const Ray& b) { return angle_less(at, a.to, b.to); });
-      for (std::size_t i = 0; i < rays.size(); ++i) {
-        if (rays[i].out == rays[(i + 1) % rays.size()].out) {
-          return names_[l] + " overlaps itself at vertex " + vertex_name(l, (in[0] + 1) % n) +
-                 ": around it, it covers an area twice or runs the wrong way round";
-        }
-      }
-    }
-
-    // The pieces: the bridge-free edges joined at shared points.
-    std::map<Point2, std::size_t> node;
-    for (const auto& [at, in] : pieces.edges_in) node.emplace(at, node.size());
-    DisjointSets sets(node.size());
-    for (std::uint32_t k = 0; k < n; ++k) {
-      if (!is_bridge(l, k)) sets.join(node.at(p[k]), node.at(p[(k + 1) % n]));
-    }
-    // Alone, a piece winds 0 around the points outside it and, since its directions
-    // alternate, the same +1 or -1 beside all its edges on their other side: +1 when, at
-    // its lowest point (x, then y), where all its directions point into one half-plane, the
-    // first of them counter-clockwise from straight down is an edge out of the point.
-    // Nodes in map order meet each piece first at its lowest point.
-    std::map<std::size_t, std::pair<Point2, int>> lowest;  // by piece: point, inner winding
-    for (const auto& [at, in] : pieces.edges_in) {
-      const std::size_t piece = sets.find(node.at(at));
-      if (lowest.count(piece) != 0) continue;
-      const std::vector<Ray> rays = rays_at(in);
-      const Ray* first = &rays[0];
-      for (const Ray& r : rays) {
-        if (orient2d(at, r.to, first->to) == Orientation::kCounterClockwise) first = &r;
-      }
-      lowest.emplace(piece, std::pair<Point2, int>(at, first->out ? 1 : -1));
-    }
-    // Together they wind 0 or +-1 everywhere when, beside the edges of every piece, the
-    // winding number takes the two values it takes beside the piece through the loop's
-    // lowest point, which no other piece surrounds: the others must wind 0 around a piece
-    // that runs the loop's way round, and the loop's +-1 around one that runs the other
-    // way (an inner boundary of the region).
-    const std::size_t first_piece = sets.find(node.begin()->second);
-    const int base = lowest.at(first_piece).second > 0 ? 0 : -1;
-    for (const auto& [piece, low] : lowest) {
-      if (piece == first_piece) continue;
-      int around = low.second > 0 ? 0 : -1;
-      for (std::uint32_t k = 0; k < n; ++k) {
-        if (is_bridge(l, k) || sets.find(node.at(p[k])) == piece) continue;
-        around += winding(p[k], p[(k + 1) % n], low.first);
-      }
-      if (around != base) {
-        const std::uint32_t k = pieces.edges_in.at(low.first)[0];
-        return names_[l] + " overlaps itself: the part of it through vertex " +
-               vertex_name(l, (k + 1) % n) +
-               " lies in its own region and runs the same way round, or outside it and the "
-               "other way";
-      }
-    }
-    ccw_[l] = base == 0;
-    return std::nullopt;
-  }
-
   // Two loops that touch at a point must lie on the proper sides of each other there: a
   // hole inside the outer loop, two holes outside each other. Near the point, a loop's
   // side is told by its directions in and out of it (bridges taken out), in angular order:
@@ -477,7 +277,7 @@ class Checker {
       } else if (s.inside_edge) {
         if (!is_bridge(s.loop, s.index)) add(corner(s, at));
       } else if (pieces_added.insert(s.loop).second) {
-        const Pieces& pieces = pieces_[s.loop];
+        const LoopPieces& pieces = pieces_[s.loop];
         const std::vector<Point2>& p = loops_[s.loop].points;
         if (const auto it = pieces.edges_in.find(at); it != pieces.edges_in.end()) {
           for (const std::uint32_t k : it->second) {
@@ -562,7 +362,7 @@ class Checker {
   // Per loop: for each edge, the edge that runs along it the other way (empty: none).
   std::vector<std::vector<std::uint32_t>> bridge_partner_;
   std::vector<bool> pinched_;  // per loop: passes a vertex twice
-  std::vector<Pieces> pieces_;
+  std::vector<LoopPieces> pieces_;
   std::set<std::pair<std::uint32_t, std::uint32_t>> touching_;
   std::vector<bool> ccw_;
 };

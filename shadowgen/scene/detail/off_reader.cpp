@@ -109,28 +109,59 @@ class OffParser {
     LineReader lines(text);
     lines_ = &lines;
     if (!next_record()) fail("not an OFF file: it is empty");
-    // The header keyword, optional in text OFF; the counts may follow it on its line, even
-    // run together with it.
-    Layout layout;
-    std::string_view rest;
     std::vector<std::string_view> header = tokens_;
-    if (const std::optional<Layout> keyword = header_keyword(tokens_[0], rest)) {
-      if (!rest.empty() && !parse_integer(rest)) {
-        fail_at(lines.number(), "not an OFF file: it begins with '" + std::string(tokens_[0]) +
-                                    "', not 'OFF' (or its variants) nor its counts");
+    const Layout layout = read_keyword(header);
+    const auto [vertex_count, face_count] = read_counts(header, layout);
+    const auto room = static_cast<std::int64_t>(text.size() / 2);
+    soup_.vertices.reserve(static_cast<std::size_t>(std::min(vertex_count, room)));
+    soup_.faces.reserve(static_cast<std::size_t>(std::min(face_count, room)));
+
+    for (std::int64_t v = 0; v < vertex_count; ++v) {
+      if (!next_record()) {
+        fail("the file ends after " + std::to_string(v) + " of the " +
+             counted(vertex_count, "vertex", "vertices") + " its header announces (truncated?)");
       }
-      layout = *keyword;
+      read_text_vertex(layout);
+    }
+    for (std::int64_t f = 0; f < face_count; ++f) {
+      if (!next_record()) {
+        fail("the file ends after " + std::to_string(f) + " of the " +
+             counted(face_count, "face", "faces") + " its header announces (truncated?)");
+      }
+      read_text_face();
+    }
+    if (next_record()) {
+      fail_at(lines.number(), "more data after the " + counted(vertex_count, "vertex", "vertices") +
+                                  " and " + counted(face_count, "face", "faces") +
+                                  " the header announces");
+    }
+    return std::move(soup_);
+  }
+
+  // The header keyword, optional in text OFF, from the first record (`header`, which is
+  // left with the tokens after it); the counts may follow it on its line, even run
+  // together with it.
+  Layout read_keyword(std::vector<std::string_view>& header) const {
+    std::string_view rest;
+    const std::optional<Layout> keyword = header_keyword(tokens_[0], rest);
+    if (keyword ? !rest.empty() && !parse_integer(rest) : !parse_integer(tokens_[0])) {
+      fail_at(lines_->number(), "not an OFF file: it begins with '" + std::string(tokens_[0]) +
+                                    "', not 'OFF' (or its variants) nor its counts");
+    }
+    if (keyword) {
       header.erase(header.begin());
       if (!rest.empty()) header.insert(header.begin(), rest);
-    } else if (!parse_integer(tokens_[0])) {
-      fail_at(lines.number(), "not an OFF file: it begins with '" + std::string(tokens_[0]) +
-                                  "', not 'OFF' (or its variants) nor its counts");
     }
     for (const std::string_view token : header) {
-      if (token == "BINARY") fail_at(lines.number(), "'BINARY' must follow the header keyword");
+      if (token == "BINARY") fail_at(lines_->number(), "'BINARY' must follow the header keyword");
     }
+    return keyword.value_or(Layout{});
+  }
 
-    // [Ndim] NVertices NFaces, then NEdges if on NFaces' line.
+  // [Ndim] NVertices NFaces, then NEdges if on NFaces' line; `header` holds the tokens
+  // left on the keyword's line. Returns NVertices and NFaces.
+  std::pair<std::int64_t, std::int64_t> read_counts(std::vector<std::string_view> header,
+                                                    const Layout& layout) {
     const std::size_t wanted = layout.dimension ? 3 : 2;
     std::vector<std::int64_t> counts;
     std::size_t at = 0;
@@ -148,94 +179,78 @@ class OffParser {
     }
     if (at < header.size()) count(header[at++], "edge");
     if (at < header.size()) {
-      fail_at(lines.number(), "unexpected '" + std::string(header[at]) + "' after the counts");
+      fail_at(lines_->number(), "unexpected '" + std::string(header[at]) + "' after the counts");
     }
     if (layout.dimension && counts[0] != 3) {
-      fail_at(lines.number(), "only 3-dimensional OFF is read; this one has dimension " +
-                                  std::to_string(counts[0]));
+      fail_at(lines_->number(), "only 3-dimensional OFF is read; this one has dimension " +
+                                    std::to_string(counts[0]));
     }
-    const std::int64_t vertex_count = counts[wanted - 2];
-    const std::int64_t face_count = counts[wanted - 1];
-    const auto room = static_cast<std::int64_t>(text.size() / 2);
-    soup_.vertices.reserve(static_cast<std::size_t>(std::min(vertex_count, room)));
-    soup_.faces.reserve(static_cast<std::size_t>(std::min(face_count, room)));
+    return {counts[wanted - 2], counts[wanted - 1]};
+  }
 
+  // One vertex line, in tokens_.
+  void read_text_vertex(const Layout& layout) {
     const std::size_t coordinates = layout.homogeneous ? 4 : 3;
     const std::size_t fixed = (layout.normal ? 3 : 0) + (layout.texture ? 2 : 0);
     const std::size_t least = coordinates + fixed + (layout.colour ? 1 : 0);
     const std::size_t most = coordinates + fixed + (layout.colour ? 4 : 0);
-    for (std::int64_t v = 0; v < vertex_count; ++v) {
-      if (!next_record()) {
-        fail("the file ends after " + std::to_string(v) + " of the " +
-             counted(vertex_count, "vertex", "vertices") + " its header announces (truncated?)");
-      }
-      if (tokens_.size() < least || tokens_.size() > most) {
-        fail_at(lines.number(),
-                "a vertex line here has " +
-                    (least == most ? std::to_string(least)
-                                   : std::to_string(least) + " to " + std::to_string(most)) +
-                    " numbers; this one has " + std::to_string(tokens_.size()));
-      }
-      double xyzw[4] = {0, 0, 0, 1};
-      for (std::size_t i = 0; i < tokens_.size(); ++i) {
-        const std::optional<double> x = parse_number(tokens_[i]);
-        if (!x || (i < coordinates && !std::isfinite(*x))) {
-          fail_at(lines.number(), (i < coordinates ? "coordinate '" : "'") +
+    if (tokens_.size() < least || tokens_.size() > most) {
+      fail_at(lines_->number(),
+              "a vertex line here has " +
+                  (least == most ? std::to_string(least)
+                                 : std::to_string(least) + " to " + std::to_string(most)) +
+                  " numbers; this one has " + std::to_string(tokens_.size()));
+    }
+    double xyzw[4] = {0, 0, 0, 1};
+    for (std::size_t i = 0; i < tokens_.size(); ++i) {
+      const std::optional<double> x = parse_number(tokens_[i]);
+      if (!x || (i < coordinates && !std::isfinite(*x))) {
+        fail_at(lines_->number(), (i < coordinates ? "coordinate '" : "'") +
                                       std::string(tokens_[i]) + "' is not a finite number");
-        }
-        if (i < coordinates) xyzw[i] = *x;
       }
-      soup_.vertices.push_back(point(xyzw, layout.homogeneous, lines.number()));
+      if (i < coordinates) xyzw[i] = *x;
     }
+    soup_.vertices.push_back(point(xyzw, layout.homogeneous, lines_->number()));
+  }
 
-    for (std::int64_t f = 0; f < face_count; ++f) {
-      if (!next_record()) {
-        fail("the file ends after " + std::to_string(f) + " of the " +
-             counted(face_count, "face", "faces") + " its header announces (truncated?)");
-      }
-      const std::optional<std::int64_t> k = parse_integer(tokens_[0]);
-      if (!k || *k < 0) {
-        fail_at(lines.number(),
-                "the face's vertex count '" + std::string(tokens_[0]) +
-                    "' is not a non-negative integer",
-                true);
-      }
-      const auto listed = static_cast<std::int64_t>(tokens_.size()) - 1;
-      if (listed < *k) {
-        fail_at(lines.number(),
-                "the face announces " + counted(*k, "vertex index", "vertex indices") +
-                    " but lists " + std::to_string(listed),
-                true);
-      }
-      if (listed - *k > 4) {
-        fail_at(lines.number(),
-                "the face has " + std::to_string(listed - *k) + " numbers after its " +
-                    counted(*k, "vertex index", "vertex indices") + "; a colour has at most 4",
-                true);
-      }
-      MeshFaceRecord face;
-      face.line = lines.number();
-      face.vertices.reserve(static_cast<std::size_t>(*k));
-      for (std::size_t i = 1; i < tokens_.size(); ++i) {
-        if (static_cast<std::int64_t>(i) <= *k) {
-          const std::optional<std::int64_t> index = parse_integer(tokens_[i]);
-          if (!index) {
-            fail_at(lines.number(),
-                    "vertex index '" + std::string(tokens_[i]) + "' is not an integer", true);
-          }
-          face.vertices.push_back(*index);
-        } else if (!parse_number(tokens_[i])) {
-          fail_at(lines.number(), "colour '" + std::string(tokens_[i]) + "' is not a number", true);
+  // One face line, in tokens_: its vertex count, indices and an optional colour.
+  void read_text_face() {
+    const std::size_t line = lines_->number();
+    const std::optional<std::int64_t> k = parse_integer(tokens_[0]);
+    if (!k || *k < 0) {
+      fail_at(
+          line,
+          "the face's vertex count '" + std::string(tokens_[0]) + "' is not a non-negative integer",
+          true);
+    }
+    const auto listed = static_cast<std::int64_t>(tokens_.size()) - 1;
+    if (listed < *k) {
+      fail_at(line,
+              "the face announces " + counted(*k, "vertex index", "vertex indices") +
+                  " but lists " + std::to_string(listed),
+              true);
+    }
+    if (listed - *k > 4) {
+      fail_at(line,
+              "the face has " + std::to_string(listed - *k) + " numbers after its " +
+                  counted(*k, "vertex index", "vertex indices") + "; a colour has at most 4",
+              true);
+    }
+    MeshFaceRecord face;
+    face.line = line;
+    face.vertices.reserve(static_cast<std::size_t>(*k));
+    for (std::size_t i = 1; i < tokens_.size(); ++i) {
+      if (static_cast<std::int64_t>(i) <= *k) {
+        const std::optional<std::int64_t> index = parse_integer(tokens_[i]);
+        if (!index) {
+          fail_at(line, "vertex index '" + std::string(tokens_[i]) + "' is not an integer", true);
         }
+        face.vertices.push_back(*index);
+      } else if (!parse_number(tokens_[i])) {
+        fail_at(line, "colour '" + std::string(tokens_[i]) + "' is not a number", true);
       }
-      soup_.faces.push_back(std::move(face));
     }
-    if (next_record()) {
-      fail_at(lines.number(), "more data after the " + counted(vertex_count, "vertex", "vertices") +
-                                  " and " + counted(face_count, "face", "faces") +
-                                  " the header announces");
-    }
-    return std::move(soup_);
+    soup_.faces.push_back(std::move(face));
   }
 
   glm::dvec3 point(const double (&xyzw)[4], bool homogeneous, std::size_t line) const {
