@@ -54,8 +54,9 @@ std::vector<std::vector<LitPolygon>> light_one_named(const Scene& scene,
 std::string GenerationError::format(const std::string& file, const std::string& face_id,
                                     const std::string& light_id, const std::string& problem) {
   std::string s = file.empty() ? "" : file + ": ";
-  if (!face_id.empty()) s += "face '" + face_id + "', ";
-  return s + "light '" + light_id + "': " + problem;
+  if (!face_id.empty()) s += "face '" + face_id + "'" + (light_id.empty() ? ": " : ", ");
+  if (!light_id.empty()) s += "light '" + light_id + "': ";
+  return s + problem;
 }
 
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options) {

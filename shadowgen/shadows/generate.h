@@ -70,9 +70,9 @@ class GenerationError : public std::runtime_error {
         light_id_(std::move(light_id)),
         problem_(problem) {}
 
-  const std::string& file() const { return file_; }        // empty when not known
-  const std::string& face_id() const { return face_id_; }  // empty when no face is to blame
-  const std::string& light_id() const { return light_id_; }
+  const std::string& file() const { return file_; }          // empty when not known
+  const std::string& face_id() const { return face_id_; }    // empty when no face is to blame
+  const std::string& light_id() const { return light_id_; }  // empty when no one light is
   const std::string& problem() const { return problem_; }
 
  private:

@@ -15,6 +15,7 @@
 #include "hsr/area.h"
 #include "hsr/plane_chart.h"
 #include "shadowgen/model/scene.h"
+#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen {
 namespace {
@@ -46,7 +47,9 @@ SetPieces split_by_light(const SetPieces& regions,
 
 }  // namespace
 
-std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_t face) {
+namespace {
+
+std::vector<LightRegion> regions_of(const ShadowedScene& shadowed, std::size_t face) {
   const Scene& scene = shadowed.scene;
   if (face >= scene.faces.size()) {
     throw std::invalid_argument("light_regions: face index " + std::to_string(face) +
@@ -108,6 +111,18 @@ std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_
     if (!polygons.empty()) result.push_back({set, std::move(polygons)});
   }
   return result;
+}
+
+}  // namespace
+
+std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_t face) {
+  try {
+    return regions_of(shadowed, face);
+  } catch (const clipper::SnapRoundingError& e) {
+    // Never a silently wrong region: the face is named, as generation names it.
+    throw GenerationError("", shadowed.scene.faces[face].id, "",
+                          "light-set regions not computed: " + std::string(e.what()));
+  }
 }
 
 std::string light_set_name(const Scene& scene, std::span<const std::size_t> lights) {

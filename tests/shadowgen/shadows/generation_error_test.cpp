@@ -11,6 +11,7 @@
 
 #include "clipper/clip.h"
 #include "shadowgen/shadows/generate.h"
+#include "shadowgen/shadows/light_regions.h"
 
 namespace shadowgen {
 namespace {
@@ -138,6 +139,24 @@ TEST(GenerationError, WithoutTheLimitTheSameScenesGenerate) {
   const GenerateResult result = generate_shadows(scene, threads(2));
   // The awning's shadow covers [8,10] × [3,7] of the ground.
   EXPECT_DOUBLE_EQ(lit_area(result.shadowed.lit[0][0]), 92.0);
+}
+
+// The partition by light sets (export, render) clips too: where that clip cannot settle,
+// the error names the face, with no light to blame.
+TEST(GenerationError, LightRegionsNameTheFace) {
+  Scene scene = awning_over_an_edge();
+  scene.lights.push_back(sun("sun", {0, 0, -1}));
+  const ShadowedScene shadowed = generate_shadows(scene, threads(1)).shadowed;
+  const clipper::SnapRoundLimitForTesting limit(0);
+  try {
+    (void)light_regions(shadowed, 0);
+    FAIL() << "light-set regions from a clip that did not settle";
+  } catch (const GenerationError& e) {
+    EXPECT_EQ(e.face_id(), "ground");
+    EXPECT_EQ(e.light_id(), "");
+    EXPECT_EQ(std::string(e.what()).rfind("face 'ground': light-set regions not computed", 0), 0u)
+        << e.what();
+  }
 }
 
 }  // namespace
