@@ -86,19 +86,27 @@ TEST(ProgressDisplay, ALongerLineIsBlankedWhenAShorterOneFollows) {
   stats.faces_considered = 123456789;
   display.light_done(stats);  // "..., last light 123456789 faces, ..."
   stats.faces_considered = 1;
-  display.light_done(stats);  // nine characters shorter
+  display.light_done(stats);  // eight characters shorter
   const std::string text = out.str();
   const std::size_t last = text.rfind('\r');
   const std::size_t before = text.rfind('\r', last - 1);
-  EXPECT_EQ(text.size() - last, last - before) << text;  // same width, padded with blanks
-  EXPECT_EQ(text.back(), ' ');
+  const std::string longer = text.substr(before + 1, last - before - 1);
+  const std::string shorter = text.substr(last + 1);
+  EXPECT_EQ(longer.rfind("s.json: lights 1/10, last light 123456789 faces, ", 0), 0u) << text;
+  // The shorter line, then exactly enough blanks to cover what is left of the longer one.
+  const std::size_t end = shorter.find_last_not_of(' ') + 1;
+  EXPECT_EQ(shorter.substr(0, end).rfind("s.json: lights 2/10, last light 1 faces, ", 0), 0u)
+      << text;
+  EXPECT_EQ(shorter.size(), longer.size()) << text;
+  EXPECT_GE(shorter.size() - end, 8u) << text;
+  EXPECT_EQ(text.find('\n'), std::string::npos) << text;  // still one open line
 }
 
 TEST(ProgressDisplay, SilentWithoutAStream) {
   ProgressDisplay display(nullptr, starting("scene.json", 1));
-  EXPECT_FALSE(display.callback());
-  display.light_done(LightStats{});
-  display.finish();
+  EXPECT_FALSE(display.callback());  // the generator then skips the call altogether
+  EXPECT_NO_THROW(display.light_done(LightStats{}));
+  EXPECT_NO_THROW(display.finish());
 }
 
 TEST(ProgressDisplay, TheDestructorEndsAnOpenLine) {
@@ -107,7 +115,10 @@ TEST(ProgressDisplay, TheDestructorEndsAnOpenLine) {
     ProgressDisplay display(&out, starting("scene.json", 3));
     display.light_done(LightStats{});
   }  // as when generation throws
-  EXPECT_EQ(out.str().back(), '\n');
+  const std::string text = out.str();
+  EXPECT_EQ(text.rfind("\rscene.json: lights 0/3, ", 0), 0u) << text;
+  EXPECT_NE(text.find("\rscene.json: lights 1/3, last light 0 faces, "), std::string::npos) << text;
+  EXPECT_EQ(text.find('\n'), text.size() - 1) << text;  // one newline, at the very end
 }
 
 }  // namespace
