@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
-# Builds the clip fuzzer (CMake preset "fuzz": clang, libFuzzer, ASan, UBSan) and runs it
-# on a scratch copy of the seed corpus, so the checked-in corpus never changes.
+# Builds the fuzz targets (CMake preset "fuzz": clang, libFuzzer, ASan, UBSan) and runs
+# each on a scratch copy of its seed corpus, so the checked-in corpora never change:
+#   clip     clip_fuzzer (clipper/clip.h), corpus/clip/;
+#   readers  reader_fuzzer (scene JSON, OBJ, STL, OFF, PLY, the database), corpus/readers/.
 #
 #   tests/fuzz/run_fuzz.sh [SECONDS] [LIBFUZZER_FLAG...]      (default 60 seconds)
 #
-# Exits non-zero when the fuzzer finds a crash; the crashing input is kept in
-# build/fuzz/artifacts/ (the fuzzer prints it decoded as well). Extra flags go to
-# libFuzzer, e.g. -jobs=2 or -only_ascii=1; SHADOWGEN_FUZZ_SKIP=name,... in the
-# environment skips checks that guard a bug already reported (clip_fuzzer.cpp).
+# SECONDS is the whole run, split evenly between the targets, which run one after the
+# other. Exits non-zero when a fuzzer finds a crash (both run all the same); the crashing
+# input is kept in build/fuzz/artifacts/, named clip-* or readers-* (the fuzzer prints it
+# as well). Extra flags go to libFuzzer, for every target, e.g. -jobs=2 or -only_ascii=1.
+# Environment:
+#   SHADOWGEN_FUZZ_TARGETS="clip readers"   the targets to run, in this order;
+#   SHADOWGEN_FUZZ_SKIP=name,...            skips checks that guard a bug already reported
+#                                           (clip_fuzzer.cpp, reader_fuzzer.cpp);
+#   SHADOWGEN_FUZZ_BUILD_DIR=DIR            build there instead of build/fuzz.
 set -euo pipefail
 
 seconds=${1:-60}
@@ -18,22 +25,54 @@ esac
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 cd "$root"
-cmake --preset fuzz
-cmake --build --preset fuzz -j2 --target clip_fuzzer
+build=${SHADOWGEN_FUZZ_BUILD_DIR:-build/fuzz}
+read -r -a targets <<<"${SHADOWGEN_FUZZ_TARGETS:-clip readers}"
+binaries=()
+for target in "${targets[@]}"; do
+  case $target in
+    clip) binaries+=(clip_fuzzer) ;;
+    readers) binaries+=(reader_fuzzer) ;;
+    *) echo "run_fuzz.sh: unknown target '$target' (clip, readers)" >&2; exit 2 ;;
+  esac
+done
+if [ "${#targets[@]}" -eq 0 ]; then
+  echo "run_fuzz.sh: SHADOWGEN_FUZZ_TARGETS names no target" >&2
+  exit 2
+fi
 
-work=$(mktemp -d "${TMPDIR:-/tmp}/clip_fuzz.XXXXXX")
+cmake --preset fuzz -B "$build"
+cmake --build "$build" -j2 --target "${binaries[@]}"
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/shadowgen_fuzz.XXXXXX")
 trap 'rm -rf "$work"' EXIT
-cp -R tests/fuzz/corpus/clip "$work/corpus"
-artifacts=build/fuzz/artifacts
+artifacts=$build/artifacts
 mkdir -p "$artifacts"
+share=$((seconds / ${#targets[@]}))
+[ "$share" -ge 1 ] || share=1
 
 status=0
-build/fuzz/tests/fuzz/clip_fuzzer "$work/corpus" \
-  -max_total_time="$seconds" -max_len=2048 -timeout=30 -print_final_stats=1 \
-  -artifact_prefix="$artifacts/" "$@" || status=$?
+failed=()
+for target in "${targets[@]}"; do
+  case $target in
+    # -max_len: the clip fuzzer's input format reads at most a few hundred bytes; the
+    # readers take a scene or mesh of up to 64 KiB. -timeout: seconds for one input.
+    clip) binary=clip_fuzzer corpus=clip flags=(-max_len=2048 -timeout=30) ;;
+    readers) binary=reader_fuzzer corpus=readers flags=(-max_len=65536 -timeout=10) ;;
+  esac
+  echo "== run_fuzz.sh: $binary for $share s"
+  cp -R "tests/fuzz/corpus/$corpus" "$work/$corpus"
+  one=0
+  "$build/tests/fuzz/$binary" "$work/$corpus" \
+    -max_total_time="$share" "${flags[@]}" -print_final_stats=1 \
+    -artifact_prefix="$artifacts/$target-" "$@" || one=$?
+  if [ "$one" -ne 0 ]; then
+    status=$one
+    failed+=("$binary (status $one)")
+  fi
+done
 
 if [ "$status" -ne 0 ]; then
-  echo "run_fuzz.sh: the fuzzer failed (status $status); crashing inputs in $artifacts/:" >&2
+  echo "run_fuzz.sh: failed: ${failed[*]}; crashing inputs in $artifacts/:" >&2
   ls -t "$artifacts" >&2 || true
 fi
 exit "$status"

@@ -1,0 +1,372 @@
+#!/usr/bin/env python3
+"""Writes the reader fuzzer's seed corpus, tests/fuzz/corpus/readers/.
+
+Each seed is one fuzzer input (reader_fuzzer.cpp): a header byte that selects the reader
+(0 scene, 1 OBJ, 2 STL, 3 OFF, 4 PLY, 5 database; +6 for --strict, +12 to generate the
+shadows of a tiny scene), then the content. A scene seed may carry one file after a NUL
+byte: its name, a NUL byte, its bytes.
+
+This script writes the seeds it can make on its own, named <kind>-<what>:
+  - the example scenes (examples/scenes/*.json, chairs.json with its OBJ attached) and
+    their mesh (examples/scenes/models/*);
+  - every clipper regression (tests/clipper/regressions/*.wkt) as a scene: the subject
+    under the clip and a sun straight above, shadows asked for;
+  - small meshes of every format, well formed or not (ASCII and binary STL and PLY);
+  - databases: a few written here, and, with --shadowgen BIN, the database BIN generates
+    from examples/scenes/courtyard.json.
+The seeds named <kind>-test-* and <kind>-cli-* hold the malformed inputs of the tables in
+tests/shadowgen/scene/scene_reader_test.cpp and tests/cli/malformed_cli_test.cpp (each
+scene with the mesh file it names attached); they were dumped from those tables once and
+are kept as they are (this script leaves them alone), as are the seeds named <kind>-fuzz-*,
+inputs the fuzzer found that once broke an invariant.
+
+    make_reader_corpus.py [--shadowgen BIN]   write the seeds (other files are left alone)
+    make_reader_corpus.py --check             exit 1 if a seed it writes is missing or
+                                              differs (the database from BIN is not checked)
+"""
+
+import argparse
+import pathlib
+import struct
+import subprocess
+import sys
+import tempfile
+
+SCENE, OBJ, STL, OFF, PLY, DATABASE = range(6)
+STRICT = 6
+GENERATE = 12
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+CORPUS = ROOT / "tests" / "fuzz" / "corpus" / "readers"
+
+
+def seed(kind, content, attachment=None):
+    data = bytes([kind]) + (content.encode() if isinstance(content, str) else content)
+    if attachment is not None:
+        name, body = attachment
+        data += b"\0" + name.encode() + b"\0" + (body.encode() if isinstance(body, str) else body)
+    return data
+
+
+def binary_stl(triangles, header=b"solid binary"):
+    out = header.ljust(80, b" ") + struct.pack("<I", len(triangles))
+    for t in triangles:
+        out += struct.pack("<3f", 0, 0, 1) + struct.pack("<9f", *t) + b"\0\0"
+    return out
+
+
+def binary_ply(vertices, faces):
+    head = (
+        "ply\nformat binary_little_endian 1.0\n"
+        f"element vertex {len(vertices)}\nproperty float x\nproperty float y\nproperty float z\n"
+        f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n"
+    ).encode()
+    body = b"".join(struct.pack("<3f", *v) for v in vertices)
+    for f in faces:
+        body += struct.pack("<B", len(f)) + struct.pack(f"<{len(f)}i", *f)
+    return head + body
+
+
+CUBE_OBJ = """# a unit cube, outward faces
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+"""
+
+ASCII_STL = """solid thing
+  facet normal 0 0 1
+    outer loop
+      vertex 0 0 0
+      vertex 1 0 0
+      vertex 0 1 0
+    endloop
+  endfacet
+  FACET NORMAL 0 -1 0
+    OUTER LOOP
+      VERTEX 0 0 0
+      VERTEX 1 0 0
+      VERTEX 0 0 1.1
+    ENDLOOP
+  ENDFACET
+endsolid thing
+"""
+
+ASCII_PLY = """ply
+format ascii 1.0
+element vertex 4
+property float x
+property float y
+property float z
+element face 3
+property list uchar int vertex_indices
+end_header
+0 0 0
+1 0 0
+0 1 0
+0 0 1
+3 0 0 1
+3 0 1 2
+4 0 1 2 3
+"""
+
+DB_HEAD = """{"format": "shadowgen-shadowed/1", "views": [],
+ "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -1],
+             "intensity": [1, 1, 1]}],
+ "faces": ["""
+DB_GOOD_FACE = """{"id": "good", "source_file": "s.json",
+   "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}], "lit": {}}"""
+
+
+def parse_wkt(text):
+    """POLYGON or MULTIPOLYGON text as a list of polygons, each a list of rings (outer
+    first), each a list of (x, y) strings, the closing repeat of the first point dropped."""
+    text = text.strip()
+    kind, _, body = text.partition("(")
+    body = "(" + body
+    depth, items, current = 0, [], []
+    stack = [items]
+    token = ""
+    for c in body:
+        if c == "(":
+            new = []
+            stack[-1].append(new)
+            stack.append(new)
+        elif c in ",)":
+            if token.strip():
+                stack[-1].append(tuple(token.split()))
+            token = ""
+            if c == ")":
+                stack.pop()
+        else:
+            token += c
+    geometry = items[0]
+    polygons = geometry if kind.strip().upper() == "MULTIPOLYGON" else [geometry]
+    return [[ring[:-1] if ring[0] == ring[-1] else ring for ring in polygon]
+            for polygon in polygons]
+
+
+def clip_regression_scene(path):
+    """A clipper regression (tests/clipper/regressions/*.wkt: a subject and a clip) as a
+    scene: the subject's polygons at z = 0 under the clip's at z = 1, and a sun straight
+    above, so that the clip's shadow on the subject is that very clip."""
+    geometries = [line for line in path.read_text().splitlines()
+                  if line.strip() and not line.startswith("#")]
+    faces = []
+    for name, z, geometry in (("s", "0", geometries[0]), ("c", "1", geometries[1])):
+        for i, polygon in enumerate(parse_wkt(geometry)):
+            rings = []
+            for k, ring in enumerate(polygon):
+                twice_area = sum(float(a[0]) * float(b[1]) - float(b[0]) * float(a[1])
+                                 for a, b in zip(ring, ring[1:] + ring[:1]))
+                if (twice_area < 0) == (k == 0):  # outer counter-clockwise from above
+                    ring = ring[::-1]
+                rings.append("[" + ",".join(f"[{x},{y},{z}]" for x, y in ring) + "]")
+            face = f'{{"id": "{name}{i}", "outer": {rings[0]}'
+            if len(rings) > 1:
+                face += ', "holes": [' + ", ".join(rings[1:]) + "]"
+            faces.append(face + "}")
+    return ('{"format": "shadowgen-scene/1",\n "polygons": [\n  ' + ",\n  ".join(faces) +
+            '],\n "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -1]}]}\n')
+
+
+def db_faces(face):
+    return DB_HEAD + DB_GOOD_FACE + "," + face + "]}"
+
+
+def seeds():
+    out = {}
+    # The examples.
+    for scene in sorted((ROOT / "examples" / "scenes").glob("*.json")):
+        text = scene.read_text()
+        attachment = None
+        if scene.name == "chairs.json":
+            attachment = ("models/chair.obj", (ROOT / "examples/scenes/models/chair.obj").read_bytes())
+        kind = SCENE + GENERATE if scene.stem == "courtyard" else SCENE
+        out[f"scene-example-{scene.stem}"] = seed(kind, text, attachment)
+    for model in sorted((ROOT / "examples" / "scenes" / "models").iterdir()):
+        kind = {".obj": OBJ, ".stl": STL, ".off": OFF, ".ply": PLY}[model.suffix.lower()]
+        out[f"{model.suffix[1:].lower()}-example-{model.stem}"] = seed(kind, model.read_bytes())
+
+    # The clipper's regressions, as scenes whose shadows are those clips.
+    for regression in sorted((ROOT / "tests" / "clipper" / "regressions").glob("*.wkt")):
+        out[f"scene-clip-regression-{regression.stem}"] = seed(
+            SCENE + GENERATE, clip_regression_scene(regression))
+
+    # A scene with every kind of entry (the spec's example), its mesh attached.
+    out["scene-spec-example"] = seed(SCENE + GENERATE, """{
+  "format": "shadowgen-scene/1",
+  "comment": "unknown keys are extensions",
+  "polygons": [
+    { "id": "wall", "outer": [[0,0,0],[10,0,0],[10,0,3],[0,0,3]],
+      "holes": [ [[2,0,1],[2,0,2],[4,0,2],[4,0,1]] ] }
+  ],
+  "meshes": [
+    { "id": "box", "file": "models/box.obj",
+      "transform": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]] }
+  ],
+  "lights": [
+    { "id": "sun",  "type": "directional", "direction": [-0.3, 0.2, -1.0] },
+    { "id": "lamp", "type": "point", "position": [4, 5, 2.5], "intensity": [1, 0.5, 0.25],
+      "range": { "falloff_start": 5.0, "end": 20.0, "exponent": 2 } }
+  ],
+  "views": [
+    { "id": "main", "eye": [20, -15, 10], "target": [5, 5, 0], "up": [0, 0, 1], "fov_deg": 45 }
+  ]
+}""", ("models/box.obj", CUBE_OBJ))
+    # Every mesh format through a scene, with a projective transform.
+    for ext, body in (("obj", CUBE_OBJ), ("stl", ASCII_STL), ("ply", ASCII_PLY),
+                      ("off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")):
+        out[f"scene-mesh-{ext}-projective"] = seed(SCENE + GENERATE, """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "ground", "outer": [[-5,-5,-1],[5,-5,-1],[5,5,-1],[-5,5,-1]]}],
+ "meshes": [{"id": "m", "file": "m.%s",
+             "transform": [[2,0,0,1],[0,2,0,0],[0,0,2,0],[0,0,0.1,1]]}],
+ "lights": [{"id": "sun", "type": "directional", "direction": [0.2, 0.1, -1]}]}""" % ext,
+                                                     (f"m.{ext}", body))
+    out["scene-strict-non-planar"] = seed(SCENE + STRICT, """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "bent", "outer": [[0,0,0],[1,0,0],[1,1,0.5],[0,1,0]]}], "lights": []}""")
+    out["scene-non-planar-split"] = seed(SCENE + GENERATE, """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "bent", "outer": [[0,0,0],[1,0,0],[1,1,0.5],[0,1,0]]},
+              {"id": "floor", "outer": [[-2,-2,-1],[3,-2,-1],[3,3,-1],[-2,3,-1]],
+               "holes": [[[0,0,-1],[0,1,-1],[1,1,-1],[1,0,-1]]]}],
+ "lights": [{"id": "sun", "type": "directional", "direction": [0.3, 0.2, -1]},
+            {"id": "lamp", "type": "point", "position": [0.5, 0.5, 2]}]}""")
+    out["scene-extreme-coordinates"] = seed(SCENE, """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "far", "outer": [[1e60,0,0],[1.0000000000000002e60,0,0],[1e60,1e50,0]]},
+              {"id": "tiny", "outer": [[0,0,1e-300],[1e-100,0,1e-300],[0,1e-100,1e-300]]},
+              {"id": "big", "outer": [[-1e70,-1e70,-5],[1e70,-1e70,-5],[1e70,1e70,-5]]}],
+ "lights": [{"id": "sun", "type": "directional", "direction": [1e-300, 0, -1e-300]}],
+ "views": [{"id": "v", "eye": [0, 0, 1e100], "target": [0, 0, 0], "up": [0, 1, 0],
+            "fov_deg": 1e-10}]}""")
+
+    # Meshes, one per format and a few broken ones.
+    out["obj-cube"] = seed(OBJ + GENERATE, CUBE_OBJ)
+    out["obj-negative-indices-and-slashes"] = seed(OBJ, """v 0 0 0
+v 1 0 0 1
+v 1 1 0
+v 0 1 0
+vt 0 0
+vn 0 0 1
+o thing
+g group
+s off
+usemtl stone
+f -4/1/1 -3//1 -2/1 -1
+f 1 2 3 \\
+4
+l 1 2
+""")
+    out["obj-degenerate-and-pinched"] = seed(OBJ, "v 0 0 0\nv 2 0 0\nv 1 1 0\nv 2 2 0\nv 0 2 0\n"
+                                               "f 1 2 3 4 5 3\nf 1 1 2\nf 1 2 2\n")
+    out["obj-huge-coordinate"] = seed(OBJ, "v 1 2 1e999\nv 0 0 0\nv 1 0 0\nf 1 2 3\n")
+    out["obj-exponents"] = seed(OBJ, "v 1e-320 0 0\nv 1e300 0 0\nv 0 -0x1p3 1.5E+2\nf 1 2 3\n")
+    out["stl-ascii"] = seed(STL + GENERATE, ASCII_STL)
+    out["stl-binary"] = seed(STL, binary_stl([(0, 0, 0, 1, 0, 0, 0, 1, 0),
+                                              (0, 0, 0, 0, 0, 0, 1, 1, 1),
+                                              (0, 0, 0, 0.5, 0, 0, 0.25, 0, 0)]))
+    out["stl-binary-count-too-large"] = seed(STL, binary_stl([(0, 0, 0, 1, 0, 0, 0, 1, 0)])[:80]
+                                             + struct.pack("<I", 1000)
+                                             + binary_stl([(0, 0, 0, 1, 0, 0, 0, 1, 0)])[84:])
+    out["stl-ascii-truncated"] = seed(STL, ASCII_STL[:120])
+    out["off-square"] = seed(OFF + GENERATE, "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+    out["off-tenth"] = seed(OFF, "OFF\n3 1 0\n0.1 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+    out["off-comments-and-colours"] = seed(OFF, "OFF # comment\n# a comment line\n\n4 2 5\n"
+                                                "0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+                                                "3 0 1 2 255 0 0\n3 0 2 3 0.5 0.5 0.5 1\n")
+    out["off-header-announces-more"] = seed(OFF, "OFF\n100 50 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+    out["off-index-out-of-range"] = seed(OFF, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")
+    out["ply-ascii"] = seed(PLY, ASCII_PLY)
+    out["ply-binary"] = seed(PLY + GENERATE, binary_ply([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)],
+                                             [(0, 1, 2), (0, 2, 3)]))
+    out["ply-ascii-truncated"] = seed(PLY, ASCII_PLY[: ASCII_PLY.index("end_header") + 30])
+    out["ply-double-coordinates"] = seed(PLY, """ply
+format ascii 1.0
+comment doubles and an extra property
+element vertex 3
+property double x
+property double y
+property double z
+property uchar red
+element face 1
+property list uchar uint vertex_indices
+end_header
+0 0 0 255
+1e30 0 0 0
+0 1 0 7
+3 0 1 2
+""")
+
+    # Databases.
+    out["database-empty"] = seed(DATABASE, '{"format": "shadowgen-shadowed/1", "lights": [], '
+                                           '"views": [], "faces": []}')
+    out["database-lit"] = seed(DATABASE, """{"format": "shadowgen-shadowed/1",
+ "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -1], "intensity": [1, 1, 1]},
+            {"id": "lamp", "type": "point", "position": [0, 0, 4], "intensity": [1, 0.5, 0],
+             "range": {"falloff_start": 1, "end": 20, "exponent": 2}}],
+ "views": [{"id": "main", "eye": [5, -5, 5], "target": [0, 0, 0], "up": [0, 0, 1], "fov_deg": 45}],
+ "faces": [{"id": "floor", "source_file": "s.json",
+   "parts": [{"outer": [[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 0]],
+              "holes": [[[1, 1, 0], [1, 2, 0], [2, 2, 0], [2, 1, 0]]]}],
+   "lit": {"sun": [{"outer": [[0, 0, 0], [4, 0, 0], [4, 2, 0], [0, 2, 0]], "holes": [], "part": 0}],
+           "lamp": [{"outer": [[0, 0, 0], [4, 0, 0], [4, 4, 0]], "holes": []}]},
+   "colour": "ignored"}]}""")
+    out["database-truncated"] = seed(DATABASE, "{")
+    out["database-scene-format"] = seed(DATABASE, '{"format": "shadowgen-scene/1"}')
+    out["database-bad-vertex"] = seed(DATABASE, db_faces("""{"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1]], "holes": []}], "lit": {}}"""))
+    out["database-overflow"] = seed(DATABASE, db_faces("""{"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 1e400]], "holes": []}], "lit": {}}"""))
+    out["database-unknown-light"] = seed(DATABASE, db_faces("""{"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}],
+      "lit": {"moon": []}}"""))
+    out["database-short-hole"] = seed(DATABASE, db_faces("""{"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}],
+      "lit": {"sun": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": [[[0, 0, 0]]]}]}}"""))
+    out["database-duplicate-face"] = seed(DATABASE, db_faces(DB_GOOD_FACE))
+    out["database-range-without-exponent"] = seed(DATABASE, """{"format": "shadowgen-shadowed/1",
+ "views": [], "faces": [], "lights": [{"id": "lamp", "type": "point", "position": [0, 0, 1],
+ "intensity": [1, 1, 1], "range": {"falloff_start": 1, "end": 2}}]}""")
+    return out
+
+
+def database_from_cli(shadowgen):
+    with tempfile.TemporaryDirectory() as work:
+        target = pathlib.Path(work) / "courtyard.shadowed.json"
+        subprocess.run([shadowgen, "generate", str(ROOT / "examples/scenes/courtyard.json"),
+                        "-o", str(target), "--quiet"], check=True)
+        return seed(DATABASE, target.read_bytes())
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--shadowgen", help="the shadowgen executable, for the database seed")
+    args = parser.parse_args()
+    wanted = seeds()
+    if args.check:
+        stale = [n for n, d in wanted.items()
+                 if not (CORPUS / n).is_file() or (CORPUS / n).read_bytes() != d]
+        for name in stale:
+            print(f"stale or missing: {CORPUS / name}", file=sys.stderr)
+        return 1 if stale else 0
+    if args.shadowgen:
+        wanted["database-example-courtyard"] = database_from_cli(args.shadowgen)
+    CORPUS.mkdir(parents=True, exist_ok=True)
+    for name, data in wanted.items():
+        (CORPUS / name).write_bytes(data)
+    print(f"wrote {len(wanted)} seeds to {CORPUS}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
