@@ -6,10 +6,10 @@
 #include <string>
 
 #include "cli/command.h"
-#include "clipper/clip.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/obj_export.h"
+#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -41,37 +41,33 @@ void run_export(const ExportArgs& args) {
   ObjFiles files;
   try {
     files = obj_export(shadowed, mtl_path.filename().string());
-  } catch (const clipper::SnapRoundingError&) {
-    throw;  // not the input's fault (main.cpp)
-  } catch (const std::runtime_error& e) {
-    throw InputError(args.input, "", e.what());
+  } catch (const GenerationError& e) {
+    throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
   }
   // Both texts are complete before either file is touched, and written as one set: the
   // MTL first, the OBJ that names it last, so a failed run leaves both as they were.
   write_files_atomically({{mtl_path, files.mtl}, {obj_path, files.obj}});
 }
 
+void add_export_options(CLI::App& command, ExportArgs& args) {
+  add_input_option(command, args.input);
+  command
+      .add_option("--obj", args.obj, "OBJ file to write (replaced whole); the MTL goes next to it")
+      ->required();
+  add_reading_options(command, args.reading);
+}
+
 }  // namespace
 
 Command add_export_command(CLI::App& app) {
-  auto args = std::make_shared<ExportArgs>();
-  CLI::App* command = app.add_subcommand(
-      "export",
+  return make_command<ExportArgs>(
+      app, "export",
       "Write the shadowed scene as a Wavefront OBJ and its MTL (same stem, \".mtl\", next to "
       "the OBJ): every face split into the regions lit by the same set of lights, grouped by "
       "face id, one material per light set (\"shadow\", \"sun\", \"sun+lamp\"; shadow grey "
       "0.2, lit parts lighter). A scene is generated first; a shadowed database is read as "
-      "it is.");
-  command
-      ->add_option("input", args->input,
-                   "scene (shadowgen-scene/1) or shadowed database (shadowgen-shadowed/1)")
-      ->required();
-  command
-      ->add_option("--obj", args->obj,
-                   "OBJ file to write (replaced whole); the MTL goes next to it")
-      ->required();
-  add_reading_options(*command, args->reading);
-  return {command, [args] { run_export(*args); }};
+      "it is.",
+      add_export_options, run_export);
 }
 
 }  // namespace shadowgen::cli

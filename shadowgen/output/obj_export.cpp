@@ -15,6 +15,7 @@
 #include "clipper/triangulate.h"
 #include "hsr/area.h"
 #include "hsr/plane_chart.h"
+#include "shadowgen/shadows/generate.h"
 #include "shadowgen/shadows/light_regions.h"
 
 namespace shadowgen {
@@ -170,9 +171,10 @@ void append_face(std::string& obj, const Scene& scene, const Face& face,
       const hsr::Plane3& plane = planes[lit.part];
       const std::size_t normal = block.normal(plane.normal);
       if (!append_triangles(faces, block, lit.polygon, hsr::chart_facing(plane.normal), normal)) {
-        throw std::runtime_error("face '" + face.id + "': a region of light set '" +
-                                 light_set_name(scene, region.lights) +
-                                 "' could not be split into triangles");
+        // Not the input's fault: valid regions always triangulate.
+        throw GenerationError("", face.id, "",
+                              "a region of light set '" + light_set_name(scene, region.lights) +
+                                  "' could not be split into triangles");
       }
     }
   }
