@@ -408,8 +408,10 @@ PartLit ShadowOracle::Impl::lit_part(const Part& f, const Light& light,
     }
   };
 
+  // Every other part occludes, also one beyond the light's range.end: the range only
+  // drops receivers, never the shadows on a face that reaches inside it.
   for (const Part& o : parts) {
-    if (&o == &f || o.plane.degenerate || dropped[o.face]) continue;
+    if (&o == &f || o.plane.degenerate) continue;
     const ExactPlane& op = o.plane;
     // A light in O's plane: O is edge-on to it and blocks nothing.
     if (point ? CGAL::is_zero(op.side(position)) : CGAL::is_zero(dot(op.n, direction))) continue;

@@ -25,9 +25,9 @@
 //     infinity);
 //   - lit(F, L) = F minus the union of the shadows, by CGAL's Boolean set operations.
 //
-// A face wholly beyond a point light's range.end is dropped for that light, as the spec
-// says ("never processed for it"): it receives nothing and casts nothing. (Whatever it
-// would shadow lies beyond it, so beyond range.end too, where the light gives nothing.)
+// A face wholly beyond a point light's range.end receives nothing from that light, as the
+// spec says, but it still casts shadows: a face that reaches inside range.end gets its
+// whole lit region, the shadows of occluders beyond range.end included.
 
 #include <cstddef>
 #include <memory>
