@@ -25,6 +25,13 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
                             : "do not print reading warnings");
 }
 
+void add_input_option(CLI::App& command, std::string& path) {
+  command
+      .add_option("input", path,
+                  "scene (shadowgen-scene/1) or shadowed database (shadowgen-shadowed/1)")
+      ->required();
+}
+
 CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::string& what) {
   return command.add_option("-o,--output", path, what);
 }

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -29,6 +30,17 @@ struct Command {
   std::function<void()> run;
 };
 
+// A subcommand `name` on `app`: `add_options` declares its options on arguments kept alive
+// with the run, and `run` runs it on them once they are parsed.
+template <class Args>
+Command make_command(CLI::App& app, const std::string& name, const std::string& description,
+                     void (*add_options)(CLI::App&, Args&), void (*run)(const Args&)) {
+  auto args = std::make_shared<Args>();
+  CLI::App* command = app.add_subcommand(name, description);
+  add_options(*command, *args);
+  return {command, [args, run] { run(*args); }};
+}
+
 Command add_generate_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_export_command(CLI::App& app);
@@ -44,6 +56,9 @@ struct ReadingArgs {
 // --strict, --threads and -q/--quiet on `command`; `progress`: the subcommand shows a
 // progress line, which --quiet also silences.
 void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress = false);
+
+// The required positional "input" on `command`: a scene or a shadowed database.
+void add_input_option(CLI::App& command, std::string& path);
 
 // -o/--output on `command`, described as naming `what`.
 CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::string& what);

@@ -119,24 +119,26 @@ void run_generate(const GenerateArgs& args) {
   }
 }
 
-}  // namespace
-
-Command add_generate_command(CLI::App& app) {
-  auto args = std::make_shared<GenerateArgs>();
-  CLI::App* command = app.add_subcommand(
-      "generate",
-      "Compute the lit detail polygons of every (face, light) of a scene and write the "
-      "shadowed database (shadowgen-shadowed/1). Several scenes are done in turn, each "
-      "written before the next is read; a bad one stops the run with exit code 1, leaving "
-      "the databases already written. On a terminal a progress line is shown on stderr.");
-  command->add_option("scene", args->scenes, "scene files (shadowgen-scene/1), one or more")
+void add_generate_options(CLI::App& command, GenerateArgs& args) {
+  command.add_option("scene", args.scenes, "scene files (shadowgen-scene/1), one or more")
       ->required();
-  add_output_option(*command, args->output,
+  add_output_option(command, args.output,
                     "one scene: the shadowed database to write; several scenes: a folder "
                     "(made when missing) that gets NAME.shadowed.json for each scene NAME.json")
       ->required();
-  add_reading_options(*command, args->reading, /*progress=*/true);
-  return {command, [args] { run_generate(*args); }};
+  add_reading_options(command, args.reading, /*progress=*/true);
+}
+
+}  // namespace
+
+Command add_generate_command(CLI::App& app) {
+  return make_command<GenerateArgs>(
+      app, "generate",
+      "Compute the lit detail polygons of every (face, light) of a scene and write the "
+      "shadowed database (shadowgen-shadowed/1). Several scenes are done in turn, each "
+      "written before the next is read; a bad one stops the run with exit code 1, leaving "
+      "the databases already written. On a terminal a progress line is shown on stderr.",
+      add_generate_options, run_generate);
 }
 
 }  // namespace shadowgen::cli

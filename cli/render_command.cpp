@@ -133,24 +133,26 @@ void add_camera_options(CLI::App& command, RenderArgs& args) {
       ->needs(ortho);
 }
 
+void add_render_options(CLI::App& command, RenderArgs& args) {
+  command.add_option("database", args.database, "shadowed database (shadowgen-shadowed/1)")
+      ->required();
+  add_camera_options(command, args);
+  command.add_option("--svg", args.svg, "SVG file to write")->required();
+  command.add_option("--width", args.width, "picture width in pixels (default 800)")
+      ->check(CLI::Range(1, 1 << 20));
+  command.add_option("--height", args.height, "picture height in pixels (default 600)")
+      ->check(CLI::Range(1, 1 << 20));
+}
+
 }  // namespace
 
 Command add_render_command(CLI::App& app) {
-  auto args = std::make_shared<RenderArgs>();
-  CLI::App* command = app.add_subcommand(
-      "render",
+  return make_command<RenderArgs>(
+      app, "render",
       "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
       "eye, each visible face split by the lights reaching it, flat shaded. Reads only the "
-      "database; no shadows are recomputed.");
-  command->add_option("database", args->database, "shadowed database (shadowgen-shadowed/1)")
-      ->required();
-  add_camera_options(*command, *args);
-  command->add_option("--svg", args->svg, "SVG file to write")->required();
-  command->add_option("--width", args->width, "picture width in pixels (default 800)")
-      ->check(CLI::Range(1, 1 << 20));
-  command->add_option("--height", args->height, "picture height in pixels (default 600)")
-      ->check(CLI::Range(1, 1 << 20));
-  return {command, [args] { run_render(*args); }};
+      "database; no shadows are recomputed.",
+      add_render_options, run_render);
 }
 
 }  // namespace shadowgen::cli

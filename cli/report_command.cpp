@@ -48,10 +48,7 @@ Command add_report_command(CLI::App& app) {
       app.add_subcommand("report",
                          "Area, lit area and lit fraction per (face, light). A scene is generated "
                          "first; a shadowed database is read as it is.");
-  command
-      ->add_option("input", args->input,
-                   "scene (shadowgen-scene/1) or shadowed database (shadowgen-shadowed/1)")
-      ->required();
+  add_input_option(*command, args->input);
   command
       ->add_option("--format", args->format,
                    "csv (default; the spec's rows), json (rows and totals) or table (totals "

@@ -39,23 +39,18 @@ JsonWriter& JsonWriter::begin_array(Layout layout) {
   return *this;
 }
 
-JsonWriter& JsonWriter::end_object() {
+JsonWriter& JsonWriter::close(char bracket) {
   assert(!open_.empty() && !after_key_);
   const Open open = open_.back();
   open_.pop_back();
   if (open.layout == Layout::kLines && !open.empty) newline(open_.size());
-  out_ += '}';
+  out_ += bracket;
   return *this;
 }
 
-JsonWriter& JsonWriter::end_array() {
-  assert(!open_.empty() && !after_key_);
-  const Open open = open_.back();
-  open_.pop_back();
-  if (open.layout == Layout::kLines && !open.empty) newline(open_.size());
-  out_ += ']';
-  return *this;
-}
+JsonWriter& JsonWriter::end_object() { return close('}'); }
+
+JsonWriter& JsonWriter::end_array() { return close(']'); }
 
 JsonWriter& JsonWriter::key(std::string_view key) {
   assert(!open_.empty() && !after_key_);

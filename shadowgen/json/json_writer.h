@@ -57,6 +57,8 @@ class JsonWriter {
   // and the indent.
   void separate();
   void newline(std::size_t depth);
+  // Ends the innermost open object or array with `bracket`.
+  JsonWriter& close(char bracket);
 
   std::string out_;
   std::vector<Open> open_;

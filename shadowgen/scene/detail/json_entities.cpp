@@ -82,12 +82,19 @@ std::string read_id(JsonObject& entry) {
   return id;
 }
 
+// The entry's id, claimed in `ids` for a `kind` ("light", "view") and naming the entry in
+// later errors.
+std::string read_claimed_id(JsonObject& entry, IdRegistry& ids, const std::string& kind) {
+  std::string id = read_id(entry);
+  ids.claim(id, "another " + kind, entry.get("id"));
+  entry.name(kind + " '" + id + "'", id);
+  return id;
+}
+
 Light read_light(const JsonValue& value, IdRegistry& ids, Source source) {
   JsonObject entry = value.object();
   Light light;
-  light.id = read_id(entry);
-  ids.claim(light.id, "another light", entry.get("id"));
-  entry.name("light '" + light.id + "'", light.id);
+  light.id = read_claimed_id(entry, ids, "light");
   read_light_kind(entry, light, source);
   if (const std::optional<JsonValue> intensity = member(entry, "intensity", source)) {
     light.intensity = intensity->vec3();
@@ -102,9 +109,7 @@ Light read_light(const JsonValue& value, IdRegistry& ids, Source source) {
 ViewSpec read_view(const JsonValue& value, IdRegistry& ids, Source source) {
   JsonObject entry = value.object();
   ViewSpec view;
-  view.id = read_id(entry);
-  ids.claim(view.id, "another view", entry.get("id"));
-  entry.name("view '" + view.id + "'", view.id);
+  view.id = read_claimed_id(entry, ids, "view");
   view.eye = entry.get("eye").vec3();
   view.target = entry.get("target").vec3();
   const std::optional<JsonValue> up = member(entry, "up", source);

@@ -83,4 +83,16 @@ std::optional<std::int64_t> parse_integer(std::string_view token) {
   return value;
 }
 
+std::string MeshParser::face_id() const {
+  return mesh_id_ + "/" + std::to_string(soup_.faces.size());
+}
+
+void MeshParser::fail(const std::string& what, bool in_face) const {
+  throw InputError(file_, in_face ? face_id() : "", what);
+}
+
+void MeshParser::fail_at(std::size_t line, const std::string& what, bool in_face) const {
+  fail("line " + std::to_string(line) + ": " + what, in_face);
+}
+
 }  // namespace shadowgen::detail

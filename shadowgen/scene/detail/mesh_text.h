@@ -5,10 +5,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "mesh_reader.h"
 
 namespace shadowgen::detail {
 
@@ -47,5 +50,24 @@ std::optional<double> parse_number(std::string_view token);
 
 // The whole token as an integer (a leading '+' allowed); nullopt otherwise.
 std::optional<std::int64_t> parse_integer(std::string_view token);
+
+// What every mesh parser keeps: the file and mesh id its errors name, and the soup it fills.
+class MeshParser {
+ public:
+  MeshParser(const std::filesystem::path& file, const std::string& mesh_id)
+      : file_(file.string()), mesh_id_(mesh_id) {}
+
+ protected:
+  // "<mesh id>/<index>" of the face being read next.
+  std::string face_id() const;
+  // Throws InputError(file, the next face's id when in_face or "", what).
+  [[noreturn]] void fail(const std::string& what, bool in_face = false) const;
+  // As fail, with "line <line>: " before what.
+  [[noreturn]] void fail_at(std::size_t line, const std::string& what, bool in_face = false) const;
+
+  std::string file_;
+  std::string mesh_id_;
+  MeshSoup soup_;
+};
 
 }  // namespace shadowgen::detail

@@ -11,10 +11,9 @@ namespace shadowgen::detail {
 
 namespace {
 
-class ObjParser {
+class ObjParser : MeshParser {
  public:
-  ObjParser(const std::filesystem::path& file, const std::string& mesh_id)
-      : file_(file.string()), mesh_id_(mesh_id) {}
+  using MeshParser::MeshParser;
 
   MeshSoup parse(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte order mark
@@ -41,11 +40,6 @@ class ObjParser {
   }
 
  private:
-  [[noreturn]] void fail(std::size_t line, const std::string& what, bool in_face) const {
-    throw InputError(file_, in_face ? mesh_id_ + "/" + std::to_string(soup_.faces.size()) : "",
-                     "line " + std::to_string(line) + ": " + what);
-  }
-
   void handle(std::string_view statement, std::size_t line) {
     if (const std::size_t hash = statement.find('#'); hash != std::string_view::npos) {
       statement = statement.substr(0, hash);
@@ -55,18 +49,18 @@ class ObjParser {
     if (tokens[0] == "v") {
       // x y z, then an optional weight or colour (r g b, maybe a), which we do not use but
       // check: something else there (two vertices run together) would be lost unseen.
-      if (tokens.size() < 4) fail(line, "a vertex needs 3 coordinates", false);
+      if (tokens.size() < 4) fail_at(line, "a vertex needs 3 coordinates", false);
       if (tokens.size() > 8) {
-        fail(line,
-             "a vertex has 3 coordinates and at most a weight or a colour; this one has " +
-                 std::to_string(tokens.size() - 1) + " numbers",
-             false);
+        fail_at(line,
+                "a vertex has 3 coordinates and at most a weight or a colour; this one has " +
+                    std::to_string(tokens.size() - 1) + " numbers",
+                false);
       }
       for (std::size_t i = 4; i < tokens.size(); ++i) {
         if (!parse_number(tokens[i])) {
-          fail(line,
-               "'" + std::string(tokens[i]) + "' after a vertex's coordinates is not a number",
-               false);
+          fail_at(line,
+                  "'" + std::string(tokens[i]) + "' after a vertex's coordinates is not a number",
+                  false);
         }
       }
       soup_.vertices.emplace_back(coordinate(tokens[1], line), coordinate(tokens[2], line),
@@ -86,13 +80,14 @@ class ObjParser {
     double value = 0.0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (error == std::errc::result_out_of_range) {
-      fail(line, "coordinate '" + std::string(token) + "' is out of the range of a double", false);
+      fail_at(line, "coordinate '" + std::string(token) + "' is out of the range of a double",
+              false);
     }
     if (error != std::errc() || end != digits.data() + digits.size()) {
-      fail(line, "coordinate '" + std::string(token) + "' is not a number", false);
+      fail_at(line, "coordinate '" + std::string(token) + "' is not a number", false);
     }
     if (!std::isfinite(value))
-      fail(line, "coordinate '" + std::string(token) + "' is not finite", false);
+      fail_at(line, "coordinate '" + std::string(token) + "' is not finite", false);
     return value;
   }
 
@@ -103,24 +98,21 @@ class ObjParser {
     std::int64_t value = 0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (error != std::errc() || end != digits.data() + digits.size()) {
-      fail(line, "vertex index '" + std::string(token) + "' is not an integer", true);
+      fail_at(line, "vertex index '" + std::string(token) + "' is not an integer", true);
     }
     const auto count = static_cast<std::int64_t>(soup_.vertices.size());
-    if (value == 0) fail(line, "vertex index 0 (OBJ counts vertices from 1)", true);
+    if (value == 0) fail_at(line, "vertex index 0 (OBJ counts vertices from 1)", true);
     if (value < 0) {
       if (value < -count) {
-        fail(line,
-             "relative vertex index " + std::to_string(value) + " reaches before the first vertex",
-             true);
+        fail_at(
+            line,
+            "relative vertex index " + std::to_string(value) + " reaches before the first vertex",
+            true);
       }
       return count + value;
     }
     return value - 1;
   }
-
-  std::string file_;
-  std::string mesh_id_;
-  MeshSoup soup_;
 };
 
 }  // namespace

@@ -45,10 +45,9 @@ std::string counted(std::int64_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-class OffParser {
+class OffParser : MeshParser {
  public:
-  OffParser(const std::filesystem::path& file, const std::string& mesh_id)
-      : file_(file.string()), mesh_id_(mesh_id) {}
+  using MeshParser::MeshParser;
 
   MeshSoup parse(std::string_view bytes) {
     if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);  // a UTF-8 byte order mark
@@ -72,14 +71,6 @@ class OffParser {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& what, bool in_face = false) const {
-    throw InputError(file_, in_face ? mesh_id_ + "/" + std::to_string(soup_.faces.size()) : "",
-                     what);
-  }
-  [[noreturn]] void fail_at(std::size_t line, const std::string& what, bool in_face = false) const {
-    fail("line " + std::to_string(line) + ": " + what, in_face);
-  }
-
   // ---- Text ------------------------------------------------------------------------
 
   // The next line with something on it besides a comment, split into tokens_.
@@ -382,8 +373,6 @@ class OffParser {
     return std::nullopt;
   }
 
-  std::string file_;
-  std::string mesh_id_;
   MeshSoup soup_;
   LineReader* lines_ = nullptr;
   std::vector<std::string_view> tokens_;

@@ -39,10 +39,9 @@ struct Value {
   std::int64_t integer = 0;
 };
 
-class PlyParser {
+class PlyParser : MeshParser {
  public:
-  PlyParser(const std::filesystem::path& file, const std::string& mesh_id)
-      : file_(file.string()), mesh_id_(mesh_id) {}
+  using MeshParser::MeshParser;
 
   MeshSoup parse(std::string_view bytes) {
     if (!bytes.starts_with("ply\n") && !bytes.starts_with("ply\r")) {
@@ -67,14 +66,6 @@ class PlyParser {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& what, bool in_face = false) const {
-    throw InputError(file_, in_face ? mesh_id_ + "/" + std::to_string(soup_.faces.size()) : "",
-                     what);
-  }
-  [[noreturn]] void fail_at(std::size_t line, const std::string& what, bool in_face = false) const {
-    fail("line " + std::to_string(line) + ": " + what, in_face);
-  }
-
   // ---- The elements, as the body gives them ------------------------------------------
 
   // Where one element's values go as they are read.
@@ -276,11 +267,8 @@ class PlyParser {
     }
   }
 
-  std::string file_;
-  std::string mesh_id_;
   Format format_ = Format::kAscii;
   std::vector<Element> elements_;
-  MeshSoup soup_;
 };
 
 }  // namespace

@@ -30,10 +30,9 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-class StlParser {
+class StlParser : MeshParser {
  public:
-  StlParser(const std::filesystem::path& file, const std::string& mesh_id)
-      : file_(file.string()), mesh_id_(mesh_id) {}
+  using MeshParser::MeshParser;
 
   MeshSoup parse(std::string_view bytes) {
     // Binary when the size fits the triangle count, whatever the header says: many
@@ -70,8 +69,6 @@ class StlParser {
   }
 
  private:
-  std::string face_id() const { return mesh_id_ + "/" + std::to_string(soup_.faces.size()); }
-
   MeshSoup parse_binary(std::string_view bytes, std::uint64_t count) {
     soup_.vertices.reserve(3 * count);
     soup_.faces.reserve(count);
@@ -94,18 +91,13 @@ class StlParser {
     return std::move(soup_);
   }
 
-  [[noreturn]] void fail(std::size_t line, const std::string& what, bool in_facet) const {
-    throw InputError(file_, in_facet ? face_id() : "",
-                     "line " + std::to_string(line) + ": " + what);
-  }
-
   double coordinate(std::string_view token, std::size_t line) const {
     std::string_view digits = token;
     if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
     double value = 0.0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (error != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value)) {
-      fail(line, "coordinate '" + std::string(token) + "' is not a finite number", true);
+      fail_at(line, "coordinate '" + std::string(token) + "' is not a finite number", true);
     }
     return value;
   }
@@ -121,8 +113,8 @@ class StlParser {
     MeshFaceRecord face;
     auto expect = [&](bool ok, const std::string& keyword, const char* where) {
       if (!ok) {
-        fail(lines.number(), "'" + keyword + "' " + where,
-             state == State::kFacet || state == State::kLoop || state == State::kLoopDone);
+        fail_at(lines.number(), "'" + keyword + "' " + where,
+                state == State::kFacet || state == State::kLoop || state == State::kLoopDone);
       }
     };
     while (lines.next(line)) {
@@ -145,7 +137,7 @@ class StlParser {
         state = State::kLoop;
       } else if (keyword == "vertex") {
         expect(state == State::kLoop, keyword, "outside a facet's 'outer loop'");
-        if (tokens.size() != 4) fail(lines.number(), "a vertex needs 3 coordinates", true);
+        if (tokens.size() != 4) fail_at(lines.number(), "a vertex needs 3 coordinates", true);
         face.vertices.push_back(static_cast<std::int64_t>(soup_.vertices.size()));
         soup_.vertices.emplace_back(coordinate(tokens[1], lines.number()),
                                     coordinate(tokens[2], lines.number()),
@@ -158,20 +150,16 @@ class StlParser {
         soup_.faces.push_back(std::move(face));
         state = State::kSolid;
       } else {
-        fail(lines.number(), "unexpected '" + std::string(tokens[0]) + "'",
-             state == State::kFacet || state == State::kLoop || state == State::kLoopDone);
+        fail_at(lines.number(), "unexpected '" + std::string(tokens[0]) + "'",
+                state == State::kFacet || state == State::kLoop || state == State::kLoopDone);
       }
     }
     if (state == State::kSolid) {
-      fail(lines.number(), "the file ends before 'endsolid' (truncated?)", false);
+      fail_at(lines.number(), "the file ends before 'endsolid' (truncated?)", false);
     }
-    if (state != State::kOutside) fail(lines.number(), "the file ends inside a facet", true);
+    if (state != State::kOutside) fail_at(lines.number(), "the file ends inside a facet", true);
     return std::move(soup_);
   }
-
-  std::string file_;
-  std::string mesh_id_;
-  MeshSoup soup_;
 };
 
 }  // namespace
