@@ -60,6 +60,7 @@
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
 // whose x-ranges overlap, instead of the all-pairs O(n²).
 
+#include <cstddef>
 #include <span>
 #include <stdexcept>
 
@@ -76,6 +77,18 @@ class SnapRoundingError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Runs `work` on behalf of item `index` of the caller's (a polygon, a face part) and
+// returns its result; a clip in it whose snapping does not settle comes out as
+// Error(index, message), so the caller's caller learns which item failed.
+template <class Error, class Work>
+auto failing_as(std::size_t index, Work&& work) {
+  try {
+    return work();
+  } catch (const SnapRoundingError& e) {
+    throw Error(index, e.what());
+  }
+}
 
 // For tests of that failure, which no known input causes: while one lives, the snapping
 // stops after `rounds` rounds of changes instead of 17 (with 0 it changes nothing, and

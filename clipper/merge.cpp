@@ -1,9 +1,9 @@
 #include "clipper/merge.h"
 
+#include "clipper/normalize.h"
 #include "detail/boundary_graph.h"
 #include "detail/overlay.h"
 #include "detail/snap_rounding.h"
-#include "clipper/normalize.h"
 
 namespace shadowgen::clipper {
 

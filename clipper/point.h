@@ -20,6 +20,14 @@ struct Point2 {
   }
 };
 
+// The affine function a·x + b·y + c on the plane of points.
+struct Affine2 {
+  double a = 0.0;
+  double b = 0.0;
+  double c = 0.0;
+  double at(const Point2& p) const { return a * p.x + b * p.y + c; }
+};
+
 // Hash on the exact bit patterns; +0.0 and -0.0 are folded together because they
 // compare equal.
 struct Point2Hash {

@@ -10,6 +10,7 @@
 //   - holes lie inside their outer loop; loops of one polygon, and polygons of one set,
 //     meet at most at isolated points (never along an edge, never crossing).
 
+#include <utility>
 #include <vector>
 
 #include "clipper/point.h"
@@ -43,5 +44,20 @@ double rounding_area_bound(const Loop2& loop);
 
 std::size_t vertex_count(const PolygonWithHoles2& polygon);
 std::size_t vertex_count(const PolygonSet2& polygons);
+
+// `set` with every loop, outer and holes alike, replaced by `map(loop)`: a set carried
+// pointwise into other coordinates.
+template <class MapLoop>
+PolygonSet2 map_loops(const PolygonSet2& set, MapLoop&& map) {
+  PolygonSet2 out;
+  out.reserve(set.size());
+  for (const PolygonWithHoles2& p : set) {
+    PolygonWithHoles2 q{map(p.outer), {}};
+    q.holes.reserve(p.holes.size());
+    for (const Loop2& h : p.holes) q.holes.push_back(map(h));
+    out.push_back(std::move(q));
+  }
+  return out;
+}
 
 }  // namespace shadowgen::clipper

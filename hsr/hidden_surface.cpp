@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <queue>
+#include <utility>
 
 #include "clipper/box.h"
 #include "clipper/clip.h"
@@ -35,11 +36,7 @@ struct Piece {
 // that polygon (PolygonClipError).
 template <class Clip>
 auto clip_of(std::size_t parent, Clip&& clip) {
-  try {
-    return clip();
-  } catch (const clipper::SnapRoundingError& e) {
-    throw PolygonClipError(parent, e.what());
-  }
+  return clipper::failing_as<PolygonClipError>(parent, std::forward<Clip>(clip));
 }
 
 enum class DepthOrder { kBehindOrTied, kInFront, kCrossing };

@@ -68,12 +68,7 @@ enum class ChartFrom {
 };
 
 // a·x + b·y + c on chart points.
-struct ChartAffine {
-  double a = 0.0;
-  double b = 0.0;
-  double c = 0.0;
-  double at(const clipper::Point2& q) const { return a * q.x + b * q.y + c; }
-};
+using ChartAffine = clipper::Affine2;
 
 // A plane with its chart (chart_facing its normal), both ways.
 class ChartedPlane {

@@ -60,13 +60,8 @@ clipper::PolygonSet2 project_in_front(const Polygon3& polygon, const View& view)
     }
     return out;
   };
-  clipper::PolygonSet2 projected;
-  for (const clipper::PolygonWithHoles2& piece : clipper::intersection({flat}, {keep})) {
-    clipper::PolygonWithHoles2 p{lift_and_project(piece.outer), {}};
-    for (const clipper::Loop2& h : piece.holes) p.holes.push_back(lift_and_project(h));
-    projected.push_back(std::move(p));
-  }
-  return clipper::normalized(projected);
+  return clipper::normalized(
+      clipper::map_loops(clipper::intersection({flat}, {keep}), lift_and_project));
 }
 
 }  // namespace

@@ -22,12 +22,7 @@
 namespace shadowgen::hsr {
 
 // nearness(x, y) = a·x + b·y + c on one plane.
-struct Nearness {
-  double a = 0.0;
-  double b = 0.0;
-  double c = 0.0;
-  double at(const clipper::Point2& p) const { return a * p.x + b * p.y + c; }
-};
+using Nearness = clipper::Affine2;
 
 struct Ray3 {
   glm::dvec3 origin;

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "point_index.h"
-#include "point_location.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
+#include "point_index.h"
+#include "point_location.h"
 
 namespace shadowgen::clipper::detail {
 namespace {

@@ -7,9 +7,9 @@
 #include <limits>
 #include <span>
 
+#include "clipper/predicates.h"
 #include "point_index.h"
 #include "point_location.h"
-#include "clipper/predicates.h"
 
 namespace shadowgen::clipper::detail {
 namespace {

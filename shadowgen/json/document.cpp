@@ -38,28 +38,16 @@ class FormatScanner {
     }
     return value("a string");
   }
-  bool start_object(std::size_t) {
-    if (!check_format_value("an object")) return false;
-    ++depth_;
-    return true;
-  }
-  bool end_object() {
-    --depth_;
-    return true;
-  }
+  bool start_object(std::size_t) { return open("an object"); }
+  bool end_object() { return close(); }
   bool start_array(std::size_t) {
     if (depth_ == 0) {
       problem = "the top level is an array, not an object";
       return false;
     }
-    if (!check_format_value("an array")) return false;
-    ++depth_;
-    return true;
+    return open("an array");
   }
-  bool end_array() {
-    --depth_;
-    return true;
-  }
+  bool end_array() { return close(); }
   bool key(Json::string_t& k) {
     if (depth_ == 1) expecting_format_ = (k == "format");
     return true;
@@ -87,22 +75,32 @@ class FormatScanner {
   }
 
   std::string_view text_;
+  bool open(const char* what) {
+    if (!check_format_value(what)) return false;
+    ++depth_;
+    return true;
+  }
+  bool close() {
+    --depth_;
+    return true;
+  }
+
   int depth_ = 0;
   bool expecting_format_ = false;
 };
 
 }  // namespace
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_text_file(const std::filesystem::path& path, std::string_view what) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throw InputError(path.string(), "", "is a folder, not a file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open the file");
+  if (!in) throw InputError(path.string(), "", "cannot open the " + std::string(what));
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) throw InputError(path.string(), "", "cannot read the file");
+  if (in.bad()) throw InputError(path.string(), "", "cannot read the " + std::string(what));
   return std::move(text).str();
 }
 

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "shadowgen/shadows/generate.h"
 #include "shadowgen/scene/scene_reader.h"
+#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::test {
 

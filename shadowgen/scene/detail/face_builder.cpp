@@ -11,22 +11,12 @@
 #include "hsr/collinearity.h"
 #include "hsr/plane_chart.h"
 #include "loop_validation.h"
+#include "numbers.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
 
 namespace {
-
-std::string short_number(double value) {
-  std::ostringstream s;
-  s.precision(3);
-  s << value;
-  return s.str();
-}
-
-bool finite(const glm::dvec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 // A chart for a loop whose Newell normal came out zero (its signed areas cancel, as in a
 // figure-eight, or underflow): any chart in which it is not collinear; validation then
@@ -211,9 +201,9 @@ class FaceBuilder {
                                          bool has_normal) {
     const Planarity flat = has_normal ? planarity(polygon, normal) : Planarity{};
     if (!(flat.deviation > kPlanarityTolerance * flat.extent)) return "";
-    return "a vertex lies " + short_number(flat.deviation) + " from the best-fit plane, " +
-           short_number(flat.deviation / flat.extent) + " of the face's extent; tolerance " +
-           short_number(kPlanarityTolerance);
+    return "a vertex lies " + short_number(flat.deviation, 3) + " from the best-fit plane, " +
+           short_number(flat.deviation / flat.extent, 3) + " of the face's extent; tolerance " +
+           short_number(kPlanarityTolerance, 3);
   }
 
   template <typename Flatten>

@@ -8,20 +8,10 @@
 #include "clipper/clip.h"
 #include "hsr/area.h"
 #include "hsr/collinearity.h"
+#include "numbers.h"
 
 namespace shadowgen::detail {
 namespace {
-
-std::string short_number(double value) {
-  std::ostringstream s;
-  s.precision(6);
-  s << value;
-  return s.str();
-}
-
-bool finite(const glm::dvec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 double perimeter(const hsr::Loop3& loop) {
   double sum = 0.0;
@@ -172,8 +162,8 @@ std::optional<LitProblem> LitChecker::check_loops_and_planes(
       const std::string plane =
           several_parts_ ? "the plane of part " + std::to_string(lit[k].part) + " of its face"
                          : "its face's plane";
-      return LitProblem{k, "lies off " + plane + ": a vertex is " + short_number(worst) +
-                               " from it (tolerance " + short_number(tolerance) + ")"};
+      return LitProblem{k, "lies off " + plane + ": a vertex is " + short_number(worst, 6) +
+                               " from it (tolerance " + short_number(tolerance, 6) + ")"};
     }
   }
   return std::nullopt;
@@ -191,10 +181,10 @@ std::optional<LitProblem> LitChecker::check_area(std::span<const LitPolygon> lit
     return LitProblem{std::nullopt, "the lit area is not a finite number"};
   }
   if (lit_area > face_area_ + tolerance) {
-    std::string what = "the lit polygons cover an area of " + short_number(lit_area) +
-                       ", more than the face's area of " + short_number(face_area_);
+    std::string what = "the lit polygons cover an area of " + short_number(lit_area, 6) +
+                       ", more than the face's area of " + short_number(face_area_, 6);
     if (face_area_ > 0.0)
-      what += " (a lit fraction of " + short_number(lit_area / face_area_) + ")";
+      what += " (a lit fraction of " + short_number(lit_area / face_area_, 6) + ")";
     return LitProblem{std::nullopt, what};
   }
   return std::nullopt;
@@ -241,8 +231,8 @@ std::optional<LitProblem> LitChecker::diagnose_inside(std::span<const LitPolygon
     const double own = part.reach * (part.perimeter + perimeter(lit[k].polygon)) +
                        rounding_area_bound(flat) + rounding_area_bound(part.flat_polygon);
     if (outside > own) {
-      return LitProblem{k, "lies outside its face: an area of " + short_number(outside * to_3d) +
-                               " of its " + short_number(clipper::area(flat) * to_3d) +
+      return LitProblem{k, "lies outside its face: an area of " + short_number(outside * to_3d, 6) +
+                               " of its " + short_number(clipper::area(flat) * to_3d, 6) +
                                " is beyond the face's boundary"};
     }
   }
@@ -255,7 +245,7 @@ std::optional<LitProblem> LitChecker::diagnose_inside(std::span<const LitPolygon
     }
   }
   return LitProblem{std::nullopt, "the lit polygons overlap (beyond rounding: " +
-                                      short_number(tolerance * to_3d) + " of area)"};
+                                      short_number(tolerance * to_3d, 6) + " of area)"};
 }
 
 }  // namespace shadowgen::detail

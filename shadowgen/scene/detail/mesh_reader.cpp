@@ -14,6 +14,7 @@
 #include "obj_reader.h"
 #include "off_reader.h"
 #include "ply_reader.h"
+#include "shadowgen/json/document.h"
 #include "shadowgen/model/input_error.h"
 #include "stl_reader.h"
 
@@ -127,15 +128,6 @@ class QuietOpenMesh {
   bool err_, log_, out_;
 };
 
-std::string read_bytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "", "cannot open the mesh file");
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw InputError(file.string(), "", "cannot read the mesh file");
-  return std::move(content).str();
-}
-
 std::string lower_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -171,16 +163,16 @@ MeshSoup read_mesh(const std::filesystem::path& file, const std::string& mesh_id
   MeshSoup soup;
   std::string faces_are = "face records";
   if (ext == ".obj") {
-    soup = detail::parse_obj(read_bytes(file), file, mesh_id);
+    soup = detail::parse_obj(read_text_file(file, "mesh file"), file, mesh_id);
     faces_are = "'f' lines";
   } else if (ext == ".stl") {
-    soup = detail::parse_stl(read_bytes(file), file, mesh_id);
+    soup = detail::parse_stl(read_text_file(file, "mesh file"), file, mesh_id);
     faces_are = "facets";
   } else if (ext == ".off") {
-    soup = detail::parse_off(read_bytes(file), file, mesh_id);
+    soup = detail::parse_off(read_text_file(file, "mesh file"), file, mesh_id);
     faces_are = "faces (its header announces none)";
   } else if (ext == ".ply") {
-    soup = detail::parse_ply(read_bytes(file), file, mesh_id);
+    soup = detail::parse_ply(read_text_file(file, "mesh file"), file, mesh_id);
     faces_are = "'face' elements";
   } else {
     soup = read_with_openmesh(file, ext);

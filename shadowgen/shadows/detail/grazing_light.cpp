@@ -125,13 +125,7 @@ clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& 
     for (const clipper::Point2& q : loop) out.push_back(project(x0 + q.x * along_l + q.y * m, q.y));
     return out;
   };
-  clipper::PolygonSet2 shadow;
-  for (const clipper::PolygonWithHoles2& piece : clipper::intersection({st}, {band})) {
-    clipper::PolygonWithHoles2 p{to_face(piece.outer), {}};
-    for (const clipper::Loop2& h : piece.holes) p.holes.push_back(to_face(h));
-    shadow.push_back(std::move(p));
-  }
-  return clipper::normalized(shadow);
+  return clipper::normalized(clipper::map_loops(clipper::intersection({st}, {band}), to_face));
 }
 
 // sin θ of the text above, for a light reaching the face's front side.

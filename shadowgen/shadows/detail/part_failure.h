@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "clipper/clip.h"
 
@@ -28,11 +29,7 @@ class PartFailure : public std::runtime_error {
 // clip that fails in it comes out as PartFailure.
 template <class Work>
 auto on_part(std::size_t part, Work&& work) {
-  try {
-    return work();
-  } catch (const clipper::SnapRoundingError& e) {
-    throw PartFailure(part, e.what());
-  }
+  return clipper::failing_as<PartFailure>(part, std::forward<Work>(work));
 }
 
 }  // namespace shadowgen::detail

@@ -13,9 +13,9 @@
 #include <sstream>
 
 #include "shadowgen/output/database.h"
+#include "shadowgen/output/report.h"
 #include "shadowgen/scene/database_reader.h"
 #include "shadowgen/shadows/generate.h"
-#include "shadowgen/output/report.h"
 #include "tests/shadowgen/shadows/shadow_check.h"
 #include "tests/shadowgen/shadows/shadow_oracle.h"
 #include "tests/shadowgen/shadows/shadow_scenes.h"

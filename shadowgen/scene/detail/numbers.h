@@ -1,0 +1,24 @@
+#pragma once
+
+// Small number helpers the scene room's checks share.
+
+#include <cmath>
+#include <glm/vec3.hpp>
+#include <sstream>
+#include <string>
+
+namespace shadowgen::detail {
+
+// `value` with `digits` significant digits, for messages ("1.24e-07").
+inline std::string short_number(double value, int digits) {
+  std::ostringstream s;
+  s.precision(digits);
+  s << value;
+  return s.str();
+}
+
+inline bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace shadowgen::detail
