@@ -6,7 +6,8 @@
 //
 // Per light:
 //   - directional: one orthographic light view along the light's direction, centred on
-//     the scene (the paper's "fitting the environment into the viewbox");
+//     the scene's bounding box's point nearest the origin (the paper's "fitting the
+//     environment into the viewbox", keeping each point's own precision);
 //   - point: up to six 90-degree perspective frusta around the light (cube-map style),
 //     only those that see part of the scene, so a light may stand anywhere, inside the
 //     scene included;

@@ -241,6 +241,12 @@ def seeds():
                "holes": [[[0,0,-1],[0,1,-1],[1,1,-1],[1,0,-1]]]}],
  "lights": [{"id": "sun", "type": "directional", "direction": [0.3, 0.2, -1]},
             {"id": "lamp", "type": "point", "position": [0.5, 0.5, 2]}]}""")
+    # A ground near the origin under an occluder with one vertex 1e14 away: the sun's view
+    # once lost the ground's precision to the far vertex (a fuzzer finding).
+    out["scene-far-vertex-elsewhere"] = seed(SCENE + GENERATE, """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "ground", "outer": [[-8,-3,0],[-6,-8,0],[4,-8,0],[-5,-4,0]]},
+              {"id": "spike", "outer": [[-7,-7,1],[-5,-4,1],[-899.9,9.8e13,1]]}],
+ "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -0.5]}]}""")
     out["scene-extreme-coordinates"] = seed(SCENE, """{"format": "shadowgen-scene/1",
  "polygons": [{"id": "far", "outer": [[1e60,0,0],[1.0000000000000002e60,0,0],[1e60,1e50,0]]},
               {"id": "tiny", "outer": [[0,0,1e-300],[1e-100,0,1e-300],[0,1e-100,1e-300]]},
@@ -342,8 +348,10 @@ end_header
 def database_from_cli(shadowgen):
     with tempfile.TemporaryDirectory() as work:
         target = pathlib.Path(work) / "courtyard.shadowed.json"
-        subprocess.run([shadowgen, "generate", str(ROOT / "examples/scenes/courtyard.json"),
-                        "-o", str(target), "--quiet"], check=True)
+        # From the root, so that the database names its source file as the repository does.
+        subprocess.run([str(pathlib.Path(shadowgen).resolve()), "generate",
+                        "examples/scenes/courtyard.json", "-o", str(target), "--quiet"],
+                       check=True, cwd=ROOT)
         return seed(DATABASE, target.read_bytes())
 
 

@@ -139,9 +139,10 @@ bool verbose() {
   return on;
 }
 
-// The per-process folder, made on first use and removed at exit.
+// The per-process folder, made on first use and removed at exit (by an atexit handler;
+// the path itself is never destroyed, so that the handler can still use it).
 const fs::path& process_dir() {
-  static const fs::path dir = [] {
+  static const fs::path* const dir = [] {
     std::error_code error;
     fs::path base = fs::temp_directory_path(error);
     if (error) base = "/tmp";
@@ -150,13 +151,16 @@ const fs::path& process_dir() {
       std::perror("reader_fuzzer: mkdtemp");
       std::abort();
     }
-    std::atexit([] {
-      std::error_code ignored;
-      fs::remove_all(process_dir(), ignored);
-    });
-    return fs::path(pattern);
+    return new fs::path(pattern);
   }();
-  return dir;
+  static const bool removed_at_exit = [] {
+    return std::atexit([] {
+             std::error_code ignored;
+             fs::remove_all(process_dir(), ignored);
+           }) == 0;
+  }();
+  (void)removed_at_exit;
+  return *dir;
 }
 
 // <case>: where an input's files are written, and its scene is said to lie.

@@ -24,7 +24,12 @@ FaceParts flatten(const Scene& scene) {
       }
     }
   }
-  if (!parts.polygons.empty()) parts.centre = 0.5 * (lo + hi);
+  // The box's point nearest the world's origin, not its middle: an image coordinate is
+  // then off by a few ulps of min(2|p|, the box's diagonal) for every scene point p. The
+  // middle of a box that spans 1e14 would cost a face near the origin 1e-2 in its lit
+  // outline, far beyond the rounding its own coordinates allow (what the database reader
+  // checks); a compact scene far from the origin keeps the precision of a nearby centre.
+  if (!parts.polygons.empty()) parts.centre = glm::clamp(glm::dvec3(0.0), lo, hi);
   parts.coplanar = coplanar_groups(parts.polygons, parts.planes);
   return parts;
 }

@@ -26,7 +26,7 @@ struct FaceParts {
   std::vector<PartOwner> owners;
   std::vector<int> coplanar;  // coplanar_groups.h: a group index, or -1
   std::size_t face_count = 0;
-  glm::dvec3 centre{0.0};  // of the parts' bounding box; a directional view is centred there
+  glm::dvec3 centre{0.0};  // the parts' box's point nearest the origin: directional views' centre
 
   std::size_t size() const { return polygons.size(); }
 };

@@ -412,6 +412,31 @@ TEST(ExtremesRegression, WallsTheSunGrazesAtAnyAngle) {
   }
 }
 
+// Found by the reader fuzzer: a ground near the origin (coordinates up to 8) and an
+// occluder one of whose vertices lies 1e14 away. The sun's view was centred on the
+// middle of the scene's box, 5e13 from the ground, where an image coordinate has an ulp
+// of 1/128: the ground's lit outline came back up to 1e-3 off, outside the ground and
+// far beyond the rounding of its own coordinates. Each face's lit region must be exact
+// to within its own coordinates' rounding, whatever the rest of the scene spans.
+TEST(ExtremesRegression, FarVertexElsewhereKeepsAFaceNearTheOriginPrecise) {
+  Scene scene;
+  add_face(scene, "ground", polygon({{-8, -3, 0}, {-6, -8, 0}, {4, -8, 0}, {-5, -4, 0}}));
+  add_face(scene, "spike", polygon({{-7, -7, 1}, {-5, -4, 1}, {-899.9, 9.8e13, 1}}));
+  add_face(scene, "blade", polygon({{-6, -6.5, 1}, {2, -7.75, 1}, {-3, -3.25, 1}}));
+  scene.lights.push_back(directional_light("sun", {0.0, 0.0, -0.5}));
+  const ShadowedScene shadowed = generate_shadows(scene).shadowed;
+  const ShadowOracle oracle(scene);
+  const LitComparison c = oracle.compare(0, 0, polygons_of(shadowed.lit[0][0]));
+  // δ·L/A of the bound above, with M = 8, the ground's own largest coordinate.
+  const double bound = kTolerance * c.face_area + 4.0 * kUlp * 8.0 * 2.0 * 40.0;
+  std::printf("[ far vertex elsewhere ] ground lit %.17g (exact %.17g), region error %.3g\n",
+              c.our_union_area, c.exact_lit_area, c.symmetric_difference);
+  EXPECT_EQ(c.invalid, "");
+  EXPECT_LE(c.outside_face_area, bound);
+  EXPECT_LE(c.symmetric_difference, bound);
+  EXPECT_LT(c.exact_lit_area, c.face_area - 1.0) << "the occluders must shade the ground";
+}
+
 // Lamps a hair above the ground and above a box's top, from 1e-6 down to 1e-100: the
 // faces under them are grazed (their lit regions come from their planes), and the top
 // 1e-12 below a lamp still occludes the ground (a near-plane floor of 1e-12 of the
