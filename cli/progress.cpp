@@ -2,10 +2,11 @@
 
 #include <unistd.h>
 
-#include <array>
 #include <charconv>
 #include <cmath>
 #include <utility>
+
+#include "shadowgen/model/number_text.h"
 
 namespace shadowgen::cli {
 
@@ -18,14 +19,8 @@ std::string format_progress(const ProgressLine& line) {
   text += line.scene + ": lights " + std::to_string(line.lights_done) + '/' +
           std::to_string(line.lights_total);
   if (line.any_light_done) text += ", last light " + std::to_string(line.faces) + " faces";
-  std::array<char, 32> seconds{};
   const double shown = std::isfinite(line.seconds) && line.seconds >= 0.0 ? line.seconds : 0.0;
-  const char* end = std::to_chars(seconds.data(), seconds.data() + seconds.size(), shown,
-                                  std::chars_format::fixed, 1)
-                        .ptr;
-  text += ", ";
-  text.append(seconds.data(), static_cast<std::size_t>(end - seconds.data()));
-  text += " s";
+  text += ", " + number_text(shown, std::chars_format::fixed, 1) + " s";
   return text;
 }
 

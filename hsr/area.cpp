@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "hsr/collinearity.h"
+#include "hsr/vector_length.h"
 
 namespace shadowgen::hsr {
 
@@ -13,7 +14,7 @@ namespace {
 // exactly) has area exactly 0, not the rounding noise the sums would leave.
 double loop_area(const Loop3& loop) {
   if (loop.size() < 3 || all_collinear(loop)) return 0.0;
-  return 0.5 * glm::length(newell_vector(loop));
+  return 0.5 * stable_length(newell_vector(loop));
 }
 
 }  // namespace

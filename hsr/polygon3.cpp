@@ -2,6 +2,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "hsr/vector_length.h"
+
 namespace shadowgen::hsr {
 
 double Plane3::signed_distance(const glm::dvec3& p) const { return glm::dot(normal, p) - offset; }
@@ -25,7 +27,7 @@ Plane3 plane_of(const Polygon3& polygon) {
   const Loop3& loop = polygon.outer;
   Plane3 plane;
   const glm::dvec3 normal = newell_vector(loop);
-  const double length = glm::length(normal);
+  const double length = stable_length(normal);
   if (!(length > 0.0)) {
     plane.normal = glm::dvec3(0.0);
     return plane;

@@ -4,14 +4,14 @@
 #include <charconv>
 #include <nlohmann/json.hpp>
 
+#include "shadowgen/model/number_text.h"
+
 namespace shadowgen::detail {
 
 void append_json_number(std::string& out, double value) {
-  std::array<char, 32> buffer{};  // 24 characters suffice for any double
-  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
-  const std::string_view text(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
-  out += text;
-  if (text.find_first_of(".eEin") == std::string_view::npos) out += ".0";
+  const std::size_t start = out.size();
+  append_shortest(out, value);
+  if (out.find_first_of(".eEin", start) == std::string::npos) out += ".0";
 }
 
 void append_json_string(std::string& out, std::string_view text) {

@@ -15,6 +15,7 @@
 #include "clipper/triangulate.h"
 #include "hsr/area.h"
 #include "hsr/plane_chart.h"
+#include "shadowgen/model/number_text.h"
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/shadows/light_regions.h"
 
@@ -23,19 +24,11 @@ namespace {
 
 using LightSet = std::vector<std::size_t>;
 
-// Shortest form that reads back to the same double (std::to_chars); OBJ readers take
-// plain integers and exponents alike.
-void append_number(std::string& out, double value) {
-  std::array<char, 32> buffer{};  // 24 characters suffice for any double
-  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
-  out.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
-}
-
 void append_vector(std::string& out, std::string_view tag, const glm::dvec3& v) {
   out += tag;
   for (int i = 0; i < 3; ++i) {
     out += ' ';
-    append_number(out, v[i]);
+    append_shortest(out, v[i]);
   }
   out += '\n';
 }
@@ -189,9 +182,9 @@ void append_face(std::string& obj, const Scene& scene, const Face& face,
 std::string mtl_text(const Scene& scene,
                      const std::map<LightSet, std::string, LightSetLess>& names) {
   std::string mtl = "# shadowgen MTL: one material per set of lights reaching a region.\n# Kd = ";
-  append_number(mtl, kAmbientGrey);
+  append_shortest(mtl, kAmbientGrey);
   mtl += " + ";
-  append_number(mtl, 1.0 - kAmbientGrey);
+  append_shortest(mtl, 1.0 - kAmbientGrey);
   mtl += " * (intensity of the set's lights) / (intensity of all lights), per channel,\n";
   mtl += "# clamped to [0, 1]: the shadow is grey, a region every light reaches white.\n";
   for (const auto& [set, name] : names) {

@@ -13,6 +13,7 @@
 #include "hsr/area.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/number_text.h"
 
 namespace shadowgen {
 namespace {
@@ -43,11 +44,7 @@ class Sum {
 
 // %.17g, but independent of the C locale's decimal point.
 void append_csv_number(std::string& out, double value) {
-  std::array<char, 40> buffer{};
-  char* const begin = buffer.data();
-  const char* end =
-      std::to_chars(begin, begin + buffer.size(), value, std::chars_format::general, 17).ptr;
-  out.append(begin, static_cast<std::size_t>(end - begin));
+  out += number_text(value, std::chars_format::general, 17);
 }
 
 // RFC 4180: a field holding a comma, a quote, CR or LF is quoted, its quotes doubled.
@@ -69,21 +66,12 @@ void write_totals(JsonWriter& out, double area, double lit_area) {
   out.key("lit_fraction").value(fraction(lit_area, area));
 }
 
-// A number for people: `precision` significant digits (general) or decimals (fixed),
-// independent of the C locale.
-std::string readable_number(double value, std::chars_format format, int precision) {
-  std::array<char, 64> buffer{};
-  char* const begin = buffer.data();
-  const char* end = std::to_chars(begin, begin + buffer.size(), value, format, precision).ptr;
-  return std::string(begin, static_cast<std::size_t>(end - begin));
-}
-
 std::string readable_area(double value) {
-  return readable_number(value, std::chars_format::general, 6);
+  return number_text(value, std::chars_format::general, 6);
 }
 
 std::string readable_fraction(double value) {
-  return readable_number(value, std::chars_format::fixed, 4);
+  return number_text(value, std::chars_format::fixed, 4);
 }
 
 // An id on one line of a table: control characters escaped (\n, \r, \t, \xHH).

@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "detail/coordinate_range.h"
 #include "detail/face_builder.h"
 #include "detail/json_entities.h"
 #include "detail/lit_checks.h"
@@ -94,6 +95,9 @@ class DatabaseParser {
   // as the scene reader keeps a degenerate face; it warned when it read it.
   hsr::Polygon3 checked_part(hsr::Polygon3 polygon, const JsonValue& at,
                              const std::string& face_id) {
+    if (const std::optional<std::string> problem = detail::coordinate_problem(polygon)) {
+      at.fail(*problem);
+    }
     if (polygon.outer.size() >= 3 &&
         (hsr::distinct_points_up_to_3(polygon.outer) < 3 || hsr::all_collinear(polygon.outer))) {
       if (!polygon.holes.empty()) {
@@ -125,6 +129,9 @@ class DatabaseParser {
     for (std::size_t k = 0; k < list.size(); ++k) {
       JsonObject object = list.at(k).object();
       LitPolygon lit{0, detail::read_polygon(object)};
+      if (const std::optional<std::string> problem = detail::vertex_problem(lit.polygon)) {
+        object.value().fail(*problem);
+      }
       if (const std::optional<JsonValue> part = object.find("part")) {
         lit.part = part->index();
         if (lit.part >= face.parts.size()) {

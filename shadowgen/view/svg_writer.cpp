@@ -5,17 +5,11 @@
 #include <cmath>
 #include <string_view>
 
+#include "shadowgen/model/number_text.h"
 #include "shadowgen/output/atomic_file.h"
 
 namespace shadowgen {
 namespace {
-
-// Shortest round-trip form; SVG's number grammar takes the exponent form too.
-void append_number(std::string& out, double value) {
-  std::array<char, 32> buffer{};
-  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
-  out.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
-}
 
 void append_colour(std::string& out, const Rgb& colour) {
   constexpr std::string_view kHex = "0123456789abcdef";
@@ -104,9 +98,9 @@ void append_attribute_value(std::string& out, std::string_view text) {
 void append_loop(std::string& out, const clipper::Loop2& loop) {
   for (std::size_t i = 0; i < loop.size(); ++i) {
     out += i == 0 ? (out.back() == '"' ? "M" : " M") : (i == 1 ? " L" : " ");
-    append_number(out, loop[i].x);
+    append_shortest(out, loop[i].x);
     out += ',';
-    append_number(out, loop[i].y);
+    append_shortest(out, loop[i].y);
   }
   out += " Z";
 }
@@ -126,7 +120,7 @@ std::string svg_document(const Picture& picture) {
   out += '"';
   if (picture.pixels_per_unit > 0.0) {
     out += " data-pixels-per-unit=\"";
-    append_number(out, picture.pixels_per_unit);
+    append_shortest(out, picture.pixels_per_unit);
     out += '"';
   }
   out += ">\n<rect x=\"0\" y=\"0\" width=\"";

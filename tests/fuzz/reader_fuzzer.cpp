@@ -42,9 +42,6 @@
 //                       database-roundtrip and report.
 // Classes of input that show a finding already recorded (tests/fuzz/findings/readers/),
 // left out of the checks they break when SHADOWGEN_FUZZ_SKIP names them:
-//   huge-face           a polygon more than kHugeExtent across: its area overflows to inf
-//                       (report), and the database written does not read back
-//                       (database-roundtrip); findings/readers/scene-huge-face-*;
 //   not-planar-triangle the database reader refuses a face of triangles as not planar
 //                       (database-roundtrip); findings/readers/obj-triangle-not-planar.
 // A broken invariant prints its name, the kind and the input, then traps.
@@ -306,39 +303,6 @@ std::string non_finite_in(const ShadowedScene& shadowed) {
   return "";
 }
 
-// The largest extent (along an axis) of any polygon of `shadowed`, its lit details included,
-// exceeds kHugeExtent: the class of input of the finding scene-huge-face-*
-// (hsr::area's Newell vector overflows in glm::length above an extent of about 1e77).
-constexpr double kHugeExtent = 1e75;
-
-bool is_huge(const hsr::Polygon3& polygon) {
-  if (polygon.outer.empty()) return false;
-  glm::dvec3 low = polygon.outer[0];
-  glm::dvec3 high = low;
-  for (const glm::dvec3& p : polygon.outer) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
-  const glm::dvec3 extent = high - low;
-  return !(extent.x <= kHugeExtent && extent.y <= kHugeExtent && extent.z <= kHugeExtent);
-}
-
-bool has_huge_face(const ShadowedScene& shadowed) {
-  for (const Face& face : shadowed.scene.faces) {
-    for (const hsr::Polygon3& part : face.parts) {
-      if (is_huge(part)) return true;
-    }
-  }
-  for (const auto& per_face : shadowed.lit) {
-    for (const auto& per_light : per_face) {
-      for (const auto& lit : per_light) {
-        if (is_huge(polygon_of(lit))) return true;
-      }
-    }
-  }
-  return false;
-}
-
 // The database reader refuses a face of `shadowed` as not planar, and its parts are all
 // triangles: the class of input of the finding obj-triangle-not-planar (the planarity
 // check, on a sliver triangle, finds it bent by its own rounding).
@@ -538,7 +502,6 @@ class ReaderCase {
 
   // database-json, database-roundtrip and report on `shadowed`.
   void check_outputs(const ShadowedScene& shadowed, const std::string& what) {
-    if (!enabled("huge-face", kind_) && has_huge_face(shadowed)) return;
     if (enabled("database-json", kind_)) {
       std::string text;
       try {

@@ -8,6 +8,7 @@
 
 #include "clipper/predicates.h"
 #include "clipper/triangulate.h"
+#include "coordinate_range.h"
 #include "hsr/collinearity.h"
 #include "hsr/plane_chart.h"
 #include "loop_validation.h"
@@ -109,6 +110,7 @@ class FaceBuilder {
   Face build(hsr::Polygon3 polygon) {
     Face face{source_.id, {}, source_.file};
     check_vertex_counts(polygon);
+    if (const std::optional<std::string> problem = coordinate_problem(polygon)) fail(*problem);
     if (degenerate(polygon)) {  // kept as given
       face.parts.push_back(std::move(polygon));
       return face;

@@ -6,8 +6,17 @@
 #include <optional>
 #include <utility>
 
+#include "coordinate_range.h"
+
 namespace shadowgen::detail {
 namespace {
+
+// A position in the scene: [x, y, z] within the supported coordinate range.
+glm::dvec3 read_point(const JsonValue& value) {
+  const glm::dvec3 p = value.vec3();
+  if (const std::optional<std::string> problem = coordinate_problem(p)) value.fail(*problem);
+  return p;
+}
 
 // Only a direction's direction matters (the spec: it need not be unit length). Scaled by
 // a power of two, which is exact, so that its largest component lies in [0.5, 1): then
@@ -59,7 +68,7 @@ void read_light_kind(JsonObject& entry, Light& light, Source source) {
     }
   } else if (kind == "point") {
     light.type = LightType::kPoint;
-    light.position = entry.get("position").vec3();
+    light.position = read_point(entry.get("position"));
     if (const std::optional<JsonValue> range = entry.find("range")) {
       light.range = read_range(*range, source);
     }
@@ -110,8 +119,8 @@ ViewSpec read_view(const JsonValue& value, IdRegistry& ids, Source source) {
   JsonObject entry = value.object();
   ViewSpec view;
   view.id = read_claimed_id(entry, ids, "view");
-  view.eye = entry.get("eye").vec3();
-  view.target = entry.get("target").vec3();
+  view.eye = read_point(entry.get("eye"));
+  view.target = read_point(entry.get("target"));
   const std::optional<JsonValue> up = member(entry, "up", source);
   if (up) view.up = up->vec3();
   const std::optional<JsonValue> fov = member(entry, "fov_deg", source);

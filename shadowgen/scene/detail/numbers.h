@@ -4,17 +4,15 @@
 
 #include <cmath>
 #include <glm/vec3.hpp>
-#include <sstream>
 #include <string>
+
+#include "shadowgen/model/number_text.h"
 
 namespace shadowgen::detail {
 
 // `value` with `digits` significant digits, for messages ("1.24e-07").
 inline std::string short_number(double value, int digits) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << value;
-  return s.str();
+  return number_text(value, std::chars_format::general, digits);
 }
 
 inline bool finite(const glm::dvec3& v) {

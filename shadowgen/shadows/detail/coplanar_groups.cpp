@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "clipper/predicates.h"
+#include "hsr/vector_length.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -31,7 +32,7 @@ bool spanning_triple(const hsr::Loop3& loop, glm::dvec3 out[3]) {
   std::size_t best = 0;
   double best_area = 0.0;
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    const double a = glm::length(glm::cross(out[1] - out[0], loop[i] - out[0]));
+    const double a = hsr::stable_length(glm::cross(out[1] - out[0], loop[i] - out[0]));
     if (a > best_area) {
       best_area = a;
       best = i;

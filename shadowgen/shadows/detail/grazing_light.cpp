@@ -8,6 +8,7 @@
 #include "clipper/clip.h"
 #include "clipper/normalize.h"
 #include "hsr/plane_chart.h"
+#include "hsr/vector_length.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -131,7 +132,7 @@ clipper::PolygonSet2 shadow_of(const hsr::Polygon3& occluder, const glm::dvec3& 
 // sin θ of the text above, for a light reaching the face's front side.
 double grazing_sine(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light) {
   if (light.type == LightType::kDirectional) {
-    return std::fabs(glm::dot(plane.normal, light.direction)) / glm::length(light.direction);
+    return std::fabs(glm::dot(plane.normal, light.direction)) / hsr::stable_length(light.direction);
   }
   double farthest = 0.0;
   for (const glm::dvec3& v : part.outer)

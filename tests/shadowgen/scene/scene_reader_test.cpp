@@ -299,6 +299,22 @@ std::vector<MalformedCase> malformed_cases() {
       {"TransformSplitsFaceAcrossInfinity",
        mesh("tri.obj", R"(, "transform": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[1,0,0,-0.5]])"), "m/0",
        "splits the face across infinity", "tri.obj"},
+      // The supported coordinate range (docs/scene-format.md, "Numbers").
+      {"CoordinateBeyondTheRange", polygons(polygon("far", "[[0,0,0],[1.5e101,0,0],[0,10,0]]")),
+       "far", "coordinate 1.5e+101 is outside the supported range (magnitude at most 1e+100)"},
+      {"ExtentBelowTheRange", polygons(polygon("speck", "[[0,0,0],[9e-101,0,0],[0,9e-101,0]]")),
+       "speck", "its extent 9e-101 is below the supported range (at least 1e-100"},
+      {"HoleCoordinateBeyondTheRange",
+       polygons(polygon("holed", kSquare, "[[[1,1,0],[1,2,0],[-2e100,2,0]]]")), "holed",
+       "coordinate -2e+100 is outside the supported range"},
+      {"TransformTakesAMeshBeyondTheRange",
+       mesh("tri.obj", R"(, "transform": [[1e101,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]])"), "m/0",
+       "coordinate 1e+101 is outside the supported range", "tri.obj"},
+      {"LightPositionBeyondTheRange",
+       light(R"({"id": "lamp", "type": "point", "position": [0, 0, 3e100]})"), "",
+       "lights[0] ('lamp').position: coordinate 3e+100 is outside the supported range"},
+      {"ViewEyeBeyondTheRange", view(R"({"id": "v", "eye": [-1e300, 0, 0], "target": [0, 0, 0]})"),
+       "", "views[0] ('v').eye: coordinate -1e+300 is outside the supported range"},
       // Meshes: the file's side.
       {"ObjVertexWithTwoCoordinates", mesh("bad_vertex.obj"), "",
        "line 1: a vertex needs 3 coordinates", "bad_vertex.obj"},
@@ -733,6 +749,15 @@ TEST(Area, OfCollinearLoopsIsZero) {
   // p, 2p, 4p: exactly collinear in doubles, where Newell's sums leave rounding noise.
   EXPECT_EQ(area(hsr::Polygon3{{{0.1, 0.2, 0.3}, {0.2, 0.4, 0.6}, {0.4, 0.8, 1.2}}, {}}), 0.0);
   EXPECT_EQ(area(hsr::Polygon3{{{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}, {}}), 0.0);
+}
+
+// At the ends of the supported range, where the Newell vector's squared length would
+// overflow (legs of 1e100: 1e400) or underflow (legs of 1e-100: 1e-400).
+TEST(Area, AtTheEndsOfTheSupportedRangeIsExact) {
+  EXPECT_DOUBLE_EQ(area(hsr::Polygon3{{{0, 0, 0}, {1e100, 0, 0}, {0, 1e100, 0}}, {}}), 5e199);
+  EXPECT_DOUBLE_EQ(area(hsr::Polygon3{{{0, 0, 0}, {0, 1e100, 0}, {0, 0, -1e100}}, {}}), 5e199);
+  EXPECT_DOUBLE_EQ(area(hsr::Polygon3{{{0, 0, 0}, {1e-100, 0, 0}, {0, 1e-100, 1e-100}}, {}}),
+                   0.5 * std::sqrt(2.0) * 1e-200);
 }
 
 TEST(Area, OfSeveralPolygonsIsTheirSum) {

@@ -437,6 +437,36 @@ TEST(ExtremesRegression, FarVertexElsewhereKeepsAFaceNearTheOriginPrecise) {
   EXPECT_LT(c.exact_lit_area, c.face_area - 1.0) << "the occluders must shade the ground";
 }
 
+// The ends of the supported coordinate range (docs/scene-format.md, "Numbers"): scenes
+// scaled so that their largest coordinate, lights included, is 1e100, or by 1e-99 (their
+// smallest faces then span about 1e-100). Shadows do not depend on the unit, so every
+// lit fraction must be the one at scale 1 (checked against the oracle above), and every
+// area scale with the square of the factor. At 1e100 areas once came out inf (squares of
+// 1e200), at 1e-99 zero (squares of 1e-200).
+TEST(ExtremesRange, LitFractionsDoNotDependOnTheScaleUpToTheRangeEnds) {
+  for (const Scene& base : {boxes_with_sun_and_lamp(), holed_with_lights()}) {
+    double largest = largest_coordinate(base);
+    for (const Light& light : base.lights) {
+      if (light.type == LightType::kPoint) {
+        largest = std::max({largest, std::fabs(light.position.x), std::fabs(light.position.y),
+                            std::fabs(light.position.z)});
+      }
+    }
+    const std::vector<ReportRow> unit = report_rows(generate_shadows(base).shadowed);
+    for (const double factor : {1e100 / largest, 1e-99}) {
+      const std::vector<ReportRow> rows =
+          report_rows(generate_shadows(scaled(base, factor)).shadowed);
+      ASSERT_EQ(rows.size(), unit.size());
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        const std::string what = "factor " + std::to_string(factor) + ", row " + std::to_string(i);
+        ASSERT_TRUE(std::isfinite(rows[i].area) && std::isfinite(rows[i].lit_area)) << what;
+        EXPECT_NEAR(rows[i].area / (factor * factor), unit[i].area, 1e-12 * unit[i].area) << what;
+        EXPECT_NEAR(rows[i].lit_fraction, unit[i].lit_fraction, 1e-12) << what;
+      }
+    }
+  }
+}
+
 // Lamps a hair above the ground and above a box's top, from 1e-6 down to 1e-100: the
 // faces under them are grazed (their lit regions come from their planes), and the top
 // 1e-12 below a lamp still occludes the ground (a near-plane floor of 1e-12 of the

@@ -1,0 +1,35 @@
+#include "shadowgen/model/number_text.h"
+
+#include <array>
+#include <system_error>
+
+namespace shadowgen {
+
+void append_shortest(std::string& out, double value) {
+  std::array<char, 32> buffer{};  // 24 characters suffice for any double
+  const char* end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value).ptr;
+  out.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+}
+
+std::string shortest(double value) {
+  std::string out;
+  append_shortest(out, value);
+  return out;
+}
+
+std::string number_text(double value, std::chars_format format, int precision) {
+  // 64 characters hold most forms; a longer one (fixed, or hundreds of digits asked for)
+  // grows the buffer until it fits.
+  std::string out(64, '\0');
+  for (;;) {
+    const std::to_chars_result r =
+        std::to_chars(out.data(), out.data() + out.size(), value, format, precision);
+    if (r.ec == std::errc()) {
+      out.resize(static_cast<std::size_t>(r.ptr - out.data()));
+      return out;
+    }
+    out.resize(2 * out.size());
+  }
+}
+
+}  // namespace shadowgen
