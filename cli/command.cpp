@@ -1,6 +1,8 @@
 #include "cli/command.h"
 
 #include <iostream>
+#include <set>
+#include <utility>
 
 #include "shadowgen/output/atomic_file.h"
 
@@ -36,11 +38,21 @@ CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::
   return command.add_option("-o,--output", path, what);
 }
 
-LoadOptions load_options(const ReadingArgs& args, Accept accept) {
+LoadOptions load_options(const ReadingArgs& args, Accept accept, std::vector<OutputFile> outputs) {
   LoadOptions options;
   options.accept = accept;
   options.strict = args.strict;
   options.threads = args.threads;
+  if (!outputs.empty()) {
+    options.on_scene = [outputs = std::move(outputs)](const Scene& scene) {
+      std::set<std::string> read;
+      for (const Face& face : scene.faces) read.insert(face.source_file);
+      for (const OutputFile& output : outputs) {
+        for (const std::string& file : read)
+          refuse_input_as_output(output.option, output.path, file);
+      }
+    };
+  }
   if (!args.quiet) {
     options.on_warning = [](const std::string& warning) {
       std::cerr << "shadowgen: warning: " << warning << '\n';

@@ -11,6 +11,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "shadowgen/pipeline/load_shadowed.h"
 
@@ -68,7 +69,18 @@ CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::
 void refuse_input_as_output(const std::string& option, const std::string& output,
                             const std::string& input);
 
+// A file a run writes, and the option that names it ("-o", "--obj").
+struct OutputFile {
+  std::string option;
+  std::string path;
+};
+
 // The loading options these arguments ask for: reading warnings on stderr unless quiet.
-LoadOptions load_options(const ReadingArgs& args, Accept accept);
+// Once a scene is read, before its shadows are generated or anything is written, a
+// UsageError when one of `outputs` is a file the scene was read from: the scene itself
+// or one of its mesh files (the input itself is refused earlier, by
+// refuse_input_as_output).
+LoadOptions load_options(const ReadingArgs& args, Accept accept,
+                         std::vector<OutputFile> outputs = {});
 
 }  // namespace shadowgen::cli

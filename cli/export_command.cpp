@@ -36,8 +36,9 @@ void run_export(const ExportArgs& args) {
     throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
   refuse_input_as_output("--obj", obj_path.string(), args.input);
   refuse_input_as_output("--obj", mtl_path.string(), args.input);
-  const ShadowedScene shadowed =
-      load_shadowed(args.input, load_options(args.reading, Accept::kSceneOrDatabase));
+  const ShadowedScene shadowed = load_shadowed(
+      args.input, load_options(args.reading, Accept::kSceneOrDatabase,
+                               {{"--obj", obj_path.string()}, {"--obj", mtl_path.string()}}));
   ObjFiles files;
   try {
     files = obj_export(shadowed, mtl_path.filename().string());

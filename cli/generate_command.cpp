@@ -81,12 +81,14 @@ std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
 }
 
 // Scene `index` of `args`, read and generated, with a progress line when `show_progress`.
-ShadowedScene generated(const GenerateArgs& args, std::size_t index, bool show_progress) {
-  LoadOptions options = load_options(args.reading, Accept::kScene);
+ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std::size_t index,
+                        bool show_progress) {
+  LoadOptions options = load_options(args.reading, Accept::kScene, {{"-o", database.string()}});
   // Ends its line when it goes, so that an error printed afterwards has a line of its own.
   std::optional<ProgressDisplay> progress;
   if (show_progress) {
-    options.on_scene = [&](const Scene& scene) {
+    options.on_scene = [&, check = options.on_scene](const Scene& scene) {
+      check(scene);
       ProgressLine line;
       line.scene = args.scenes[index];
       line.scene_index = index;
@@ -107,7 +109,7 @@ void run_generate(const GenerateArgs& args) {
   const std::vector<fs::path> paths = database_paths(args.scenes, args.output);
   const bool show_progress = !args.reading.quiet && stderr_is_terminal();
   for (std::size_t i = 0; i < args.scenes.size(); ++i) {
-    const ShadowedScene shadowed = generated(args, i, show_progress);
+    const ShadowedScene shadowed = generated(args, paths[i], i, show_progress);
     if (args.scenes.size() > 1) {
       std::error_code error;
       fs::create_directories(args.output, error);

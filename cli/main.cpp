@@ -11,9 +11,11 @@
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <new>
 #include <string>
 
 #include "cli/command.h"
+#include "cli/out_of_memory.h"
 #include "clipper/clip.h"
 #include "hsr/hidden_surface.h"
 #include "shadowgen/shadows/generate.h"
@@ -29,10 +31,27 @@ int fail(const std::exception& e, int code) {
   return code;
 }
 
+// The inputs the subcommand was given: its positional "input", or generate's "scene"
+// files, joined by ", ".
+std::string inputs_of(const CLI::App& parser) {
+  std::string names;
+  for (const char* name : {"input", "scene"}) {
+    const CLI::Option* option = parser.get_option_no_throw(name);
+    if (option == nullptr) continue;
+    for (const std::string& file : option->results()) names += (names.empty() ? "" : ", ") + file;
+  }
+  return names;
+}
+
 // Runs a parsed subcommand; its errors become one line and an exit code.
-int run(const std::function<void()>& command) {
+int run(const shadowgen::cli::Command& command) {
   try {
-    command();
+    command.run();
+  } catch (const std::bad_alloc&) {
+    // out_of_memory.h keeps the unwinding to here from ending the program.
+    std::cerr << "shadowgen: " << inputs_of(*command.parser)
+              << ": out of memory: this input needs more memory than the process may use\n";
+    return kExitBadInput;
   } catch (const shadowgen::cli::UsageError& e) {
     std::cerr << "shadowgen: " << e.what() << "\nRun with --help for more information.\n";
     return kExitUsage;
@@ -54,6 +73,7 @@ int run(const std::function<void()>& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  shadowgen::cli::set_aside_memory_for_unwinding(64u << 20);
   CLI::App app{"shadowgen: exact polygon shadows (Atherton, Weiler and Greenberg 1978)",
                "shadowgen"};
   app.set_version_flag("--version", std::string("shadowgen ") + SHADOWGEN_VERSION);
@@ -72,7 +92,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitUsage;
   }
   for (const shadowgen::cli::Command& command : commands) {
-    if (app.got_subcommand(command.parser)) return run(command.run);
+    if (app.got_subcommand(command.parser)) return run(command);
   }
   return kExitUsage;  // not reached: exactly one subcommand is required
 }

@@ -29,8 +29,10 @@ std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
 
 void run_report(const ReportArgs& args) {
   if (!args.output.empty()) refuse_input_as_output("-o", args.output, args.input);
-  const ShadowedScene shadowed =
-      load_shadowed(args.input, load_options(args.reading, Accept::kSceneOrDatabase));
+  std::vector<OutputFile> outputs;
+  if (!args.output.empty()) outputs.push_back({"-o", args.output});
+  const ShadowedScene shadowed = load_shadowed(
+      args.input, load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs)));
   const std::string report = report_text(shadowed, args);
   if (args.output.empty()) {
     std::cout << report << std::flush;

@@ -151,6 +151,55 @@ TEST_F(Cli, AnOutputThatIsAnInputIsRefused) {
   EXPECT_EQ(nlohmann::json::parse(contents(db))["format"], "shadowgen-shadowed/1");
 }
 
+// The mesh files a scene reads are inputs too: no run writes over one (they were once
+// replaced by a database, an OBJ or a report, with exit 0).
+TEST_F(Cli, AnOutputThatIsAMeshFileOfTheSceneIsRefused) {
+  const std::string mesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  write("tri.obj", mesh);
+  const fs::path scene = write("scene.json", R"({"format": "shadowgen-scene/1",
+    "meshes": [{"id": "m", "file": "tri.obj"}],
+    "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -1]}]})");
+  const std::string out = (dir_ / "tri.obj").string();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"generate", scene.string(), "-o", out},
+        std::vector<std::string>{"report", scene.string(), "-o", out},
+        std::vector<std::string>{"export", scene.string(), "--obj", out}}) {
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 2) << args[0] << ": " << r.err;
+    EXPECT_NE(r.err.find(out + ": is the input"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(contents(dir_ / "tri.obj"), mesh);
+  EXPECT_EQ(files(), (std::vector<std::string>{"scene.json", "tri.obj"}));
+}
+
+// Out of memory: one line naming the input and exit 1, never an abort (a destructor
+// that allocates once made it exit 134 with "std::bad_alloc" and no file named). The
+// address space is limited to 160 MiB, which reading this scene's 100,000 faces outgrows.
+TEST_F(Cli, RunningOutOfMemoryNamesTheInputAndExitsOne) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves far more address space than the limit";
+#else
+  std::string polygons;
+  for (int i = 0; i < 100000; ++i) {
+    if (i > 0) polygons += ",";
+    const std::string x = std::to_string(i);
+    polygons +=
+        R"({"id": "p)" + x + R"(", "outer": [[)" + x + ",0,0],[" + x + ".5,0,0],[" + x + ",1,0]]}";
+  }
+  const fs::path scene = write("big.json", R"({"format": "shadowgen-scene/1", "polygons": [)" +
+                                               polygons + R"(], "lights": []})");
+  const fs::path db = dir_ / "db.json";
+  const int code = shell("ulimit -v 163840 && " + quoted(SHADOWGEN_EXECUTABLE) + " generate " +
+                         quoted(scene.string()) + " -o " + quoted(db.string()) + " 2> " +
+                         quoted((dir_ / "run" / "err").string()));
+  const std::string err = contents(dir_ / "run" / "err");
+  EXPECT_EQ(code, 1) << err;
+  EXPECT_EQ(err, "shadowgen: " + scene.string() +
+                     ": out of memory: this input needs more memory than the process may use\n");
+  EXPECT_FALSE(fs::exists(db));
+#endif
+}
+
 // "-" is standard output for a report; an OBJ export is two files and cannot be one stream.
 TEST_F(Cli, DashIsStandardOutput) {
   const fs::path scene = write("scene.json", kTinyScene);

@@ -93,6 +93,12 @@ class DomBuilder {
   }
 
   bool open(Json container) {
+    if (open_.size() >= kMaxJsonDepth) {
+      const std::string where = path();
+      problem = (where.empty() ? std::string() : where + ": ") + "arrays and objects nested " +
+                "deeper than " + std::to_string(kMaxJsonDepth) + " levels (the limit)";
+      return false;
+    }
     std::string step;
     if (!open_.empty()) {
       const Json& parent = *open_.back().container;
@@ -168,6 +174,16 @@ std::string describe_parse_error(std::string_view text, std::size_t position,
 }
 
 ParseOutcome parse_json(std::string_view text, Json& root) {
+  // nlohmann's parser takes a NUL byte for the end of the text and would accept whatever
+  // came before it, ignoring the rest; JSON text has no NUL byte anywhere.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    const auto [line, column] = line_column(text, nul);
+    ParseOutcome outcome;
+    outcome.problem = "line " + std::to_string(line) + ", column " + std::to_string(column) +
+                      ": invalid JSON: a NUL byte (JSON text has none; is this a binary file?)";
+    root = Json();
+    return outcome;
+  }
   DomBuilder builder(text, root);
   Json::sax_parse(text, &builder);
   ParseOutcome outcome;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "shadowgen/json/detail/json_parse.h"
 #include "shadowgen/json/detail/key_suggestion.h"
 #include "shadowgen/model/input_error.h"
 
@@ -113,6 +114,36 @@ TEST(JsonReader, AKeyGivenTwiceIsRefusedWithItsPath) {
   // The same key in different objects is fine.
   EXPECT_EQ(parse_error(R"({"a": {"k": 1}, "b": {"k": 1}, "c": [{"k": 1}, {"k": 2}]})"),
             "(no error)");
+}
+
+// Nesting is limited (detail::kMaxJsonDepth): a file of nothing but '[' is refused at
+// the limit, with the path of the innermost container, not built to its end (20 million
+// of them once took 2.4 GB).
+TEST(JsonReader, NestingBeyondTheLimitIsRefusedAtTheLimit) {
+  std::string at_limit = R"({"a": )";
+  for (std::size_t i = 1; i < detail::kMaxJsonDepth; ++i) at_limit += '[';
+  at_limit += std::string(detail::kMaxJsonDepth - 1, ']') + "}";
+  EXPECT_EQ(parse_error(at_limit), "(no error)");
+
+  const std::string deep = R"({"faces": [{"id": "w", "k": )" + std::string(20'000'000, '[');
+  const std::string message = parse_error(deep);
+  EXPECT_EQ(message.rfind("in.json: faces[0] ('w').k[0][0]", 0), 0u) << message.substr(0, 200);
+  EXPECT_NE(message.find(": arrays and objects nested deeper than 64 levels (the limit)"),
+            std::string::npos)
+      << message.substr(0, 200);
+  EXPECT_LT(message.size(), 1000u);
+}
+
+// nlohmann's parser stops at a NUL byte as at the end of the text: what followed it was
+// ignored, and a scene with junk after a NUL byte read as valid.
+TEST(JsonReader, ANulByteAnywhereIsRefusedWhereItIs) {
+  using namespace std::string_literals;
+  EXPECT_EQ(parse_error("{\"a\": 1}\n\0garbage"s),
+            "in.json: line 2, column 1: invalid JSON: a NUL byte (JSON text has none; is this a "
+            "binary file?)");
+  EXPECT_EQ(parse_error("{\"a\": \"x\0y\"}"s),
+            "in.json: line 1, column 9: invalid JSON: a NUL byte (JSON text has none; is this a "
+            "binary file?)");
 }
 
 TEST(JsonReader, SyntaxErrorsAndOverflowsAreLocated) {
