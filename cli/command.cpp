@@ -22,6 +22,9 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
   command.add_option("--threads", args.threads,
                      "worker threads when generating, one light each (0: one per hardware "
                      "thread)");
+  command.add_flag("--verbose", args.verbose,
+                   "every reading warning on its own line (a kind of warning that many faces "
+                   "of one mesh draw is otherwise one line)");
   command.add_flag("-q,--quiet", args.quiet,
                    progress ? "do not print reading warnings or the progress line"
                             : "do not print reading warnings");
@@ -43,6 +46,7 @@ LoadOptions load_options(const ReadingArgs& args, Accept accept, std::vector<Out
   options.accept = accept;
   options.strict = args.strict;
   options.threads = args.threads;
+  options.verbose = args.verbose;
   if (!outputs.empty()) {
     options.on_scene = [outputs = std::move(outputs)](const Scene& scene) {
       std::set<std::string> read;

@@ -52,6 +52,7 @@ struct ReadingArgs {
   bool strict = false;
   unsigned threads = 0;  // 0: one per hardware thread
   bool quiet = false;    // no reading warnings (and no progress line)
+  bool verbose = false;  // every reading warning on its own line (ReadOptions::verbose)
 };
 
 // --strict, --threads and -q/--quiet on `command`; `progress`: the subcommand shows a

@@ -14,8 +14,11 @@
 namespace shadowgen::cli {
 namespace {
 
-// The MTL goes next to the OBJ (same stem, ".mtl"): every face split by the set of lights
-// reaching it, one material per set (shadowgen/output/obj_export.h).
+// The MTL goes next to the OBJ, named with the OBJ's stem and ".mtl"; the stem escaped as
+// obj_name() escapes names ("my scene.obj" gets "my%20scene.mtl"), so that the OBJ's
+// mtllib statement, which separates file names by spaces, names it as it is. Every face
+// split by the set of lights reaching it, one material per set
+// (shadowgen/output/obj_export.h).
 struct ExportArgs {
   std::string input;  // a scene (generated first) or a shadowed database
   std::string obj;    // OBJ file to write
@@ -24,8 +27,8 @@ struct ExportArgs {
 
 void run_export(const ExportArgs& args) {
   const std::filesystem::path obj_path = args.obj;
-  std::filesystem::path mtl_path = obj_path;
-  mtl_path.replace_extension(".mtl");
+  const std::filesystem::path mtl_path =
+      obj_path.parent_path() / (obj_name(obj_path.stem().string()) + ".mtl");
   if (mtl_path == obj_path || obj_path.filename().empty()) {
     throw InputError(args.obj, "",
                      "not a usable OBJ file name: the MTL file goes next to it, named with "
@@ -64,7 +67,8 @@ Command add_export_command(CLI::App& app) {
   return make_command<ExportArgs>(
       app, "export",
       "Write the shadowed scene as a Wavefront OBJ and its MTL (same stem, \".mtl\", next to "
-      "the OBJ): every face split into the regions lit by the same set of lights, grouped by "
+      "the OBJ; spaces and other bytes OBJ names cannot hold escaped as %XX): every face split "
+      "into the regions lit by the same set of lights, grouped by "
       "face id, one material per light set (\"shadow\", \"sun\", \"sun+lamp\"; shadow grey "
       "0.2, lit parts lighter). A scene is generated first; a shadowed database is read as "
       "it is.",

@@ -16,6 +16,7 @@ namespace {
 struct ReportArgs {
   std::string input;           // a scene (generated first) or a shadowed database
   std::string format = "csv";  // csv, json or table
+  bool csv_safe = false;       // CsvIds::kSpreadsheetSafe
   std::string output;          // empty: standard output
   std::size_t top = 10;        // table: most shadowed faces listed per light
   ReadingArgs reading;
@@ -24,7 +25,7 @@ struct ReportArgs {
 std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
   if (args.format == "json") return report_json(shadowed);
   if (args.format == "table") return report_table(shadowed, args.top);
-  return report_csv(shadowed);
+  return report_csv(shadowed, args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
 }
 
 void run_report(const ReportArgs& args) {
@@ -61,13 +62,21 @@ Command add_report_command(CLI::App& app) {
                                       "with --format table: most shadowed faces listed per "
                                       "light (default 10, 0 for none)")
                          ->check(CLI::NonNegativeNumber);
+  CLI::Option* csv_safe =
+      command->add_flag("--csv-safe", args->csv_safe,
+                        "CSV: put ' before an id that begins with =, +, -, @, a tab or a "
+                        "carriage return, which spreadsheets would run as a formula (ids from "
+                        "a scene made elsewhere could carry one)");
   add_output_option(*command, args->output,
                     "file to write (replaced whole); default: standard output");
   add_reading_options(*command, args->reading);
   // Run at the end of parsing, so that the error is reported as a parse error is.
-  command->callback([args, top] {
+  command->callback([args, top, csv_safe] {
     if (top->count() > 0 && args->format != "table") {
       throw CLI::ValidationError("--top", "applies only to --format table");
+    }
+    if (csv_safe->count() > 0 && args->format != "csv") {
+      throw CLI::ValidationError("--csv-safe", "applies only to --format csv");
     }
   });
   return {command, [args] { run_report(*args); }};

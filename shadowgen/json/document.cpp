@@ -1,6 +1,7 @@
 #include "shadowgen/json/document.h"
 
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -92,13 +93,22 @@ class FormatScanner {
 }  // namespace
 
 std::string read_text_file(const std::filesystem::path& path, std::string_view what) {
+  std::ostringstream text;
+  if (path == "-") {
+    text << std::cin.rdbuf();
+    if (std::cin.bad()) throw InputError("-", "", "cannot read standard input");
+    return std::move(text).str();
+  }
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throw InputError(path.string(), "", "is a folder, not a file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open the " + std::string(what));
-  std::ostringstream text;
+  if (!in) {
+    throw InputError(path.string(), "",
+                     std::filesystem::exists(path, error) ? "cannot open the " + std::string(what)
+                                                          : "no such file");
+  }
   text << in.rdbuf();
   if (in.bad()) throw InputError(path.string(), "", "cannot read the " + std::string(what));
   return std::move(text).str();

@@ -19,8 +19,8 @@ struct Document {
   std::string format;  // the value of the top-level "format" key
 };
 
-// The whole bytes of a file; InputError naming the file when it cannot be read (`what`
-// says what it is in the message: "file", "mesh file").
+// The whole bytes of a file, or of standard input for "-"; InputError naming the file
+// when it cannot be read (`what` says what it is in the message: "file", "mesh file").
 std::string read_text_file(const std::filesystem::path& path, std::string_view what = "file");
 
 // The value of the top-level "format" key. The text is scanned only up to that key,

@@ -204,11 +204,19 @@ std::string mtl_text(const Scene& scene,
 }  // namespace
 
 std::string obj_name(std::string_view name) {
-  if (name.empty()) return "_";
-  std::string out(name);
-  for (char& c : out) {
+  if (name.empty()) return "%";
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  out.reserve(name.size());
+  for (const char c : name) {
     const auto byte = static_cast<unsigned char>(c);
-    if (byte <= 0x20 || byte >= 0x7f || c == '#') c = '_';
+    if (byte <= 0x20 || byte >= 0x7f || c == '#' || c == '%') {
+      out += '%';
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    } else {
+      out += c;
+    }
   }
   return out;
 }

@@ -48,9 +48,11 @@ namespace shadowgen {
 
 inline constexpr double kAmbientGrey = 0.2;
 
-// A name as OBJ and MTL statements can hold it: bytes that are whitespace, control
-// characters, '#' (a comment) or outside printable ASCII become '_'; an empty name
-// becomes "_".
+// A name as OBJ and MTL statements can hold it (one word, no comment), escaped so that
+// distinct names stay distinct and the original can be read back: each byte that is
+// whitespace, a control character, '#' (a comment), '%' (the escape) or outside
+// printable ASCII becomes %XX, its value in upper-case hex ("a b" is "a%20b", "a_b" stays
+// "a_b", "café" is "caf%C3%A9"). The empty name, which no id is, becomes "%".
 std::string obj_name(std::string_view name);
 
 // The MTL Kd of a light set (the colour rule above); `lights` as in LightRegion.

@@ -48,12 +48,19 @@ void append_csv_number(std::string& out, double value) {
 }
 
 // RFC 4180: a field holding a comma, a quote, CR or LF is quoted, its quotes doubled.
-void append_csv_field(std::string& out, std::string_view field) {
+// CsvIds::kSpreadsheetSafe first puts "'" before a field a spreadsheet would take for a
+// formula.
+void append_csv_field(std::string& out, std::string_view field, CsvIds ids) {
+  const bool formula =
+      !field.empty() && std::string_view("=+-@\t\r").find(field.front()) != std::string_view::npos;
+  const std::string_view guard = ids == CsvIds::kSpreadsheetSafe && formula ? "'" : "";
   if (field.find_first_of(",\"\r\n") == std::string_view::npos) {
+    out += guard;
     out += field;
     return;
   }
   out += '"';
+  out += guard;
   for (const char c : field) {
     if (c == '"') out += '"';
     out += c;
@@ -230,13 +237,13 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
   return rows;
 }
 
-std::string report_csv(const ShadowedScene& shadowed) {
+std::string report_csv(const ShadowedScene& shadowed, CsvIds ids) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   std::string out = "face_id,light_id,area,lit_area,lit_fraction\n";
   for (const ReportRow& row : rows) {
-    append_csv_field(out, shadowed.scene.faces[row.face].id);
+    append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
     out += ',';
-    append_csv_field(out, shadowed.scene.lights[row.light].id);
+    append_csv_field(out, shadowed.scene.lights[row.light].id, ids);
     out += ',';
     append_csv_number(out, row.area);
     out += ',';

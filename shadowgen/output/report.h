@@ -28,10 +28,20 @@ struct ReportRow {
 // forms below, holds inf or nan.
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed);
 
+// How ids are written in the CSV.
+enum class CsvIds {
+  kExact,  // byte for byte (the spec's CSV, for reading back)
+  // An id that begins with '=', '+', '-', '@', a tab or a carriage return gets a leading
+  // "'": spreadsheets take such a field for a formula, which a scene from elsewhere could
+  // use to run one on whoever opens the report (CSV injection). The id then reads back
+  // with that "'" in front.
+  kSpreadsheetSafe,
+};
+
 // The spec's CSV: header face_id,light_id,area,lit_area,lit_fraction; numbers with %.17g;
 // ids quoted as RFC 4180 says when they hold a comma, a quote or a line break. Lines end
 // with "\n".
-std::string report_csv(const ShadowedScene& shadowed);
+std::string report_csv(const ShadowedScene& shadowed, CsvIds ids = CsvIds::kExact);
 
 // The same rows as JSON, with totals per light and for the scene:
 //

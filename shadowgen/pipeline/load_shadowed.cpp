@@ -57,6 +57,7 @@ ShadowedScene database(const Document& document, const ReadOptions& read,
 ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options) {
   ReadOptions read;
   read.strict = options.strict;
+  read.verbose = options.verbose;
   // A scene only: the scene reader's own messages, a wrong "format" included.
   if (options.accept == Accept::kScene) return generated(read_scene(path, read), path, options);
 

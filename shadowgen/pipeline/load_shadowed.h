@@ -26,6 +26,7 @@ enum class Accept {
 struct LoadOptions {
   Accept accept = Accept::kSceneOrDatabase;
   bool strict = false;   // ReadOptions::strict, for a scene and a database alike
+  bool verbose = false;  // ReadOptions::verbose
   unsigned threads = 0;  // GenerateOptions::threads
   // Each reading warning, a line naming the file; dropped when empty.
   std::function<void(const std::string& warning)> on_warning;

@@ -8,6 +8,13 @@ struct ReadOptions {
   // What is otherwise a warning is an error: a non-planar polygon (instead of being split
   // into triangles), a key the format does not define.
   bool strict = false;
+  // Every warning on a line of its own. Otherwise a kind of warning that more than
+  // kWarningsListed faces of one mesh draw is one line: how many, the kind, the first
+  // faces' ids ("56 faces of mesh 'spider': zero area: spider/924, spider/927,
+  // spider/931, ... (--verbose lists all)").
+  bool verbose = false;
 };
+
+inline constexpr int kWarningsListed = 3;
 
 }  // namespace shadowgen

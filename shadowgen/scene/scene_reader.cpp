@@ -1,14 +1,12 @@
 #include "shadowgen/scene/scene_reader.h"
 
-#include <fstream>
-#include <sstream>
 #include <string_view>
-#include <system_error>
 #include <utility>
 
 #include "detail/face_builder.h"
 #include "detail/json_entities.h"
 #include "detail/mesh_entry.h"
+#include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
 
@@ -38,7 +36,7 @@ class SceneParser {
     if (const std::optional<JsonValue> meshes = top.find("meshes")) {
       const JsonArray list = meshes->array();
       for (std::size_t i = 0; i < list.size(); ++i) {
-        detail::read_mesh_entry(list.at(i), path_, options_.strict, face_ids_, result_.scene.faces,
+        detail::read_mesh_entry(list.at(i), path_, options_, face_ids_, result_.scene.faces,
                                 result_.warnings);
       }
     }
@@ -125,20 +123,7 @@ class SceneParser {
 }  // namespace
 
 ReadResult read_scene(const std::filesystem::path& path, const ReadOptions& options) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path.string(), "", "is a directory, not a scene file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InputError(
-        path.string(), "",
-        std::filesystem::exists(path, error) ? "cannot open the scene file" : "no such file");
-  }
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw InputError(path.string(), "", "cannot read the scene file");
-  return parse_scene(content.str(), path, options);
+  return parse_scene(read_text_file(path, "scene file"), path, options);
 }
 
 ReadResult parse_scene(const std::string& json_text, const std::filesystem::path& path,

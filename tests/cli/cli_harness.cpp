@@ -41,7 +41,8 @@ void write_file(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-Outcome run_shadowgen(const std::vector<std::string>& args, const fs::path& run_dir) {
+Outcome run_shadowgen(const std::vector<std::string>& args, const fs::path& run_dir,
+                      const fs::path& standard_input) {
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on `" " + std::string`.
   std::string command = quoted(SHADOWGEN_EXECUTABLE);
   for (const std::string& arg : args) {
@@ -52,7 +53,8 @@ Outcome run_shadowgen(const std::vector<std::string>& args, const fs::path& run_
   command += quoted((run_dir / "out").string());
   command += " 2>";
   command += quoted((run_dir / "err").string());
-  command += " </dev/null";
+  command += " <";
+  command += quoted(standard_input.string());
   Outcome result;
   result.code = shell(command);
   result.out = contents(run_dir / "out");

@@ -36,9 +36,11 @@ std::string contents(const fs::path& path);
 // Writes `text` to `path`, byte for byte.
 void write_file(const fs::path& path, const std::string& text);
 
-// Runs shadowgen with `args` and no stdin; stdout and stderr go through the files out and
-// err in `run_dir`, so that they stay apart from the files the tests look at.
-Outcome run_shadowgen(const std::vector<std::string>& args, const fs::path& run_dir);
+// Runs shadowgen with `args` and `standard_input` as its stdin (by default none: /dev/null);
+// stdout and stderr go through the files out and err in `run_dir`, so that they stay apart
+// from the files the tests look at.
+Outcome run_shadowgen(const std::vector<std::string>& args, const fs::path& run_dir,
+                      const fs::path& standard_input = "/dev/null");
 
 // Runs shadowgen with a pseudo-terminal as its stdin, stdout and stderr, as when a person
 // runs it; `out` gets all it printed, `err` stays empty.

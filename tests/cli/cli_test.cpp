@@ -210,6 +210,26 @@ TEST_F(Cli, DashIsStandardOutput) {
   EXPECT_EQ(files(), (std::vector<std::string>{"scene.json"}));
 }
 
+// "-" as the input is standard input: a scene (its meshes relative to the working folder)
+// or a database, named "-" in messages.
+TEST_F(Cli, DashIsStandardInput) {
+  const fs::path scene = write("scene.json", kTinyScene);
+  const Outcome report = run_shadowgen({"report", "-"}, dir_ / "run", scene);
+  ASSERT_EQ(report.code, 0) << report.err;
+  EXPECT_EQ(report.out, kTinyCsv);
+
+  const fs::path db = dir_ / "db.json";
+  ASSERT_EQ(run_shadowgen({"generate", "-", "-o", db.string()}, dir_ / "run", scene).code, 0);
+  const Outcome from_db = run_shadowgen({"report", "-"}, dir_ / "run", db);
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  EXPECT_EQ(from_db.out, kTinyCsv);
+
+  const fs::path broken = write("broken.json", R"({"format": "shadowgen-scene/1", "polygons": [)");
+  const Outcome bad = run_shadowgen({"report", "-"}, dir_ / "run", broken);
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_EQ(bad.err.rfind("shadowgen: -: line 1, column 46: invalid JSON", 0), 0u) << bad.err;
+}
+
 TEST_F(Cli, UnreadableInputsExitOne) {
   const Outcome missing = run({"report", (dir_ / "missing.json").string()});
   EXPECT_EQ(missing.code, 1);

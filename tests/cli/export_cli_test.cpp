@@ -128,6 +128,18 @@ TEST_F(ExportCli, CourtyardFromDatabaseAndFromSceneMatchTheReport) {
   std::printf("courtyard, two lights: worst relative area error %.3g\n", worst);
 }
 
+// An OBJ whose name has a space: mtllib separates file names by spaces, so the MTL is
+// named with the escaped stem and mtllib names it as it is (it once read "mtllib my
+// scene.mtl", two files that do not exist).
+TEST_F(ExportCli, AnObjNameWithASpaceGetsAnMtlThatMtllibNamesWhole) {
+  const Outcome r = run({"export", kCourtyard.string(), "--obj", (dir_ / "my scene.obj").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"my scene.obj", "my%20scene.mtl"}));
+  const std::string obj = contents(dir_ / "my scene.obj");
+  EXPECT_NE(obj.find("\nmtllib my%20scene.mtl\n"), std::string::npos) << obj.substr(0, 200);
+  EXPECT_TRUE(parse_mtl(contents(dir_ / "my%20scene.mtl")).errors.empty());
+}
+
 TEST_F(ExportCli, SingleLightLitMaterialAreaIsTheReportsLitArea) {
   nlohmann::json scene = nlohmann::json::parse(contents(kCourtyard));
   scene["lights"].erase(1);  // keep the sun only

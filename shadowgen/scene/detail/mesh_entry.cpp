@@ -1,5 +1,6 @@
 #include "detail/mesh_entry.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -97,10 +98,54 @@ hsr::Polygon3 face_polygon(const MeshFaceRecord& record, const std::vector<Place
   return polygon;
 }
 
+// A mesh's face warnings, grouped by kind: the text after "file: face 'id': " up to its
+// first " (" or ":" ("zero area", "not planar"), in the order the kinds first appear.
+class WarningSummary {
+ public:
+  WarningSummary(std::string file, std::string mesh_id)
+      : file_(std::move(file)), mesh_id_(std::move(mesh_id)) {}
+
+  void add(const std::string& face_id, std::string line) {
+    const std::string prefix = face_message(file_, face_id, "");
+    std::string what = line.rfind(prefix, 0) == 0 ? line.substr(prefix.size()) : line;
+    std::string kind = what.substr(0, std::min(what.find(" ("), what.find(':')));
+    auto it = std::find_if(kinds_.begin(), kinds_.end(),
+                           [&kind](const Kind& k) { return k.name == kind; });
+    if (it == kinds_.end()) it = kinds_.insert(kinds_.end(), Kind{std::move(kind), {}, {}});
+    it->face_ids.push_back(face_id);
+    it->lines.push_back(std::move(line));
+  }
+
+  void append_to(std::vector<std::string>& warnings, bool verbose) const {
+    for (const Kind& kind : kinds_) {
+      const std::size_t n = kind.face_ids.size();
+      if (verbose || n <= static_cast<std::size_t>(kWarningsListed)) {
+        warnings.insert(warnings.end(), kind.lines.begin(), kind.lines.end());
+        continue;
+      }
+      std::string what =
+          std::to_string(n) + " faces of mesh '" + mesh_id_ + "': " + kind.name + ":";
+      for (int i = 0; i < kWarningsListed; ++i)
+        what += " " + kind.face_ids[static_cast<std::size_t>(i)] + ",";
+      warnings.push_back(face_message(file_, "", what + " ... (--verbose lists all)"));
+    }
+  }
+
+ private:
+  struct Kind {
+    std::string name;
+    std::vector<std::string> face_ids;
+    std::vector<std::string> lines;
+  };
+  std::string file_;
+  std::string mesh_id_;
+  std::vector<Kind> kinds_;
+};
+
 }  // namespace
 
-void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path, bool strict,
-                     IdRegistry& ids, std::vector<Face>& faces,
+void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path,
+                     const ReadOptions& options, IdRegistry& ids, std::vector<Face>& faces,
                      std::vector<std::string>& warnings) {
   JsonObject entry = value.object();
   const std::string id = read_id(entry);
@@ -127,11 +172,17 @@ void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_
   for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
     placed[v] = transform ? place(*transform, soup.vertices[v]) : PlacedVertex{soup.vertices[v]};
   }
+  WarningSummary summary(mesh_file, id);
+  std::vector<std::string> face_warnings;
   for (std::size_t k = 0; k < soup.faces.size(); ++k) {
     const std::string face_id = id + "/" + std::to_string(k);
     faces.push_back(build_face(face_polygon(soup.faces[k], placed, mesh_file, face_id),
-                               {face_id, mesh_file, FaceKind::kMeshFace}, strict, warnings));
+                               {face_id, mesh_file, FaceKind::kMeshFace}, options.strict,
+                               face_warnings));
+    for (std::string& line : face_warnings) summary.add(face_id, std::move(line));
+    face_warnings.clear();
   }
+  summary.append_to(warnings, options.verbose);
 }
 
 }  // namespace shadowgen::detail

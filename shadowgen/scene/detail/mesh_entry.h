@@ -10,13 +10,16 @@
 #include "detail/json_entities.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/scene.h"
+#include "shadowgen/scene/read_options.h"
 
 namespace shadowgen::detail {
 
 // Appends the mesh's faces to `faces`, in file order. `scene_path` is the scene file: the
 // mesh's "file" is relative to its folder. The mesh id is claimed in `ids`. Throws
 // InputError naming the scene (for the entry) or the mesh file (for its faces).
-void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path, bool strict,
-                     IdRegistry& ids, std::vector<Face>& faces, std::vector<std::string>& warnings);
+// Warnings are summarised as ReadOptions::verbose says.
+void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path,
+                     const ReadOptions& options, IdRegistry& ids, std::vector<Face>& faces,
+                     std::vector<std::string>& warnings);
 
 }  // namespace shadowgen::detail

@@ -62,7 +62,7 @@ TEST(ReadDocument, NamesAFileThatCannotBeRead) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "/nonexistent/scene.json");
-    EXPECT_EQ(e.problem(), "cannot open the file");
+    EXPECT_EQ(e.problem(), "no such file");
   }
   try {
     (void)read_document(::testing::TempDir());

@@ -200,14 +200,19 @@ TEST(ObjExport, ShadowIsDarkerThanLitInEveryChannel) {
   }
 }
 
-TEST(ObjExport, NamesAreSanitisedAndMaterialsStayDistinct) {
+// Names are escaped reversibly: distinct ids stay distinct ("a b" and "a_b" once both
+// became "a_b", which merged their groups and materials in viewers).
+TEST(ObjExport, NamesAreEscapedAndMaterialsStayDistinct) {
   EXPECT_EQ(obj_name("sun"), "sun");
   EXPECT_EQ(obj_name("mesh/12"), "mesh/12");
-  EXPECT_EQ(obj_name("a b\tc#d"), "a_b_c_d");
-  EXPECT_EQ(obj_name("caf\xc3\xa9"), "caf__");
-  EXPECT_EQ(obj_name(""), "_");
+  EXPECT_EQ(obj_name("a b\tc#d"), "a%20b%09c%23d");
+  EXPECT_EQ(obj_name("caf\xc3\xa9"), "caf%C3%A9");
+  EXPECT_EQ(obj_name("50%"), "50%25");
+  EXPECT_EQ(obj_name(std::string("nul\0", 4)), "nul%00");
+  EXPECT_EQ(obj_name(""), "%");
+  EXPECT_NE(obj_name("a b"), obj_name("a_b"));
+  EXPECT_NE(obj_name("a%20b"), obj_name("a b"));
 
-  // "a b" and "a_b" sanitise alike: the later set's name gets ~2.
   std::string two = kTwoLights;
   two.replace(two.find("\"down\""), 6, "\"a b\"");
   two.replace(two.find("\"slant\""), 7, "\"a_b\"");
@@ -215,11 +220,11 @@ TEST(ObjExport, NamesAreSanitisedAndMaterialsStayDistinct) {
   const ObjFiles files = obj_export(s, "names.mtl");
   ExpectObjMatches(s, files, 1e-12);
   EXPECT_EQ(test::parse_mtl(files.mtl).order,
-            (std::vector<std::string>{"shadow", "a_b", "a_b~2", "a_b+a_b"}));
-  EXPECT_NE(files.mtl.find("# lights: a_b\nnewmtl a_b~2\n"), std::string::npos) << files.mtl;
+            (std::vector<std::string>{"shadow", "a%20b", "a_b", "a%20b+a_b"}));
+  EXPECT_NE(files.mtl.find("# lights: a_b\nnewmtl a_b\n"), std::string::npos) << files.mtl;
   const std::map<std::string, double> ground =
       test::material_areas(test::parse_obj(files.obj).groups[0]);
-  EXPECT_NEAR(ground.at("a_b+a_b"), 80.0, 1e-12);
+  EXPECT_NEAR(ground.at("a%20b+a_b"), 80.0, 1e-12);
 
   // A light called "shadow" meets the empty set's name; a face id with a space.
   const ShadowedScene lone = generated(R"({
@@ -236,7 +241,7 @@ TEST(ObjExport, NamesAreSanitisedAndMaterialsStayDistinct) {
             (std::vector<std::string>{"shadow", "shadow~2"}));
   const test::ObjText obj = test::parse_obj(lone_files.obj);
   ASSERT_EQ(obj.groups.size(), 2u);
-  EXPECT_EQ(obj.groups[0].name, "the_ground");
+  EXPECT_EQ(obj.groups[0].name, "the%20ground");
   EXPECT_EQ(test::material_areas(obj.groups[0]).at("shadow~2"), 84.0);
   EXPECT_EQ(test::material_areas(obj.groups[0]).at("shadow"), 16.0);
 }

@@ -106,6 +106,27 @@ TEST(ReportCsv, IdsAreQuotedAsRfc4180Says) {
             expected_header);
 }
 
+// Ids a spreadsheet would run as formulas: kept exact by default (the spec's CSV reads
+// back byte for byte), guarded with a leading "'" under CsvIds::kSpreadsheetSafe.
+TEST(ReportCsv, SpreadsheetSafeIdsCannotStartAFormula) {
+  auto first_row = [](const std::string& csv) {
+    const std::size_t start = csv.find('\n') + 1;
+    return csv.substr(start, csv.find(",98,") - start);
+  };
+  const ShadowedScene formula = scene_with_ids("=HYPERLINK(\"x\")", "+sun");
+  EXPECT_EQ(first_row(report_csv(formula)), "\"=HYPERLINK(\"\"x\"\")\",+sun");
+  EXPECT_EQ(first_row(report_csv(formula, CsvIds::kSpreadsheetSafe)),
+            "\"'=HYPERLINK(\"\"x\"\")\",'+sun");
+  for (const char* id : {"-1", "@cmd", "\tx", "\rx"}) {
+    const std::string row =
+        first_row(report_csv(scene_with_ids(id, "sun"), CsvIds::kSpreadsheetSafe));
+    EXPECT_TRUE(row.rfind("'", 0) == 0 || row.rfind("\"'", 0) == 0) << row;
+  }
+  // Ids that cannot start a formula are written as they are.
+  EXPECT_EQ(first_row(report_csv(scene_with_ids("a-b", "sun="), CsvIds::kSpreadsheetSafe)),
+            "a-b,sun=");
+}
+
 TEST(ReportRows, OrderAndValues) {
   const std::vector<ReportRow> rows = report_rows(scene_with_ids("ground", "sun"));
   ASSERT_EQ(rows.size(), 6u);

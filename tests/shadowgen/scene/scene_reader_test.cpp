@@ -822,6 +822,34 @@ f 3 2 1
                                "with area 0");
 }
 
+// Warnings of one kind on many faces of one mesh are one line, naming how many and the
+// first ids (a mesh once gave 56 separate zero-area lines); ReadOptions::verbose lists
+// them all, and a few stay listed one by one.
+TEST(SceneReaderMeshes, RepeatedWarningsOfOneMeshAreSummarised) {
+  // Faces 0, 2, 3, 4 and 6 have zero area: collinear, or fewer than 3 distinct vertices.
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\n"
+      "f 1 2 3\nf 1 2 4\nf 1 1 2\nf 3 2 1\nf 1 3 2\nf 2 4 1\nf 4 4 4\n";
+  write_file(temp_dir() / "slivers.obj", obj);
+  const std::string text = scene(R"("meshes": [{"id": "m", "file": "slivers.obj"}])");
+  const std::string file = (temp_dir() / "slivers.obj").string();
+  const ReadResult summarised = parse(text);
+  ASSERT_EQ(summarised.scene.faces.size(), 7u);
+  ASSERT_EQ(summarised.warnings.size(), 1u);
+  EXPECT_EQ(summarised.warnings[0],
+            file + ": 5 faces of mesh 'm': zero area: m/0, m/2, m/3, ... (--verbose lists all)");
+
+  const ReadResult all = parse(text, {.verbose = true});
+  ASSERT_EQ(all.warnings.size(), 5u);
+  EXPECT_EQ(all.warnings[1],
+            file + ": face 'm/2': zero area (fewer than 3 distinct vertices): kept, with area 0");
+
+  write_file(temp_dir() / "few.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 3 2 1\n");
+  const ReadResult few = parse(scene(R"("meshes": [{"id": "m", "file": "few.obj"}])"));
+  ASSERT_EQ(few.warnings.size(), 2u);
+  EXPECT_NE(few.warnings[0].find("face 'm/0': zero area"), std::string::npos) << few.warnings[0];
+}
+
 TEST(SceneReaderMeshes, ObjKeepsFullDoublePrecision) {
   const ReadResult r =
       read_one_mesh("precise.obj", "v 0.1 0.2 0.3\nv 1.1 0.2 0.3\nv 0.1 1.2 0.3\nf 1 2 3\n");
