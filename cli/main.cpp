@@ -18,6 +18,7 @@
 #include "cli/out_of_memory.h"
 #include "clipper/clip.h"
 #include "hsr/hidden_surface.h"
+#include "shadowgen/model/one_line.h"
 #include "shadowgen/shadows/generate.h"
 
 namespace {
@@ -49,7 +50,7 @@ int run(const shadowgen::cli::Command& command) {
     command.run();
   } catch (const std::bad_alloc&) {
     // out_of_memory.h keeps the unwinding to here from ending the program.
-    std::cerr << "shadowgen: " << inputs_of(*command.parser)
+    std::cerr << "shadowgen: " << shadowgen::one_line(inputs_of(*command.parser))
               << ": out of memory: this input needs more memory than the process may use\n";
     return kExitBadInput;
   } catch (const shadowgen::cli::UsageError& e) {

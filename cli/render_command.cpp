@@ -3,7 +3,9 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vector_relational.hpp>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -11,7 +13,9 @@
 #include <string_view>
 
 #include "cli/command.h"
+#include "shadowgen/model/coordinate_range.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/number_text.h"
 #include "shadowgen/view/camera.h"
 #include "shadowgen/view/render.h"
 #include "shadowgen/view/svg_writer.h"
@@ -24,7 +28,7 @@ namespace {
 struct RenderArgs {
   std::string database;
   std::string view;             // a view id of the database, or empty
-  std::string eye, target, up;  // X,Y,Z (kTriple), or empty
+  std::string eye, target, up;  // X,Y,Z (kPoint, kPoint, kTriple), or empty
   double fov_deg = 45.0;
   bool ortho = false;
   double scale = 0.0;  // orthographic pixels per scene unit; 0 fits the scene
@@ -59,6 +63,19 @@ glm::dvec3 triple_or(const std::string& text, const glm::dvec3& fallback) {
 const CLI::Validator kTriple(
     [](std::string& text) {
       return parse_triple(text) ? std::string() : "expected X,Y,Z (three numbers), got " + text;
+    },
+    "X,Y,Z");
+
+// A point of the scene: a triple within the supported coordinate range.
+const CLI::Validator kPoint(
+    [](std::string& text) {
+      const std::optional<glm::dvec3> p = parse_triple(text);
+      if (!p) return "expected X,Y,Z (three numbers), got " + text;
+      if (glm::any(glm::greaterThan(glm::abs(*p), glm::dvec3(kLargestCoordinate)))) {
+        return text + " is outside the supported range (coordinates of magnitude at most " +
+               shortest(kLargestCoordinate) + ")";
+      }
+      return std::string();
     },
     "X,Y,Z");
 
@@ -110,11 +127,11 @@ void add_camera_options(CLI::App& command, RenderArgs& args) {
       command.add_option_group("camera", "where to look from: exactly one of these");
   camera->add_option("--view", args.view, "id of one of the database's views");
   CLI::Option* eye =
-      camera->add_option("--eye", args.eye, "eye position X,Y,Z (with --target)")->check(kTriple);
+      camera->add_option("--eye", args.eye, "eye position X,Y,Z (with --target)")->check(kPoint);
   camera->require_option(1);
   CLI::Option* target =
       command.add_option("--target", args.target, "point looked at X,Y,Z (with --eye)")
-          ->check(kTriple);
+          ->check(kPoint);
   CLI::Option* up =
       command.add_option("--up", args.up, "up direction X,Y,Z (default 0,0,1)")->check(kTriple);
   CLI::Option* fov = command.add_option("--fov", args.fov_deg,

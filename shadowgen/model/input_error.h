@@ -2,6 +2,8 @@
 
 // Errors in user input: what is wrong, in which file, on which face (when one is to blame).
 // The library throws them; the command line turns them into one message and exit code 1.
+// what() is one line whatever the file name, id or problem hold (shadowgen/model/one_line.h);
+// file(), face_id() and problem() are as given.
 
 #include <stdexcept>
 #include <string>

@@ -14,6 +14,7 @@
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
+#include "shadowgen/model/one_line.h"
 
 namespace shadowgen {
 namespace {
@@ -79,29 +80,6 @@ std::string readable_area(double value) {
 
 std::string readable_fraction(double value) {
   return number_text(value, std::chars_format::fixed, 4);
-}
-
-// An id on one line of a table: control characters escaped (\n, \r, \t, \xHH).
-std::string table_id(std::string_view id) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (const char c : id) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\r') {
-      out += "\\r";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else if (byte < 0x20 || byte == 0x7f) {
-      out += "\\x";
-      out += kHex[byte >> 4];
-      out += kHex[byte & 0xf];
-    } else {
-      out += c;
-    }
-  }
-  return out;
 }
 
 // Columns as wide as their widest cell, counted in UTF-8 code points (continuation bytes
@@ -298,7 +276,7 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
   for (std::size_t l = 0; l < lights; ++l) {
     const double area_value = sums.light_area[l];
     const double lit_value = sums.light_lit_area[l];
-    totals.add({table_id(scene.lights[l].id), std::to_string(scene.faces.size()),
+    totals.add({one_line(scene.lights[l].id), std::to_string(scene.faces.size()),
                 std::to_string(sums.lit_faces[l]), readable_area(area_value),
                 readable_area(lit_value), readable_fraction(fraction(lit_value, area_value))});
   }
@@ -317,14 +295,14 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
         shadowed_rows.begin(), shadowed_rows.end(),
         [](const ReportRow* a, const ReportRow* b) { return a->lit_fraction < b->lit_fraction; });
     const std::size_t shown = std::min(top, shadowed_rows.size());
-    out += "\nmost shadowed faces under " + table_id(scene.lights[l].id) +
+    out += "\nmost shadowed faces under " + one_line(scene.lights[l].id) +
            " (lowest lit fraction first, " + std::to_string(shown) + " of " +
            std::to_string(shadowed_rows.size()) + ")\n";
     TextTable faces({false, true, true, true});
     faces.add({"face_id", "area", "lit_area", "lit_fraction"});
     for (std::size_t i = 0; i < shown; ++i) {
       const ReportRow& row = *shadowed_rows[i];
-      faces.add({table_id(scene.faces[row.face].id), readable_area(row.area),
+      faces.add({one_line(scene.faces[row.face].id), readable_area(row.area),
                  readable_area(row.lit_area), readable_fraction(row.lit_fraction)});
     }
     faces.append_to(out);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include "clipper/clip.h"
@@ -13,6 +14,7 @@
 #include "detail/lit_parts.h"
 #include "detail/part_failure.h"
 #include "detail/receivers.h"
+#include "shadowgen/model/one_line.h"
 #include "shadowgen/shadows/light_views.h"
 
 namespace shadowgen {
@@ -46,6 +48,12 @@ std::vector<std::vector<LitPolygon>> light_one_named(const Scene& scene,
                           "lit region not computed: " + std::string(e.what()));
   } catch (const clipper::SnapRoundingError& e) {
     throw GenerationError("", "", light_id, "lit region not computed: " + std::string(e.what()));
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory: the command line names the input
+  } catch (const std::exception& e) {
+    // Any other failure of a stage (a view that cannot be built, say) still names the
+    // light, and the caller adds the file: never a bare internal message.
+    throw GenerationError("", "", light_id, "lit region not computed: " + std::string(e.what()));
   }
 }
 
@@ -56,7 +64,7 @@ std::string GenerationError::format(const std::string& file, const std::string& 
   std::string s = file.empty() ? "" : file + ": ";
   if (!face_id.empty()) s += "face '" + face_id + "'" + (light_id.empty() ? ": " : ", ");
   if (!light_id.empty()) s += "light '" + light_id + "': ";
-  return s + problem;
+  return one_line(s + problem);
 }
 
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options) {

@@ -208,6 +208,12 @@ TEST_F(RenderCli, UsageErrorsExitTwoAndLeaveNoSvg) {
   EXPECT_EQ(run({"render", db, "--target", "1,2,3", "--svg", svg}).code, 2);  // no eye
   EXPECT_EQ(run({"render", db, "--eye", "1,2", "--target", "0,0,0", "--svg", svg}).code, 2);
   EXPECT_EQ(run({"render", db, "--eye", "1,2,x", "--target", "0,0,0", "--svg", svg}).code, 2);
+  // Beyond the supported coordinate range (it was once "view direction must be finite").
+  const Outcome far = run({"render", db, "--eye", "1e300,0,10", "--target", "0,0,0", "--svg", svg});
+  EXPECT_EQ(far.code, 2);
+  EXPECT_NE(far.err.find("--eye: 1e300,0,10 is outside the supported range"), std::string::npos)
+      << far.err;
+  EXPECT_EQ(run({"render", db, "--eye", "0,0,1", "--target", "0,-2e100,0", "--svg", svg}).code, 2);
   EXPECT_EQ(run({"render", db, "--view", "main"}).code, 2);  // no --svg
   EXPECT_EQ(run({"render", db, "--view", "main", "--scale", "3", "--svg", svg}).code, 2);
   EXPECT_EQ(run({"render", db, "--view", "main", "--width", "0", "--svg", svg}).code, 2);
