@@ -40,10 +40,6 @@
 //                       generate_shadows() throws nothing and its lit details are finite;
 //                       the shadowed database it makes then goes through database-json,
 //                       database-roundtrip and report.
-// Classes of input that show a finding already recorded (tests/fuzz/findings/readers/),
-// left out of the checks they break when SHADOWGEN_FUZZ_SKIP names them:
-//   not-planar-triangle the database reader refuses a face of triangles as not planar
-//                       (database-roundtrip); findings/readers/obj-triangle-not-planar.
 // A broken invariant prints its name, the kind and the input, then traps.
 // SHADOWGEN_FUZZ_VERBOSE=1 prints the outcome of every input.
 
@@ -303,21 +299,6 @@ std::string non_finite_in(const ShadowedScene& shadowed) {
   return "";
 }
 
-// The database reader refuses a face of `shadowed` as not planar, and its parts are all
-// triangles: the class of input of the finding obj-triangle-not-planar (the planarity
-// check, on a sliver triangle, finds it bent by its own rounding).
-bool is_triangle_not_planar(const ShadowedScene& shadowed, const InputError& error) {
-  if (error.problem().find("not planar") == std::string::npos) return false;
-  for (const Face& face : shadowed.scene.faces) {
-    if (face.id != error.face_id()) continue;
-    for (const hsr::Polygon3& part : face.parts) {
-      if (part.outer.size() != 3 || !part.holes.empty()) return false;
-    }
-    return true;
-  }
-  return false;
-}
-
 std::size_t vertex_count(const Scene& scene) {
   std::size_t count = 0;
   for (const Face& face : scene.faces) {
@@ -514,12 +495,8 @@ class ReaderCase {
         try {
           again = database_json(parse_database(text, case_dir() / "written.json"));
         } catch (const InputError& e) {
-          if (!enabled("not-planar-triangle", kind_) && is_triangle_not_planar(shadowed, e)) {
-            again = text;  // a finding already recorded: go on
-          } else {
-            violation("database-roundtrip",
-                      "database_json(" + what + ") does not read back: " + e.what() + "\n" + text);
-          }
+          violation("database-roundtrip",
+                    "database_json(" + what + ") does not read back: " + e.what() + "\n" + text);
         } catch (const std::exception& e) {
           violation("database-roundtrip", "database_json(" + what +
                                               ") does not read back, and not with an InputError: " +

@@ -201,6 +201,9 @@ class FaceBuilder {
   // "" for a planar face; otherwise how far from its best-fit plane it is, in words.
   static std::string distance_from_plane(const hsr::Polygon3& polygon, const glm::dvec3& normal,
                                          bool has_normal) {
+    // Three points always lie in a plane. Measured against the rounded Newell normal, the
+    // corners of a sliver triangle can seem 1e-7 of its extent off it.
+    if (polygon.outer.size() == 3 && polygon.holes.empty()) return "";
     const Planarity flat = has_normal ? planarity(polygon, normal) : Planarity{};
     if (!(flat.deviation > kPlanarityTolerance * flat.extent)) return "";
     return "a vertex lies " + short_number(flat.deviation, 3) + " from the best-fit plane, " +

@@ -14,7 +14,8 @@
 //     the best-fit plane (Newell's normal through the outer loop's centroid, as
 //     hsr::plane_of). A face that is not planar is an error under ReadOptions::strict;
 //     otherwise it is split into triangles on its original 3D vertices (triangulate.h),
-//     each exactly planar, all keeping the face's id, with a warning.
+//     each exactly planar, all keeping the face's id, with a warning. A triangle is planar
+//     whatever the rounded normal says.
 //   - Loops must be simple, holes inside the outer loop and apart from each other
 //     (loop_validation.h). A planar face is checked in its plane chart (hsr/plane_chart.h),
 //     exactly; a non-planar one in its projection on the best-fit plane (rounded

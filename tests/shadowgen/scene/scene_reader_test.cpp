@@ -707,6 +707,20 @@ TEST(SceneReader, NonPlanarPolygonWithAHoleIsTriangulatedAroundIt) {
   for (const hsr::Polygon3& t : f.parts) EXPECT_GT(newell(t.outer).z, 0.0);
 }
 
+// Three points always lie in a plane. A sliver triangle (from a binary STL the fuzzer
+// made) once seemed 1.2e-7 off the plane of its own rounded normal: split "into 1
+// triangle" with a warning, an error under --strict, and its database did not read back.
+TEST(SceneReader, ASliverTriangleIsPlanar) {
+  const ReadResult r = parse(
+      polygons(polygon("sliver",
+                       "[[1,1,1.000274658203125],[4.4373422909416376e-29,-1.9016610508515441e-10,"
+                       "0],[0,0,0]]")),
+      {.strict = true});
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+  ASSERT_EQ(r.scene.faces[0].parts.size(), 1u);
+  EXPECT_GT(total_area(r.scene.faces[0]), 0.0);
+}
+
 TEST(SceneReader, PlanarWithinToleranceStaysWhole) {
   const ReadResult r =
       parse(polygons(polygon("flat", "[[0,0,0],[10,0,0],[10,10,1e-12],[0,10,0]]")));
