@@ -14,7 +14,8 @@
 namespace shadowgen {
 
 // Relative planarity tolerance: a polygon is planar when every vertex lies within
-// kPlanarityTolerance × (its largest extent) of its best-fit plane.
+// kPlanarityTolerance × (its size) of its best-fit plane, its size being the smaller of
+// its largest extent and its width (area / largest extent). A triangle is planar.
 inline constexpr double kPlanarityTolerance = 1e-9;
 
 // One face of the scene. Its front side is the side from which the outer loop of each

@@ -9,6 +9,7 @@
 #include "clipper/predicates.h"
 #include "clipper/triangulate.h"
 #include "coordinate_range.h"
+#include "hsr/area.h"
 #include "hsr/collinearity.h"
 #include "hsr/plane_chart.h"
 #include "loop_validation.h"
@@ -205,9 +206,15 @@ class FaceBuilder {
     // corners of a sliver triangle can seem 1e-7 of its extent off it.
     if (polygon.outer.size() == 3 && polygon.holes.empty()) return "";
     const Planarity flat = has_normal ? planarity(polygon, normal) : Planarity{};
-    if (!(flat.deviation > kPlanarityTolerance * flat.extent)) return "";
+    // Against the face's size: the smaller of its extent (its length) and its width (area
+    // over extent). Against the length alone, a ribbon 1e9 long and 8 wide whose end was 4
+    // off the plane passed as planar, and its lit area came out larger than its area.
+    const double width = flat.extent > 0.0 ? hsr::area(polygon) / flat.extent : 0.0;
+    const double size = std::min(flat.extent, width);
+    if (!(flat.deviation > kPlanarityTolerance * size)) return "";
     return "a vertex lies " + short_number(flat.deviation, 3) + " from the best-fit plane, " +
-           short_number(flat.deviation / flat.extent, 3) + " of the face's extent; tolerance " +
+           short_number(flat.deviation / size, 3) +
+           " of the face's size (the smaller of its extent and its width); tolerance " +
            short_number(kPlanarityTolerance, 3);
   }
 

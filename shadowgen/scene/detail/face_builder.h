@@ -10,7 +10,8 @@
 //     polygon, though, a loop with fewer than 3 distinct vertices is an error, like one
 //     with fewer than 3 vertices: the repeats are a mistake of whoever wrote it, not the
 //     collapse of a mesh face. A hole that is collinear is dropped with a warning.
-//   - Planarity: every vertex within kPlanarityTolerance × (the face's largest extent) of
+//   - Planarity: every vertex within kPlanarityTolerance × (the face's size: the smaller of
+//     its largest extent and its width, area / extent) of
 //     the best-fit plane (Newell's normal through the outer loop's centroid, as
 //     hsr::plane_of). A face that is not planar is an error under ReadOptions::strict;
 //     otherwise it is split into triangles on its original 3D vertices (triangulate.h),

@@ -721,6 +721,24 @@ TEST(SceneReader, ASliverTriangleIsPlanar) {
   EXPECT_GT(total_area(r.scene.faces[0]), 0.0);
 }
 
+// A ribbon 1.4e9 long and at most 8 wide, one end 4 off the plane of the others: within
+// 1e-9 of its length but bent across its width. Kept whole, its lit area came out 27%
+// larger than its area and its database did not read back (a reader fuzzer finding);
+// judged against its width, it is split into triangles.
+TEST(SceneReader, ARibbonBentAcrossItsWidthIsNotPlanar) {
+  const std::string ribbon =
+      polygons(polygon("s0",
+                       "[[478303232,-2.0000000000000036,0],[-8.0000000000000036,0,0],"
+                       "[262143.99999999721,-4.0000000000000030,0],[-952535552,-8,4]]"));
+  const ReadResult r = parse(ribbon);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("not planar (a vertex lies 1.41 from the best-fit plane"),
+            std::string::npos)
+      << r.warnings[0];
+  EXPECT_EQ(r.scene.faces[0].parts.size(), 2u);
+  EXPECT_THROW(parse(ribbon, {.strict = true}), InputError);
+}
+
 TEST(SceneReader, PlanarWithinToleranceStaysWhole) {
   const ReadResult r =
       parse(polygons(polygon("flat", "[[0,0,0],[10,0,0],[10,10,1e-12],[0,10,0]]")));
