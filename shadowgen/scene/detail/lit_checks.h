@@ -4,9 +4,10 @@
 // rules": a database is checked as strictly as a scene). For one face and one light:
 //
 //   - every loop has at least 3 vertices;
-//   - every vertex lies in the plane of the part it carries (LitPolygon::part), within the
-//     planarity tolerance a face is read with plus rounding: kPlanarityTolerance × the
-//     part's extent + kRoundingReach × (extent + magnitude);
+//   - every vertex lies in the plane of the part it carries (LitPolygon::part), within
+//     kPlanarityTolerance × the part's extent (at least the tolerance a face is read
+//     with, which takes the smaller of extent and width) + kRoundingReach × (extent +
+//     magnitude);
 //   - the lit area (hsr::area, as reports sum it) does not exceed the face's area by more
 //     than rounding: kRoundingReach × (extent + magnitude) × the perimeters involved;
 //   - on each part, the lit polygons lie inside the part and do not overlap: in the part's
