@@ -88,6 +88,9 @@ LitChecker::LitChecker(const Face& face) : several_parts_(face.parts.size() > 1)
     part.extent = std::max({size.x, size.y, size.z});
     part.reach = kRoundingReach * (part.extent + std::max({magnitude.x, magnitude.y, magnitude.z}));
     part.perimeter = perimeter(polygon);
+    const double area = hsr::area(polygon);
+    part.tilt_reach =
+        area > 0.0 ? kRoundingReach * part.extent * part.extent * part.extent / (2.0 * area) : 0.0;
     part.normal = hsr::plane_of(polygon).normal;
     part.flat =
         finite(part.normal) && part.normal != glm::dvec3(0.0) && !hsr::all_collinear(polygon.outer);
@@ -151,7 +154,7 @@ std::optional<LitProblem> LitChecker::check_loops_and_planes(
     }
     const Part& part = parts_[lit[k].part];
     if (!part.flat) continue;
-    const double tolerance = kPlanarityTolerance * part.extent + part.reach;
+    const double tolerance = kPlanarityTolerance * part.extent + part.reach + part.tilt_reach;
     double worst = 0.0;
     auto visit = [&](const hsr::Loop3& loop) {
       for (const glm::dvec3& p : loop) worst = std::max(worst, distance_to_plane(part, p));

@@ -7,7 +7,8 @@
 //   - every vertex lies in the plane of the part it carries (LitPolygon::part), within
 //     kPlanarityTolerance × the part's extent (at least the tolerance a face is read
 //     with, which takes the smaller of extent and width) + kRoundingReach × (extent +
-//     magnitude);
+//     magnitude) + how far the rounding of the part's normal alone can tilt it
+//     (Part::tilt_reach);
 //   - the lit area (hsr::area, as reports sum it) does not exceed the face's area by more
 //     than rounding: kRoundingReach × (extent + magnitude) × the perimeters involved;
 //   - on each part, the lit polygons lie inside the part and do not overlap: in the part's
@@ -71,6 +72,11 @@ class LitChecker {
     glm::dvec3 centroid{0.0};  // of the outer loop, relative to origin
     double extent = 0.0;
     double reach = 0.0;  // kRoundingReach × (extent + magnitude)
+    // How far the rounding of the normal alone can put a point of the part off its plane:
+    // Newell's vector is off by ulps of extent² beside its length, twice the area, so a
+    // sliver's plane is known only to that tilt, times extent (kRoundingReach × extent³ /
+    // (2 × area)). A sliver triangle's own corners once lay 2.2e-5 off it.
+    double tilt_reach = 0.0;
     double perimeter = 0.0;
     hsr::PlaneChart chart;
     clipper::PolygonWithHoles2 flat_polygon;  // in the chart, relative to origin

@@ -185,5 +185,21 @@ TEST(DatabaseReader, WrittenDatabasesReadBack) {
   EXPECT_EQ(database_json(parse_database(written, "again.json")), written);
 }
 
+// A sliver triangle lit whole: its one lit polygon is the triangle itself, corner for
+// corner, yet its corners seemed 2.2e-5 off the plane of its rounded normal (tolerance
+// 1.8e-9) and the database did not read back (a reader fuzzer finding). The plane of a
+// sliver is known only to the tilt its normal's rounding allows.
+TEST(DatabaseReader, ASliverTriangleLitWholeReadsBack) {
+  const std::string triangle = R"({"outer": [[-0.8664763412811685,-2.0078308440393733,0.0],)"
+                               R"([0.1956559480312316,-0.24372513135791332,1.0],)"
+                               R"([0.1956559480312316,-0.2437251313573806,1.0]], "holes": []})";
+  EXPECT_EQ(refusal(database(triangle, triangle)).problem, "(no error)");
+  // A vertex a whole unit off the sliver's plane is still refused.
+  const std::string off = R"({"outer": [[-0.8664763412811685,-2.0078308440393733,0.0],)"
+                          R"([0.1956559480312316,-0.24372513135791332,1.0],)"
+                          R"([0.1956559480312316,-1.2437251313573806,1.0]], "holes": []})";
+  EXPECT_NE(refusal(database(off, triangle)).problem, "(no error)");
+}
+
 }  // namespace
 }  // namespace shadowgen
