@@ -20,10 +20,13 @@
 //
 // Input. Any PolygonWithHoles2 / PolygonSet2 whose region is well formed: loops simple,
 // holes inside their outer loop, loops meeting at most at points. Orientation is free
-// (normalized on entry). Repeated vertices, zero-area spikes and collinear vertices are
+// (normalized on entry, by each loop's body: see encloses_counter_clockwise in
+// normalize.h). Repeated vertices, zero-area spikes and collinear vertices are
 // removed first; loops left with no area are dropped. Self-crossing loops are outside
 // the contract (the result is then unspecified, but the call returns, and its loops are
-// still simple: the snapping nodes them too).
+// still simple: the snapping nodes them too), with one exception that rounding makes
+// common: a loop that crosses itself only within rounding of its vertices counts as its
+// body, and the slivers it closes off count as their windings say.
 //
 // Output. Polygons in the conventions of clipper/polygon.h: outer loops counter-
 // clockwise, holes clockwise and attached to the smallest outer loop that contains

@@ -1,6 +1,7 @@
 #include "clipper/normalize.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
@@ -126,6 +127,29 @@ bool is_counter_clockwise(const Loop2& loop) {
   return first->second;
 }
 
+bool encloses_counter_clockwise(const Loop2& loop) {
+  // Twice the signed area, Σ x_i y_{i+1} - x_{i+1} y_i, in plain floating point: each of
+  // the 2n products and 2n - 1 additions rounds by at most u = 2^-53 relative, so the sum
+  // is within (2n + 1) u (1 + small) of Σ |products| of the exact one, plus 2n half
+  // subnormals where products underflow. Doubling that bound covers the higher-order
+  // terms with room to spare.
+  const std::size_t n = loop.size();
+  double sum = 0.0;
+  double magnitude = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2& a = loop[i];
+    const Point2& b = loop[(i + 1) % n];
+    const double left = a.x * b.y;
+    const double right = b.x * a.y;
+    sum += left - right;
+    magnitude += std::abs(left) + std::abs(right);
+  }
+  const double bound =
+      static_cast<double>(2 * n + 1) * 0x1p-52 * magnitude + static_cast<double>(2 * n) * 0x1p-1074;
+  if (std::isfinite(magnitude) && std::abs(sum) > bound) return sum > 0.0;
+  return is_counter_clockwise(loop);
+}
+
 PolygonSet2 normalized(const PolygonSet2& polygons) {
   PolygonSet2 out;
   out.reserve(polygons.size());
@@ -133,11 +157,11 @@ PolygonSet2 normalized(const PolygonSet2& polygons) {
     PolygonWithHoles2 q;
     q.outer = p.outer;
     if (!clean_loop(q.outer)) continue;
-    if (!is_counter_clockwise(q.outer)) std::reverse(q.outer.begin(), q.outer.end());
+    if (!encloses_counter_clockwise(q.outer)) std::reverse(q.outer.begin(), q.outer.end());
     for (const Loop2& h : p.holes) {
       Loop2 hole = h;
       if (!clean_loop(hole)) continue;
-      if (is_counter_clockwise(hole)) std::reverse(hole.begin(), hole.end());
+      if (encloses_counter_clockwise(hole)) std::reverse(hole.begin(), hole.end());
       q.holes.push_back(std::move(hole));
     }
     out.push_back(std::move(q));

@@ -23,4 +23,12 @@ PolygonSet2 normalized(const PolygonSet2& polygons);
 // line): the turn at its lexicographically smallest vertex, which is never straight.
 bool is_counter_clockwise(const Loop2& loop);
 
+// The orientation of an input loop's body: the sign of its signed area where floating
+// point decides it (the sum's rounding error bound is below its magnitude), else
+// is_counter_clockwise. The two agree on every simple loop. They differ on a loop that
+// crosses itself by rounding, as a polygon lifted to 3D and charted in another plane
+// can: a lobe of 1e-31 at its lowest vertex turns the other way from the body around
+// it, and orienting by the lobe would make the body a hole.
+bool encloses_counter_clockwise(const Loop2& loop);
+
 }  // namespace shadowgen::clipper
