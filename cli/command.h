@@ -31,13 +31,19 @@ struct Command {
   std::function<void()> run;
 };
 
-// A subcommand `name` on `app`: `add_options` declares its options on arguments kept alive
-// with the run, and `run` runs it on them once they are parsed.
+// A subcommand's name and its help text, stated at the top of the file that defines it.
+struct CommandText {
+  const char* name;
+  const char* help;
+};
+
+// The subcommand `text` on `app`: `add_options` declares its options on arguments kept
+// alive with the run, and `run` runs it on them once they are parsed.
 template <class Args>
-Command make_command(CLI::App& app, const std::string& name, const std::string& description,
-                     void (*add_options)(CLI::App&, Args&), void (*run)(const Args&)) {
+Command make_command(CLI::App& app, const CommandText& text, void (*add_options)(CLI::App&, Args&),
+                     void (*run)(const Args&)) {
   auto args = std::make_shared<Args>();
-  CLI::App* command = app.add_subcommand(name, description);
+  CLI::App* command = app.add_subcommand(text.name, text.help);
   add_options(*command, *args);
   return {command, [args, run] { run(*args); }};
 }

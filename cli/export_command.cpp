@@ -14,6 +14,15 @@
 namespace shadowgen::cli {
 namespace {
 
+constexpr CommandText kExportText{
+    "export",
+    "Write the shadowed scene as a Wavefront OBJ and its MTL (same stem, \".mtl\", next to "
+    "the OBJ; spaces and other bytes OBJ names cannot hold escaped as %XX): every face split "
+    "into the regions lit by the same set of lights, grouped by "
+    "face id, one material per light set (\"shadow\", \"sun\", \"sun+lamp\"; shadow grey "
+    "0.2, lit parts lighter). A scene is generated first; a shadowed database is read as "
+    "it is."};
+
 // The MTL goes next to the OBJ, named with the OBJ's stem and ".mtl"; the stem escaped as
 // obj_name() escapes names ("my scene.obj" gets "my%20scene.mtl"), so that the OBJ's
 // mtllib statement, which separates file names by spaces, names it as it is. Every face
@@ -64,15 +73,7 @@ void add_export_options(CLI::App& command, ExportArgs& args) {
 }  // namespace
 
 Command add_export_command(CLI::App& app) {
-  return make_command<ExportArgs>(
-      app, "export",
-      "Write the shadowed scene as a Wavefront OBJ and its MTL (same stem, \".mtl\", next to "
-      "the OBJ; spaces and other bytes OBJ names cannot hold escaped as %XX): every face split "
-      "into the regions lit by the same set of lights, grouped by "
-      "face id, one material per light set (\"shadow\", \"sun\", \"sun+lamp\"; shadow grey "
-      "0.2, lit parts lighter). A scene is generated first; a shadowed database is read as "
-      "it is.",
-      add_export_options, run_export);
+  return make_command<ExportArgs>(app, kExportText, add_export_options, run_export);
 }
 
 }  // namespace shadowgen::cli

@@ -16,6 +16,13 @@
 namespace shadowgen::cli {
 namespace {
 
+constexpr CommandText kGenerateText{
+    "generate",
+    "Compute the lit detail polygons of every (face, light) of a scene and write the "
+    "shadowed database (shadowgen-shadowed/1). Several scenes are done in turn, each "
+    "written before the next is read; a bad one stops the run with exit code 1, leaving "
+    "the databases already written. On a terminal a progress line is shown on stderr."};
+
 namespace fs = std::filesystem;
 
 // Several scenes are processed in turn, each read, generated and written (atomically)
@@ -134,13 +141,7 @@ void add_generate_options(CLI::App& command, GenerateArgs& args) {
 }  // namespace
 
 Command add_generate_command(CLI::App& app) {
-  return make_command<GenerateArgs>(
-      app, "generate",
-      "Compute the lit detail polygons of every (face, light) of a scene and write the "
-      "shadowed database (shadowgen-shadowed/1). Several scenes are done in turn, each "
-      "written before the next is read; a bad one stops the run with exit code 1, leaving "
-      "the databases already written. On a terminal a progress line is shown on stderr.",
-      add_generate_options, run_generate);
+  return make_command<GenerateArgs>(app, kGenerateText, add_generate_options, run_generate);
 }
 
 }  // namespace shadowgen::cli

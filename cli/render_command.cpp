@@ -23,6 +23,12 @@
 namespace shadowgen::cli {
 namespace {
 
+constexpr CommandText kRenderText{
+    "render",
+    "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
+    "eye, each visible face split by the lights reaching it, flat shaded. Reads only the "
+    "database; no shadows are recomputed."};
+
 // A picture of a shadowed database (never a scene: no shadow pass runs) from the
 // database's view `view` or from eye/target/up/fov.
 struct RenderArgs {
@@ -164,12 +170,7 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
 }  // namespace
 
 Command add_render_command(CLI::App& app) {
-  return make_command<RenderArgs>(
-      app, "render",
-      "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
-      "eye, each visible face split by the lights reaching it, flat shaded. Reads only the "
-      "database; no shadows are recomputed.",
-      add_render_options, run_render);
+  return make_command<RenderArgs>(app, kRenderText, add_render_options, run_render);
 }
 
 }  // namespace shadowgen::cli

@@ -13,6 +13,11 @@
 namespace shadowgen::cli {
 namespace {
 
+constexpr CommandText kReportText{
+    "report",
+    "Area, lit area and lit fraction per (face, light). A scene is generated first; a "
+    "shadowed database is read as it is."};
+
 struct ReportArgs {
   std::string input;           // a scene (generated first) or a shadowed database
   std::string format = "csv";  // csv, json or table
@@ -47,10 +52,7 @@ void run_report(const ReportArgs& args) {
 
 Command add_report_command(CLI::App& app) {
   auto args = std::make_shared<ReportArgs>();
-  CLI::App* command =
-      app.add_subcommand("report",
-                         "Area, lit area and lit fraction per (face, light). A scene is generated "
-                         "first; a shadowed database is read as it is.");
+  CLI::App* command = app.add_subcommand(kReportText.name, kReportText.help);
   add_input_option(*command, args->input);
   command
       ->add_option("--format", args->format,
