@@ -35,12 +35,26 @@ struct Box2 {
   bool touches_or_overlaps(const Box2& b) const {
     return xmin <= b.xmax && b.xmin <= xmax && ymin <= b.ymax && b.ymin <= ymax;
   }
+  // Closed containment: a loop winds around no point outside its box, and a loop inside
+  // another has its box inside the other's.
+  bool contains(const clipper::Point2& p) const {
+    return xmin <= p.x && p.x <= xmax && ymin <= p.y && p.y <= ymax;
+  }
+  bool contains(const Box2& b) const {
+    return xmin <= b.xmin && b.xmax <= xmax && ymin <= b.ymin && b.ymax <= ymax;
+  }
 };
 
-inline Box2 box_of(const clipper::PolygonWithHoles2& p) {
+inline Box2 box_of(const clipper::Loop2& loop) {
   Box2 b;
-  for (const clipper::Point2& q : p.outer) b.add(q);
+  for (const clipper::Point2& q : loop) b.add(q);
   return b;
+}
+
+inline Box2 box_of(const clipper::PolygonWithHoles2& p) { return box_of(p.outer); }
+
+inline Box2 box_of(const clipper::Point2& a, const clipper::Point2& b) {
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
 }
 
 }  // namespace shadowgen::clipper

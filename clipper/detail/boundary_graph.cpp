@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clipper/box.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 #include "point_index.h"
@@ -142,21 +143,6 @@ void split_at_repeats(const Walk& walk, std::vector<std::size_t>& position,
   out.push_back(std::move(stack));
 }
 
-struct Bounds {
-  double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-  explicit Bounds(const Loop2& loop) {
-    for (const Point2& p : loop) {
-      xmin = std::min(xmin, p.x);
-      xmax = std::max(xmax, p.x);
-      ymin = std::min(ymin, p.y);
-      ymax = std::max(ymax, p.y);
-    }
-  }
-  bool contains(const Bounds& o) const {
-    return xmin <= o.xmin && o.xmax <= xmax && ymin <= o.ymin && o.ymax <= ymax;
-  }
-};
-
 // Whether hole lies inside outer: decided at a vertex of the hole off outer's boundary
 // (a hole may touch its outer loop at points, never along an edge).
 bool encloses(const Loop2& outer, const Loop2& hole) {
@@ -183,9 +169,9 @@ void drop_turned_over_holes(PolygonSet2& polygons) {
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const Loop2& loop = polygons[i].outer;
     if (std::fabs(signed_area(loop)) > rounding_area_bound(loop)) continue;
-    const Bounds b(loop);
+    const Box2 b = box_of(loop);
     for (std::size_t j = 0; j < polygons.size(); ++j) {
-      if (j == i || !Bounds(polygons[j].outer).contains(b)) continue;
+      if (j == i || !box_of(polygons[j].outer).contains(b)) continue;
       if (encloses(polygons[j].outer, loop)) {
         drop.push_back(i);
         break;
@@ -218,15 +204,15 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
   drop_turned_over_holes(polygons);
   if (holes.empty()) return polygons;
 
-  std::vector<Bounds> outer_bounds;
+  std::vector<Box2> outer_bounds;
   std::vector<double> outer_areas;
   for (const PolygonWithHoles2& p : polygons) {
-    outer_bounds.emplace_back(p.outer);
+    outer_bounds.push_back(box_of(p.outer));
     outer_areas.push_back(signed_area(p.outer));
   }
   std::vector<Loop2> orphans;
   for (Loop2& hole : holes) {
-    const Bounds hb(hole);
+    const Box2 hb = box_of(hole);
     std::size_t parent = polygons.size();
     for (std::size_t i = 0; i < polygons.size(); ++i) {
       if (!outer_bounds[i].contains(hb)) continue;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <span>
 
+#include "clipper/box.h"
 #include "clipper/predicates.h"
 #include "point_index.h"
 #include "point_location.h"
@@ -67,10 +68,7 @@ class Graph {
   std::vector<std::uint32_t> first_;      // per vertex: its slice of incidence_
   std::vector<std::uint32_t> incidence_;  // edge indices, counter-clockwise around each vertex
   std::vector<std::uint32_t> part_;       // per vertex: its connected part
-  struct Box {
-    double xmin, xmax, ymin, ymax;
-  };
-  std::vector<Box> boxes_[2];  // per loop, made once the graph has several parts
+  std::vector<Box2> boxes_[2];            // per loop, made once the graph has several parts
 };
 
 std::size_t point_count(const Boundary (&loops)[2]) {
@@ -194,8 +192,7 @@ Winding Graph::windings_outside_part(std::uint32_t seed, std::uint32_t part) con
     for (std::size_t l = 0; l < loops_[s].size(); ++l) {
       if (ids_[s][l].empty() || part_[ids_[s][l].front()] == part) continue;
       // A loop winds around no point outside its box.
-      const Box& b = boxes_[s][l];
-      if (p.x < b.xmin || p.x > b.xmax || p.y < b.ymin || p.y > b.ymax) continue;
+      if (!boxes_[s][l].contains(p)) continue;
       add_winding_number(p, loops_[s][l], w[s]);
     }
   }
@@ -205,16 +202,7 @@ Winding Graph::windings_outside_part(std::uint32_t seed, std::uint32_t part) con
 void Graph::collect_boxes() {
   for (int s = 0; s < 2; ++s) {
     boxes_[s].clear();
-    for (const Loop2& loop : loops_[s]) {
-      Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
-      for (const Point2& q : loop) {
-        b.xmin = std::min(b.xmin, q.x);
-        b.xmax = std::max(b.xmax, q.x);
-        b.ymin = std::min(b.ymin, q.y);
-        b.ymax = std::max(b.ymax, q.y);
-      }
-      boxes_[s].push_back(b);
-    }
+    for (const Loop2& loop : loops_[s]) boxes_[s].push_back(box_of(loop));
   }
 }
 

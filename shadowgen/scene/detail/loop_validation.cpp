@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "clipper/box.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 #include "clipper/segment_contact.h"
@@ -21,16 +22,9 @@ using clipper::orient2d;
 using clipper::Orientation;
 using clipper::Point2;
 
-struct Box {
-  double xmin, xmax, ymin, ymax;
-  bool contains(const Box& b) const {
-    return xmin <= b.xmin && b.xmax <= xmax && ymin <= b.ymin && b.ymax <= ymax;
-  }
-};
-
 struct Edge {
   Point2 a, b;
-  Box box;
+  clipper::Box2 box;
   std::uint32_t loop;
   std::uint32_t index;  // edge index = index of its first vertex in the clean loop
 };
@@ -105,10 +99,7 @@ class Checker {
       for (std::uint32_t i = 0; i < p.size(); ++i) {
         const Point2& a = p[i];
         const Point2& b = p[(i + 1) % p.size()];
-        edges.push_back(
-            {a, b,
-             Box{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)}, l,
-             i});
+        edges.push_back({a, b, clipper::box_of(a, b), l, i});
       }
     }
     std::sort(edges.begin(), edges.end(),
@@ -326,17 +317,8 @@ class Checker {
     // No crossings and no touching: each hole is wholly inside or wholly outside every
     // other loop, so one vertex tells. Parity tells for a pinched or bridged loop too: its
     // winding number is 0 or ±1.
-    std::vector<Box> boxes;
-    for (const CleanLoop& l : loops_) {
-      Box b{l.points[0].x, l.points[0].x, l.points[0].y, l.points[0].y};
-      for (const Point2& p : l.points) {
-        b.xmin = std::min(b.xmin, p.x);
-        b.xmax = std::max(b.xmax, p.x);
-        b.ymin = std::min(b.ymin, p.y);
-        b.ymax = std::max(b.ymax, p.y);
-      }
-      boxes.push_back(b);
-    }
+    std::vector<clipper::Box2> boxes;
+    for (const CleanLoop& l : loops_) boxes.push_back(clipper::box_of(l.points));
     for (std::uint32_t h = 1; h < loops_.size(); ++h) {
       if (touching_.count({0, h}) != 0) continue;
       if (!boxes[0].contains(boxes[h]) || !inside_loop(loops_[0].points, loops_[h].points[0])) {
