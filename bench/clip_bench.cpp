@@ -9,6 +9,12 @@
 //   BM_Geos           GEOSIntersection_r + GEOSDifference_r on prebuilt geometries;
 //   BM_Cgal           CGAL::intersection + CGAL::difference, Epeck, prebuilt polygons.
 //
+// and, for shadowgen alone, the shape of a ground under a city's buildings:
+//
+//   BM_GroundUnderBlocks  one square against N small squares in a grid as one span of
+//                     clips (hidden-surface removal's call): N + 1 separate parts in the
+//                     overlay, whose windings are found against each other.
+//
 // The adapters' headers say exactly what each timed iteration contains. Every timed
 // iteration also frees the previous iteration's result.
 //
@@ -25,11 +31,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstddef>
 #include <exception>
 #include <map>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "bench/cgal_bool_ops.h"
 #include "bench/clipper1_bool_ops.h"
@@ -142,6 +150,27 @@ void BM_Cgal(benchmark::State& state) {
   });
 }
 
+void BM_GroundUnderBlocks(benchmark::State& state) {
+  const auto side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(state.range(0)))));
+  const double size = 10.0 * side;
+  const clipper::PolygonWithHoles2 ground{{{0, 0}, {size, 0}, {size, size}, {0, size}}, {}};
+  std::vector<clipper::PolygonWithHoles2> blocks;
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      const double x = 10.0 * i + 2.0, y = 10.0 * j + 3.0;
+      blocks.push_back({{{x, y}, {x + 5, y}, {x + 5, y + 6}, {x, y + 6}}, {}});
+    }
+  }
+  clipper::ClipResult r;
+  for (auto _ : state) {
+    r = clipper::clip(ground, blocks);
+    benchmark::DoNotOptimize(r.outside.data());
+  }
+  state.counters["blocks"] = static_cast<double>(blocks.size());
+  state.counters["holes"] =
+      r.outside.empty() ? 0.0 : static_cast<double>(r.outside[0].holes.size());
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   b->Arg(64)->Arg(1024)->Arg(4096)->Unit(benchmark::kMicrosecond);
 }
@@ -151,6 +180,12 @@ BENCHMARK(BM_Clipper1)->Apply(sizes);
 BENCHMARK(BM_Clipper1Paths)->Apply(sizes);
 BENCHMARK(BM_Geos)->Apply(sizes);
 BENCHMARK(BM_Cgal)->Apply(sizes);
+BENCHMARK(BM_GroundUnderBlocks)
+    ->Arg(1024)
+    ->Arg(4096)
+    ->Arg(16384)
+    ->Arg(65536)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace shadowgen::bench

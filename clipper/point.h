@@ -38,9 +38,20 @@ struct Point2Hash {
       std::memcpy(&u, &v, sizeof u);
       return u;
     };
-    std::uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
-    h ^= bits(p.y) + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2);
-    return static_cast<std::size_t>(h ^ (h >> 29));
+    // Every bit of the result depends on every bit of both coordinates (y's halves swapped,
+    // so that the informative high bits of each land apart, then the finalizer of
+    // MurmurHash3): the coordinates of a grid, small integers or binary fractions, have
+    // dozens of trailing zero bits, and a multiplicative hash left the low bits, which
+    // PointIndex masks a slot from, the same for all of them.
+    auto mix = [](std::uint64_t z) {
+      z ^= z >> 33;
+      z *= 0xFF51AFD7ED558CCDull;
+      z ^= z >> 33;
+      z *= 0xC4CEB9FE1A85EC53ull;
+      return z ^ (z >> 33);
+    };
+    const std::uint64_t y = bits(p.y);
+    return static_cast<std::size_t>(mix(bits(p.x) ^ ((y << 32) | (y >> 32))));
   }
 };
 
