@@ -15,6 +15,14 @@ void refuse_input_as_output(const std::string& option, const std::string& output
   }
 }
 
+void add_lights_option(CLI::App& command, std::vector<std::string>& ids) {
+  command
+      .add_option("--lights", ids,
+                  "only these lights, by id (comma-separated or repeated), as if the input "
+                  "held no other: a scene's other lights are not generated")
+      ->delimiter(',');
+}
+
 void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
   command.add_flag("--strict", args.strict,
                    "reading warnings are errors: a non-planar polygon (instead of being "
@@ -22,6 +30,7 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
   command.add_option("--threads", args.threads,
                      "worker threads when generating, one light each (0: one per hardware "
                      "thread)");
+  add_lights_option(command, args.lights);
   command.add_flag("--verbose", args.verbose,
                    "every reading warning on its own line (a kind of warning that many faces "
                    "of one mesh draw is otherwise one line)");
@@ -47,6 +56,7 @@ LoadOptions load_options(const ReadingArgs& args, Accept accept, std::vector<Out
   options.strict = args.strict;
   options.threads = args.threads;
   options.verbose = args.verbose;
+  options.lights = args.lights;
   if (!outputs.empty()) {
     options.on_scene = [outputs = std::move(outputs)](const Scene& scene) {
       std::set<std::string> read;

@@ -56,14 +56,18 @@ Command add_render_command(CLI::App& app);
 // How an input is read and its shadows generated.
 struct ReadingArgs {
   bool strict = false;
-  unsigned threads = 0;  // 0: one per hardware thread
-  bool quiet = false;    // no reading warnings (and no progress line)
-  bool verbose = false;  // every reading warning on its own line (ReadOptions::verbose)
+  unsigned threads = 0;             // 0: one per hardware thread
+  bool quiet = false;               // no reading warnings (and no progress line)
+  bool verbose = false;             // every reading warning on its own line (ReadOptions::verbose)
+  std::vector<std::string> lights;  // --lights: only these (LoadOptions::lights)
 };
 
-// --strict, --threads and -q/--quiet on `command`; `progress`: the subcommand shows a
-// progress line, which --quiet also silences.
+// --strict, --threads, --lights, --verbose and -q/--quiet on `command`; `progress`: the subcommand
+// shows a progress line, which --quiet also silences.
 void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress = false);
+
+// --lights on `command`: the ids of the only lights a run takes (LoadOptions::lights).
+void add_lights_option(CLI::App& command, std::vector<std::string>& ids);
 
 // The required positional "input" on `command`: a scene or a shadowed database.
 void add_input_option(CLI::App& command, std::string& path);

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cli/command.h"
 #include "shadowgen/model/coordinate_range.h"
@@ -41,6 +42,7 @@ struct RenderArgs {
   std::string svg;
   int width = 800;
   int height = 600;
+  std::vector<std::string> lights;  // --lights: only these are drawn
 };
 
 // "X,Y,Z" as three finite doubles; nullopt when it is not.
@@ -110,6 +112,7 @@ Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
 void run_render(const RenderArgs& args) {
   LoadOptions load;
   load.accept = Accept::kDatabase;
+  load.lights = args.lights;
   refuse_input_as_output("--svg", args.svg, args.database);
   const ShadowedScene shadowed = load_shadowed(args.database, load);
   const Camera camera = camera_for(args, shadowed);
@@ -165,6 +168,7 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
       ->check(CLI::Range(1, 1 << 20));
   command.add_option("--height", args.height, "picture height in pixels (default 600)")
       ->check(CLI::Range(1, 1 << 20));
+  add_lights_option(command, args.lights);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "shadowgen/json/document.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/pipeline/light_choice.h"
 #include "shadowgen/scene/database_reader.h"
 #include "shadowgen/scene/scene_reader.h"
 
@@ -16,9 +17,10 @@ void pass_on(const std::vector<std::string>& warnings, const LoadOptions& option
   for (const std::string& warning : warnings) options.on_warning(warning);
 }
 
-ShadowedScene generated(const ReadResult& read, const std::filesystem::path& path,
+ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
                         const LoadOptions& options) {
   pass_on(read.warnings, options);
+  keep_lights(read.scene, options.lights, path.string());
   if (options.on_scene) options.on_scene(read.scene);
   GenerateOptions generate;
   generate.threads = options.threads;
@@ -36,6 +38,7 @@ ShadowedScene database(const Document& document, const ReadOptions& read,
   std::vector<std::string> warnings;
   ShadowedScene shadowed = parse_database(document.text, document.path, read, warnings);
   pass_on(warnings, options);
+  keep_lights(shadowed, options.lights, document.path.string());
   return shadowed;
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "shadowgen/model/scene.h"
 #include "shadowgen/model/shadowed_scene.h"
@@ -28,6 +29,9 @@ struct LoadOptions {
   bool strict = false;   // ReadOptions::strict, for a scene and a database alike
   bool verbose = false;  // ReadOptions::verbose
   unsigned threads = 0;  // GenerateOptions::threads
+  // When not empty, only these of the input's lights (light_choice.h): a scene's others
+  // are not generated, a database's are dropped.
+  std::vector<std::string> lights;
   // Each reading warning, a line naming the file; dropped when empty.
   std::function<void(const std::string& warning)> on_warning;
   // A scene once read, before its shadows are generated (to start a progress display).

@@ -173,6 +173,36 @@ TEST_F(ExportCli, SingleLightLitMaterialAreaIsTheReportsLitArea) {
   std::printf("courtyard, sun only: worst relative area error %.3g\n", worst);
 }
 
+// --lights sun on the two-light courtyard, from the scene or from its database, is the
+// scene with the sun alone: the same OBJ and MTL byte for byte (the lamp is not generated
+// from the scene, and dropped from the database).
+TEST_F(ExportCli, LightsPicksLightsAsIfTheSceneHeldNoOther) {
+  nlohmann::json scene = nlohmann::json::parse(contents(kCourtyard));
+  scene["lights"].erase(1);
+  const fs::path sun_only = write("sun.json", scene.dump(2));
+  ASSERT_EQ(run({"export", sun_only.string(), "--obj", (dir_ / "alone.obj").string()}).code, 0);
+  const fs::path db = dir_ / "courtyard.shadowed.json";
+  ASSERT_EQ(run({"generate", kCourtyard.string(), "-o", db.string()}).code, 0);
+  for (const fs::path& input : {kCourtyard, db}) {
+    const Outcome r =
+        run({"export", input.string(), "--lights", "sun", "--obj", (dir_ / "picked.obj").string()});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(without_mtllib(contents(dir_ / "picked.obj")),
+              without_mtllib(contents(dir_ / "alone.obj")))
+        << input;
+    EXPECT_EQ(contents(dir_ / "picked.mtl"), contents(dir_ / "alone.mtl")) << input;
+  }
+
+  const Outcome unknown =
+      run({"export", db.string(), "--lights", "sun,moon", "--obj", (dir_ / "moon.obj").string()});
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_EQ(unknown.err, "shadowgen: " + db.string() +
+                             ": --lights names 'moon', which is not a light of it (its lights: "
+                             "'sun', 'lamp')\n");
+  EXPECT_FALSE(fs::exists(dir_ / "moon.obj"));
+  EXPECT_FALSE(fs::exists(dir_ / "moon.mtl"));
+}
+
 TEST_F(ExportCli, BadInputExitsOneWithAMessageAndLeavesNothing) {
   const Outcome missing =
       run({"export", (dir_ / "missing.json").string(), "--obj", (dir_ / "out.obj").string()});

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
 #include <utility>
@@ -176,6 +177,39 @@ TEST_F(RenderCli, TwoViewpointsFromTheDatabaseAlone) {
   }
   EXPECT_EQ(files(), (std::vector<std::string>{"courtyard.shadowed.json", "main.png", "main.svg",
                                                "top.png", "top.svg"}));
+}
+
+// --lights lamp draws the database as if it held the lamp alone: the same picture as the
+// database of the scene without the sun, and the ground's lamp-lit pieces the report's.
+TEST_F(RenderCli, LightsDrawsOnlyThoseLights) {
+  nlohmann::json scene = nlohmann::json::parse(
+      contents(fs::path(SHADOWGEN_EXAMPLES_DIR) / "scenes" / "courtyard.json"));
+  scene["lights"].erase(0);
+  ASSERT_EQ(scene["lights"][0]["id"], "lamp");
+  const fs::path lamp_scene = write("lamp.json", scene.dump(2));
+  const fs::path lamp_db = dir_ / "lamp.shadowed.json";
+  ASSERT_EQ(run({"generate", lamp_scene.string(), "-o", lamp_db.string()}).code, 0);
+  const Outcome alone =
+      run({"render", lamp_db.string(), "--view", "main", "--svg", (dir_ / "alone.svg").string()});
+  ASSERT_EQ(alone.code, 0) << alone.err;
+  const Outcome picked = run({"render", db_.string(), "--view", "main", "--lights", "lamp", "--svg",
+                              (dir_ / "picked.svg").string()});
+  ASSERT_EQ(picked.code, 0) << picked.err;
+  EXPECT_EQ(contents(dir_ / "picked.svg"), contents(dir_ / "alone.svg"));
+  const SvgAreas areas = measure(contents(dir_ / "picked.svg"));
+  for (const auto& [face_and_light, area] : areas.by_face_and_light) {
+    EXPECT_TRUE(face_and_light.second == "lamp" || face_and_light.second == "shadow")
+        << face_and_light.first << ": " << face_and_light.second;
+  }
+  EXPECT_GT(areas.by_face_and_light.count({"ground", "lamp"}), 0u);
+
+  const Outcome unknown = run({"render", db_.string(), "--view", "main", "--lights", "sunn",
+                               "--svg", (dir_ / "no.svg").string()});
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.err.find("--lights names 'sunn', which is not a light of it"),
+            std::string::npos)
+      << unknown.err;
+  EXPECT_FALSE(fs::exists(dir_ / "no.svg"));
 }
 
 TEST_F(RenderCli, PerspectiveFromEyeAndFittedOrthographic) {

@@ -1,0 +1,25 @@
+#pragma once
+
+// A run limited to some of the input's lights (the command line's --lights): only those
+// are generated, reported, exported or drawn, as if the input held no other. Work and
+// output then grow with the lights chosen, not with all of the input's.
+
+#include <span>
+#include <string>
+
+#include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
+
+namespace shadowgen {
+
+// Keeps the lights whose ids are in `ids`, in the input's order whatever order they are
+// named in (a name given twice counts once). Throws InputError naming `file` for an id
+// the input has no light of, listing the ones it has. An empty `ids` keeps every light.
+void keep_lights(Scene& scene, std::span<const std::string> ids, const std::string& file);
+
+// The same for a shadowed database: its lights and their lit polygons (std::invalid_argument
+// when `lit` is not shaped [face][light]).
+void keep_lights(ShadowedScene& shadowed, std::span<const std::string> ids,
+                 const std::string& file);
+
+}  // namespace shadowgen

@@ -1,0 +1,89 @@
+// A run limited to some lights (shadowgen/pipeline/light_choice.h): the lights kept in the
+// input's order, their lit polygons exactly those of a run with every light, and an id
+// the input lacks refused with the lights it has.
+
+#include "shadowgen/pipeline/light_choice.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/output/database.h"
+#include "shadowgen/scene/scene_reader.h"
+#include "shadowgen/shadows/generate.h"
+#include "tests/shadowgen/hand_scenes.h"
+
+namespace shadowgen {
+namespace {
+
+Scene two_lights() { return parse_scene(test::kTwoLights, "two.json", {}).scene; }
+
+std::vector<std::string> light_ids(const Scene& scene) {
+  std::vector<std::string> ids;
+  for (const Light& light : scene.lights) ids.push_back(light.id);
+  return ids;
+}
+
+TEST(KeepLights, KeepsTheNamedLightsInTheInputsOrder) {
+  Scene scene = two_lights();
+  const std::vector<std::string> named = {"slant", "down", "slant"};
+  keep_lights(scene, named, "two.json");
+  EXPECT_EQ(light_ids(scene), (std::vector<std::string>{"down", "slant"}));
+  keep_lights(scene, std::vector<std::string>{"slant"}, "two.json");
+  EXPECT_EQ(light_ids(scene), (std::vector<std::string>{"slant"}));
+  keep_lights(scene, {}, "two.json");  // none named: all kept
+  EXPECT_EQ(light_ids(scene), (std::vector<std::string>{"slant"}));
+}
+
+// Lights are generated independently: one light alone gives, bit for bit, what it gives
+// beside the others, and dropping the others from a database gives the same database.
+TEST(KeepLights, OneLightAloneIsThatLightOfTheWholeRun) {
+  GenerateOptions one_thread;
+  one_thread.threads = 1;
+  ShadowedScene all = generate_shadows(two_lights(), one_thread).shadowed;
+  Scene slant_only = two_lights();
+  keep_lights(slant_only, std::vector<std::string>{"slant"}, "two.json");
+  const ShadowedScene alone = generate_shadows(slant_only, one_thread).shadowed;
+  ASSERT_EQ(alone.lit.size(), 2u);
+  ASSERT_EQ(alone.lit[0].size(), 1u);
+  EXPECT_GT(lit_area(alone.lit[0][0]), 0.0);
+
+  keep_lights(all, std::vector<std::string>{"slant"}, "two.db.json");
+  EXPECT_EQ(light_ids(all.scene), (std::vector<std::string>{"slant"}));
+  EXPECT_EQ(database_json(all), database_json(alone));
+}
+
+TEST(KeepLights, AnIdTheInputLacksIsRefusedWithTheLightsItHas) {
+  Scene scene = two_lights();
+  try {
+    keep_lights(scene, std::vector<std::string>{"down", "sun"}, "two.json");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "two.json");
+    EXPECT_EQ(e.problem(),
+              "--lights names 'sun', which is not a light of it (its lights: 'down', 'slant')");
+  }
+  EXPECT_EQ(light_ids(scene), (std::vector<std::string>{"down", "slant"})) << "left as it was";
+
+  Scene dark = scene;
+  dark.lights.clear();
+  try {
+    keep_lights(dark, std::vector<std::string>{"sun"}, "dark.json");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.problem(), "--lights names 'sun', which is not a light of it (it has none)");
+  }
+}
+
+TEST(KeepLights, ADatabaseNotShapedFaceByLightIsRefused) {
+  ShadowedScene shadowed;
+  shadowed.scene = two_lights();
+  shadowed.lit.assign(2, std::vector<std::vector<LitPolygon>>(1));
+  EXPECT_THROW(keep_lights(shadowed, std::vector<std::string>{"down"}, "x.json"),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace shadowgen
