@@ -31,6 +31,7 @@
 #include <string>
 #include <utility>
 
+#include "bench/bench_main.h"
 #include "bench/scenes/box.h"
 #include "bench/scenes/city.h"
 #include "shadowgen/output/database.h"
@@ -174,19 +175,6 @@ int write_workload(const std::string& spec) {
 }  // namespace shadowgen::bench
 
 int main(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--write-database=", 17) == 0) {
-      try {
-        return shadowgen::bench::write_workload(argv[i] + 17);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-      }
-    }
-  }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return shadowgen::bench::main_with_mode(argc, argv, "write-database",
+                                          shadowgen::bench::write_workload);
 }

@@ -34,6 +34,7 @@
 #include <string>
 #include <utility>
 
+#include "bench/bench_main.h"
 #include "bench/scenes/city.h"
 #include "bench/scenes/cube_grid.h"
 #include "bench/scenes/scene_lit_areas.h"
@@ -141,19 +142,5 @@ int peak_rss(const std::string& spec) {
 }  // namespace shadowgen::bench
 
 int main(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--peak-rss=", 11) == 0) {
-      try {
-        return shadowgen::bench::peak_rss(argv[i] + 11);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return 1;
-      }
-    }
-  }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return shadowgen::bench::main_with_mode(argc, argv, "peak-rss", shadowgen::bench::peak_rss);
 }
