@@ -148,6 +148,10 @@ bool grazes(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& li
   return sine > 0.0 && sine < kGrazingSine;
 }
 
+bool in_plane(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light) {
+  return grazing_sine(part, plane, light) == 0.0;
+}
+
 std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
                                                 std::span<const hsr::Polygon3> polygons,
                                                 std::span<const hsr::Plane3> planes,

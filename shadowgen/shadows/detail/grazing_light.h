@@ -36,6 +36,13 @@ namespace shadowgen::detail {
 // Whether `light` grazes the front side of `part`, in `plane`: 0 < sin θ < 2^-20.
 bool grazes(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light);
 
+// Whether `light` lies in `part`'s plane (a point light) or runs parallel to it (a
+// directional one) as sin θ measures it: sin θ = 0. The plane's own test of which side a
+// light is on (faces_light) can still put it in front by a rounding; seen edge-on, the
+// part would then be cast back from an image without width. A light in the plane leaves
+// the part unlit (scene-format.md).
+bool in_plane(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light);
+
 // The lit region of polygons[part] under `light`, which must reach its front side.
 // `coplanar[i]`: polygons[i]'s coplanar group (coplanar_groups.h, -1 for none); members
 // of the part's group cast no shadow on it. Outer loops counter-clockwise seen from the

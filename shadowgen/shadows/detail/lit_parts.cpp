@@ -36,7 +36,12 @@ void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
   const std::span<const hsr::Plane3> planes = receivers.planes();
   const Light& light = receivers.light();
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    if (!receivers.lit_side(k) || !grazes(polygons[k], planes[k], light)) continue;
+    if (!receivers.lit_side(k)) continue;
+    if (in_plane(polygons[k], planes[k], light)) {
+      lit[receivers.part(k)].by_view.clear();
+      continue;
+    }
+    if (!grazes(polygons[k], planes[k], light)) continue;
     ++stats.faces_grazed;
     const std::size_t part = receivers.part(k);
     lit[part].by_view = {on_part(part, [&] {

@@ -346,6 +346,23 @@ TEST(ExtremesRegression, NearlyEdgeOnFaceIsLitWithinItselfAndTheRestExactly) {
   EXPECT_GT(oracle.lit(0, 0).lit_fraction, 0.9);
 }
 
+// A lamp in the plane of a triangle, which the plane's equation puts in front of it by a
+// rounding and its height over a vertex puts exactly in it (reader fuzzer finding
+// "obj-lamp-in-the-plane-lit-outside-the-face"). Seen edge-on, the triangle was cast back
+// from an image without width: a lit polygon through the lamp itself, 59 % of it outside
+// the triangle. A light in the plane leaves the face unlit.
+TEST(ExtremesRegression, LampInTheFacesPlaneLightsNothing) {
+  Scene scene;
+  add_face(scene, "t", polygon({{1, 0, 5}, {1, 5, 0}, {0, 1, 1}}));
+  scene.lights.push_back(point_light("lamp", {0.5, 0.5, 3}));
+  const ShadowedScene shadowed = generate_shadows(scene).shadowed;
+  ASSERT_EQ(shadowed.lit.size(), 1u);
+  EXPECT_TRUE(shadowed.lit[0][0].empty()) << lit_area(shadowed.lit[0][0]);
+  const std::vector<ReportRow> rows = report_rows(shadowed);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].lit_area, 0.0);
+}
+
 // One face of boxes_offset_1e8 alone under its lamp: nothing occludes it, so its lit
 // region is the face itself, which the generator can return with its own vertices.
 TEST(ExtremesRegression, LoneFaceUnderLampFarFromOriginIsLitWhole) {
