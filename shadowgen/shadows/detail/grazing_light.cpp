@@ -143,13 +143,10 @@ double grazing_sine(const hsr::Polygon3& part, const hsr::Plane3& plane, const L
 
 }  // namespace
 
-bool grazes(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light) {
+Incidence incidence(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light) {
   const double sine = grazing_sine(part, plane, light);
-  return sine > 0.0 && sine < kGrazingSine;
-}
-
-bool in_plane(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light) {
-  return grazing_sine(part, plane, light) == 0.0;
+  if (sine == 0.0) return Incidence::kInPlane;
+  return sine < kGrazingSine ? Incidence::kGrazing : Incidence::kOpen;
 }
 
 std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,

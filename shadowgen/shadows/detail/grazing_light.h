@@ -33,15 +33,16 @@
 
 namespace shadowgen::detail {
 
-// Whether `light` grazes the front side of `part`, in `plane`: 0 < sin θ < 2^-20.
-bool grazes(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light);
-
-// Whether `light` lies in `part`'s plane (a point light) or runs parallel to it (a
-// directional one) as sin θ measures it: sin θ = 0. The plane's own test of which side a
-// light is on (faces_light) can still put it in front by a rounding; seen edge-on, the
-// part would then be cast back from an image without width. A light in the plane leaves
-// the part unlit (scene-format.md).
-bool in_plane(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light);
+// How `light` meets the front side of `part`, in `plane`, by sin θ:
+//   kInPlane  sin θ = 0: a point light in the plane, a directional one parallel to it.
+//             The plane's own test of which side a light is on (faces_light) can still
+//             put it in front by a rounding; seen edge-on, the part would then be cast
+//             back from an image without width. A light in the plane leaves the part
+//             unlit (scene-format.md).
+//   kGrazing  0 < sin θ < 2^-20: lit by lit_by_grazing_light.
+//   kOpen     otherwise: lit through the light's views.
+enum class Incidence { kInPlane, kGrazing, kOpen };
+Incidence incidence(const hsr::Polygon3& part, const hsr::Plane3& plane, const Light& light);
 
 // The lit region of polygons[part] under `light`, which must reach its front side.
 // `coplanar[i]`: polygons[i]'s coplanar group (coplanar_groups.h, -1 for none); members

@@ -37,11 +37,9 @@ void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
   const Light& light = receivers.light();
   for (std::size_t k = 0; k < receivers.size(); ++k) {
     if (!receivers.lit_side(k)) continue;
-    if (in_plane(polygons[k], planes[k], light)) {
-      lit[receivers.part(k)].by_view.clear();
-      continue;
-    }
-    if (!grazes(polygons[k], planes[k], light)) continue;
+    const Incidence how = incidence(polygons[k], planes[k], light);
+    if (how == Incidence::kInPlane) lit[receivers.part(k)].by_view.clear();
+    if (how != Incidence::kGrazing) continue;
     ++stats.faces_grazed;
     const std::size_t part = receivers.part(k);
     lit[part].by_view = {on_part(part, [&] {

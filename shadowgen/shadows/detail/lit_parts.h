@@ -23,7 +23,7 @@ struct LitPart {
 // Receivers the light grazes: cast back from its image, their lit region would carry the
 // image's rounding divided by a tiny sine; it is worked out in their plane instead
 // (grazing_light.h) and replaces what the views gave. Receivers with the light in their
-// plane by that measure (in_plane) get nothing. `lit` is indexed like the FaceParts.
+// plane by that measure (Incidence::kInPlane) get nothing. `lit` is indexed like the FaceParts.
 // Counts the grazed in stats.faces_grazed.
 void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit, LightStats& stats);
 
