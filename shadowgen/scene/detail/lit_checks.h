@@ -22,7 +22,7 @@
 // tolerance follows their magnitude as well as the part's size (a face 1e8 from the origin
 // has coordinates rounded to ulps of 1e8). kRoundingReach = 2^-40 is the slack shadow
 // generation itself leaves a lit polygon beyond its part (shadows/detail/part_plane.h,
-// inside_box_of): about 8000 ulps, far above rounding, far below any real error.
+// part_reach): about 8000 ulps, far above rounding, far below any real error.
 //
 // A part without area (a degenerate face) has no plane; lit polygons on it can only pass
 // the area check with an area within rounding of 0.

@@ -7,6 +7,7 @@
 #include "coplanar_receivers.h"
 #include "hsr/hidden_surface.h"
 #include "part_failure.h"
+#include "part_plane.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -26,10 +27,14 @@ std::vector<clipper::PolygonSet2> seen_by_view(const Receivers& receivers, const
   return seen;
 }
 
-// Stage 3: receiver k's lit pieces in the image, merged and cast back onto its plane.
-std::vector<hsr::Polygon3> cast_back(const Receivers& receivers, std::size_t k,
-                                     const hsr::View& view, const clipper::PolygonSet2& lit) {
-  const BackProjector back(view, receivers.polygons()[k], receivers.planes()[k]);
+// Stage 3: receiver k's lit pieces in the image, merged and cast back onto its plane, as
+// one more view of its part.
+void cast_back(const Receivers& receivers, std::size_t k, const hsr::View& view,
+               const clipper::PolygonSet2& lit, LitPart& part) {
+  const hsr::Polygon3& polygon = receivers.polygons()[k];
+  const BackProjector back(view, polygon, receivers.planes()[k]);
+  // Half the reach leaves the other half to the roundings the join and the database add.
+  if (back.cast_reach() > 0.5 * part_reach(polygon)) part.may_stray = true;
   const clipper::PolygonSet2 merged =
       on_part(receivers.part(k), [&] { return clipper::merge_adjacent(lit); });
   std::vector<hsr::Polygon3> polygons;
@@ -37,7 +42,7 @@ std::vector<hsr::Polygon3> cast_back(const Receivers& receivers, std::size_t k,
     hsr::Polygon3 detail = back.lift(p);
     if (detail.outer.size() >= 3) polygons.push_back(std::move(detail));
   }
-  return polygons;
+  part.by_view.push_back(std::move(polygons));
 }
 
 }  // namespace
@@ -52,7 +57,7 @@ void light_through_view(const Receivers& receivers, const hsr::View& view,
     for (auto& q : extra[k]) pieces.push_back(std::move(q));
     // Every view that saw the part gets its list, empty or not, for the join
     // (lit_parts.h) to see.
-    lit[receivers.part(k)].by_view.push_back(cast_back(receivers, k, view, pieces));
+    cast_back(receivers, k, view, pieces, lit[receivers.part(k)]);
   }
 }
 

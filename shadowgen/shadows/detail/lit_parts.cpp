@@ -20,9 +20,10 @@ std::vector<hsr::Polygon3> joined(LitPart lit, const hsr::Polygon3& polygon,
     // Lit through several frusta of a point light: one region, not overlapping pieces.
     polygons = unite_views(lit.by_view, plane);
   }
-  // A part seen almost edge-on by the light: cast back onto its plane, a rounded image
-  // point can land far off the part. Its lit region is the part's at most.
-  if (!polygons.empty() && !inside_box_of(polygons, polygon)) {
+  // A part seen almost edge-on by the light, or small and far from it: cast back onto its
+  // plane, a rounded image point can land off the part. Its lit region is the part's at
+  // most.
+  if (!polygons.empty() && (lit.may_stray || !inside_box_of(polygons, polygon))) {
     polygons = within_part(polygons, polygon, plane);
   }
   return polygons;
@@ -45,6 +46,7 @@ void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
     lit[part].by_view = {on_part(part, [&] {
       return lit_by_grazing_light(k, polygons, planes, receivers.coplanar(), light);
     })};
+    lit[part].may_stray = false;  // worked out in the part's own plane
   }
 }
 

@@ -18,6 +18,9 @@ namespace shadowgen::detail {
 // point light may see a part through several frusta).
 struct LitPart {
   std::vector<std::vector<hsr::Polygon3>> by_view;
+  // Some view's rounding, cast back, may carry lit points beyond the part's reach
+  // (BackProjector::cast_reach): the join cuts them to the part.
+  bool may_stray = false;
 };
 
 // Receivers the light grazes: cast back from its image, their lit region would carry the

@@ -44,19 +44,39 @@ std::vector<hsr::Polygon3> within_part(std::span<const hsr::Polygon3> lit,
   return chart.lift(clipper::intersection(flat, {region}));
 }
 
-bool inside_box_of(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part) {
-  glm::dvec3 lo(INFINITY), hi(-INFINITY);
-  for (const glm::dvec3& v : part.outer) {
-    lo = glm::min(lo, v);
-    hi = glm::max(hi, v);
+namespace {
+
+struct Box3 {
+  glm::dvec3 lo{INFINITY};
+  glm::dvec3 hi{-INFINITY};
+};
+
+Box3 box_of(const hsr::Loop3& loop) {
+  Box3 box;
+  for (const glm::dvec3& v : loop) {
+    box.lo = glm::min(box.lo, v);
+    box.hi = glm::max(box.hi, v);
   }
-  // Grown by 2^-40 of the box's size and position: points rounded onto the plane stay
-  // within that (they are a few ulps off); points cast off a face seen edge-on do not.
-  const glm::dvec3 size = hi - lo;
-  const double slack =
-      0x1p-40 * (std::max({size.x, size.y, size.z}) + std::max(glm::length(lo), glm::length(hi)));
-  lo -= slack;
-  hi += slack;
+  return box;
+}
+
+double reach_of(const Box3& box) {
+  const glm::dvec3 size = box.hi - box.lo;
+  return 0x1p-40 *
+         (std::max({size.x, size.y, size.z}) + std::max(glm::length(box.lo), glm::length(box.hi)));
+}
+
+}  // namespace
+
+double part_reach(const hsr::Polygon3& part) { return reach_of(box_of(part.outer)); }
+
+bool inside_box_of(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part) {
+  const Box3 box = box_of(part.outer);
+  // Points rounded onto the plane stay within the reach (they are a few ulps off);
+  // points cast off a face seen edge-on do not.
+  const double slack = reach_of(box);
+  const glm::dvec3 lo = box.lo - slack;
+  const glm::dvec3 hi = box.hi + slack;
   auto inside = [&](const hsr::Loop3& loop) {
     return std::all_of(loop.begin(), loop.end(), [&](const glm::dvec3& v) {
       return glm::all(glm::lessThanEqual(lo, v)) && glm::all(glm::lessThanEqual(v, hi));

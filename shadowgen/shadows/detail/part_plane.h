@@ -30,8 +30,13 @@ std::vector<hsr::Polygon3> unite_views(std::span<const std::vector<hsr::Polygon3
 std::vector<hsr::Polygon3> within_part(std::span<const hsr::Polygon3> lit,
                                        const hsr::Polygon3& part, const hsr::Plane3& plane);
 
-// Whether every vertex of `lit` lies within the part's bounding box, grown by 2^-40 of
-// its size and position (then within_part has nothing to cut but roundings).
+// How far generation lets a lit vertex stray beyond its part: 2^-40 of the part's
+// bounding box size and position, the rounding of the part itself (the database reader
+// allows as much, shadowgen/scene/detail/lit_checks.h).
+double part_reach(const hsr::Polygon3& part);
+
+// Whether every vertex of `lit` lies within the part's bounding box, grown by its
+// part_reach (then within_part has nothing to cut but roundings).
 bool inside_box_of(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part);
 
 }  // namespace shadowgen::detail

@@ -22,7 +22,10 @@
 #include <string>
 #include <vector>
 
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/output/database.h"
 #include "shadowgen/output/report.h"
+#include "shadowgen/scene/database_reader.h"
 #include "shadowgen/shadows/generate.h"
 #include "tests/shadowgen/shadows/shadow_check.h"
 #include "tests/shadowgen/shadows/shadow_oracle.h"
@@ -361,6 +364,74 @@ TEST(ExtremesRegression, LampInTheFacesPlaneLightsNothing) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].lit_area, 0.0);
+}
+
+// Whether the database written from `shadowed` reads back: its lit polygons lie in their
+// faces' planes and inside them within the rounding the reader allows, which is that of
+// each face's own size and position (docs/scene-format.md, "Reading rules").
+std::string database_problem(const ShadowedScene& shadowed) {
+  try {
+    parse_database(database_json(shadowed), "db.json");
+    return "";
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+
+// A triangle 2e-9 across near the origin, 3 from its lamp, half in a board's shadow (reader
+// fuzzer findings "stl-tiny-face-lit-vertex-off-its-plane" and "...-2"). The shadow's edge
+// crosses it at points cast back from the lamp's view, which rounds to 2^-52 of the lamp's
+// distance, not of the face: they lay 4e-16 off its plane, 200 times its own rounding,
+// and the lit polygon bulged out of it. Cast points are now set back onto the plane
+// relative to the face, and a lit region the view's rounding can carry beyond the face is
+// cut to it.
+TEST(ExtremesRegression, TinyFaceFarFromItsLampIsLitOnItsPlaneAndWithinIt) {
+  for (const double size : {2e-9, 3e-12, 1e-6}) {
+    Scene scene;
+    add_face(scene, "tiny", polygon({{0, 0, 0}, {size, 0, 0.1 * size}, {0, size, 0.3 * size}}));
+    // Its shadow on z = 0 covers x < size / 2, from the lamp over (0.5, 0.5): about a
+    // quarter of the face is lit.
+    const double edge = 0.25 + size / 4;
+    add_face(scene, "board",
+             polygon({{-1, -1, 1.5}, {edge, -1, 1.5}, {edge, 2, 1.5}, {-1, 2, 1.5}}));
+    scene.lights.push_back(point_light("lamp", {0.5, 0.5, 3}));
+    scene.lights.push_back(directional_light("sun", {-0.15, 0.1, -0.5}));
+    const ShadowedScene shadowed = generate_shadows(scene).shadowed;
+    EXPECT_EQ(database_problem(shadowed), "") << "size " << size;
+    const ShadowOracle oracle(scene);
+    const LitComparison c = oracle.compare(0, 0, polygons_of(shadowed.lit[0][0]));
+    EXPECT_GT(c.exact_lit_area, 0.15 * c.face_area) << "size " << size;
+    EXPECT_LT(c.exact_lit_area, 0.35 * c.face_area) << "size " << size;
+    // The lamp's view places points to about 2^-52 of its distance, 3: 7e-16, a fraction
+    // 7e-16 / size of the face's size. Allow 15 times that of its area.
+    EXPECT_LE(c.symmetric_difference, 1e-14 / size * c.face_area) << "size " << size;
+  }
+}
+
+// The mesh of reader fuzzer finding "stl-small-face-lit-vertex-off-its-plane-2": a
+// triangle 1.4e-8 across near the origin, 3 from the lamp, behind a triangle reaching 1e38.
+// Lit whole but cut by the giant's image, its lit polygon got two more vertices, cast back
+// from the lamp's view 1e-16 beside its edges: a bulge of 1e-24 where its own rounding
+// allows 1e-27, and the database did not read back. A lit region the view's rounding can
+// carry beyond its face is cut to the face.
+TEST(ExtremesRegression, SmallFaceBehindAGiantTriangleIsLitWithinItself) {
+  Scene scene;
+  add_face(scene, "m/0",
+           polygon({{2.3310420260713727e-09, 7.712771084050275e-33, 5.827937021862795e-10},
+                    {2.673019989764637e+27, 1.3568781255105472e-19, 1.4918436284410842e-19},
+                    {5.822214377282364e-10, 2.3310988694902335e-09, -2.1320629642925313e+38}}));
+  add_face(scene, "m/1",
+           polygon({{1.3563156426940112e-19, 1.3563156426940112e-19, 1.3563156426940112e-19},
+                    {1.3563156426940112e-19, 1.3563156426940112e-19, 1.7841137465769667e+25},
+                    {1.3584109945831846e-19, 1.3563156426940112e-19, 1.3563156426940112e-19}}));
+  add_face(scene, "m/2",
+           polygon({{1.3563156426940112e-19, 1.3563156426940112e-19, 1.3563156426940112e-19},
+                    {1.4321386743176845e-08, 2.3310420260713727e-09, 2.977851722388882e-39},
+                    {0.0, 5.829789984090894e-10, 5.827747173725584e-10}}));
+  scene.lights.push_back(directional_light("sun", {-0.15, 0.1, -0.5}));
+  scene.lights.push_back(point_light("lamp", {0.5, 0.5, 3}));
+  const ShadowedScene shadowed = generate_shadows(scene).shadowed;
+  EXPECT_EQ(database_problem(shadowed), "");
 }
 
 // One face of boxes_offset_1e8 alone under its lamp: nothing occludes it, so its lit
