@@ -1,9 +1,11 @@
-// Shadow generation (shadowgen::generate_shadows) at scale, one light at a time, one
-// thread (GenerateOptions::threads = 1). Workloads:
+// Shadow generation (shadowgen::generate_shadows) at scale, one light at a time, on one
+// thread (GenerateOptions::threads = 1) unless a workload names its threads. Workloads:
 //
-//   BM_CitySun/faces, BM_CityLamp/faces   the procedural city (bench/scenes/city.h) of
-//                                         about 1e3, 1e4 and 1e5 faces with only its sun
-//                                         or only its street lamp (range 4 lots);
+//   BM_CitySun/faces/threads,             the procedural city (bench/scenes/city.h) of
+//   BM_CityLamp/faces/threads             about 1e3, 1e4 and 1e5 faces with only its sun
+//                                         or only its street lamp (range 4 lots), on 1
+//                                         thread and (1e4, 1e5) on 2: one light's image
+//                                         regions in parallel (hsr/image_regions.h);
 //   BM_CubesSun, BM_CubesLamp             Thakur, Cheng and Miura's 2000 cubes (a 20 × 10
 //                                         × 10 grid) half a cell above a tiled ground
 //                                         (bench/scenes/cube_grid.h).
@@ -69,17 +71,17 @@ const Scene& cubes(int light) {
   return it->second;
 }
 
-GenerateResult generate(const Scene& scene) {
+GenerateResult generate(const Scene& scene, unsigned threads) {
   GenerateOptions options;
-  options.threads = 1;
+  options.threads = threads;
   return generate_shadows(scene, options);
 }
 
-void run(benchmark::State& state, const Scene& scene) {
+void run(benchmark::State& state, const Scene& scene, unsigned threads = 1) {
   try {
     GenerateResult result;
     for (auto _ : state) {
-      result = generate(scene);
+      result = generate(scene, threads);
       benchmark::DoNotOptimize(result.shadowed.lit.data());
     }
     const LitAreas areas = checked_lit_areas(result.shadowed);
@@ -103,14 +105,24 @@ std::size_t faces(const benchmark::State& state) {
   return static_cast<std::size_t>(state.range(0));
 }
 
-void BM_CitySun(benchmark::State& state) { run(state, city(faces(state), kSun)); }
-void BM_CityLamp(benchmark::State& state) { run(state, city(faces(state), kLamp)); }
+unsigned threads(const benchmark::State& state) { return static_cast<unsigned>(state.range(1)); }
+
+void BM_CitySun(benchmark::State& state) { run(state, city(faces(state), kSun), threads(state)); }
+void BM_CityLamp(benchmark::State& state) { run(state, city(faces(state), kLamp), threads(state)); }
 void BM_CubesSun(benchmark::State& state) { run(state, cubes(kSun)); }
 void BM_CubesLamp(benchmark::State& state) { run(state, cubes(kLamp)); }
 
 // Each iteration takes from milliseconds to a minute: one iteration per repetition.
-BENCHMARK(BM_CitySun)->Arg(1000)->Arg(10000)->Arg(100000)->Iterations(1)->Unit(benchmark::kSecond);
-BENCHMARK(BM_CityLamp)->Arg(1000)->Arg(10000)->Arg(100000)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_CitySun)
+    ->ArgsProduct({{1000}, {1}})
+    ->ArgsProduct({{10000, 100000}, {1, 2}})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+BENCHMARK(BM_CityLamp)
+    ->ArgsProduct({{1000}, {1}})
+    ->ArgsProduct({{10000, 100000}, {1, 2}})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 BENCHMARK(BM_CubesSun)->Arg(2000)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_CubesLamp)->Arg(2000)->Iterations(1)->Unit(benchmark::kSecond);
 
@@ -131,7 +143,7 @@ int peak_rss(const std::string& spec) {
   const int light = std::strcmp(light_name, "lamp") == 0 ? kLamp : kSun;
   const Scene& scene = std::strcmp(workload, "cubes") == 0 ? cubes(light) : city(size, light);
   const long before = max_rss_kb();
-  const GenerateResult result = generate(scene);
+  const GenerateResult result = generate(scene, 1);
   checked_lit_areas(result.shadowed);
   std::printf("%s faces %zu light %s: scene built %ld kB, peak %ld kB, light_s %.3f\n", workload,
               scene.faces.size(), light_name, before, max_rss_kb(), result.stats.at(0).seconds);

@@ -28,8 +28,9 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
                    "reading warnings are errors: a non-planar polygon (instead of being "
                    "triangulated), an unknown key");
   command.add_option("--threads", args.threads,
-                     "worker threads when generating, one light each (0: one per hardware "
-                     "thread)");
+                     "worker threads when generating, for the lights and the regions of each "
+                     "light's view (0: one per hardware thread); the result does not depend "
+                     "on them");
   add_lights_option(command, args.lights);
   command.add_flag("--verbose", args.verbose,
                    "every reading warning on its own line (a kind of warning that many faces "

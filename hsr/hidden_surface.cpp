@@ -11,6 +11,8 @@
 #include "clipper/merge.h"
 #include "detail/half_plane.h"
 #include "hsr/convex_window.h"
+#include "hsr/image_regions.h"
+#include "hsr/parallel.h"
 #include "hsr/spatial_grid.h"
 
 namespace shadowgen::hsr {
@@ -235,25 +237,87 @@ class AreaSort {
   std::vector<Fragment>* out_ = nullptr;
 };
 
+// Fragments of one parent that share edges joined: tiles of a wide polygon, pieces cut at
+// region sides, pieces of one polygon that the templates left side by side. Parents are
+// merged in parallel, in order.
 std::vector<Fragment> merge_by_parent(std::vector<Fragment> fragments) {
   std::stable_sort(fragments.begin(), fragments.end(),
                    [](const Fragment& a, const Fragment& b) { return a.parent < b.parent; });
-  std::vector<Fragment> merged;
-  std::vector<PolygonWithHoles2> group;
-  for (std::size_t i = 0; i < fragments.size();) {
-    std::size_t j = i;
-    group.clear();
-    while (j < fragments.size() && fragments[j].parent == fragments[i].parent) {
-      group.push_back(std::move(fragments[j].shape));
-      ++j;
-    }
-    for (PolygonWithHoles2& p :
-         clip_of(fragments[i].parent, [&] { return clipper::merge_adjacent(group); })) {
-      merged.push_back({fragments[i].parent, std::move(p)});
-    }
-    i = j;
+  std::vector<std::size_t> starts;
+  for (std::size_t i = 0; i < fragments.size(); ++i) {
+    if (i == 0 || fragments[i].parent != fragments[i - 1].parent) starts.push_back(i);
   }
-  return merged;
+  starts.push_back(fragments.size());
+  std::vector<PolygonSet2> merged(starts.size() - 1);
+  for_each_in_parallel(merged.size(), [&](std::size_t g) {
+    PolygonSet2 group;
+    for (std::size_t i = starts[g]; i < starts[g + 1]; ++i) {
+      group.push_back(std::move(fragments[i].shape));
+    }
+    const std::size_t parent = fragments[starts[g]].parent;
+    merged[g] = clip_of(parent, [&] { return clipper::merge_adjacent(group); });
+  });
+  std::vector<Fragment> out;
+  for (std::size_t g = 0; g < merged.size(); ++g) {
+    for (PolygonWithHoles2& p : merged[g])
+      out.push_back({fragments[starts[g]].parent, std::move(p)});
+  }
+  return out;
+}
+
+// The pieces each region settles: whole where a piece's box lies in the region, else
+// clipped to each region its box overlaps.
+std::vector<std::vector<Piece>> split_into_regions(std::vector<Piece> pieces,
+                                                   std::span<const clipper::Box2> regions,
+                                                   HsrStats& stats) {
+  std::vector<std::vector<Piece>> by_region(regions.size());
+  if (regions.size() == 1) {
+    by_region[0] = std::move(pieces);
+    return by_region;
+  }
+  for (Piece& piece : pieces) {
+    const clipper::Box2 box = clipper::box_of(piece.shape);
+    const auto home = std::find_if(regions.begin(), regions.end(),
+                                   [&box](const clipper::Box2& r) { return r.contains(box); });
+    if (home != regions.end()) {
+      by_region[static_cast<std::size_t>(home - regions.begin())].push_back(std::move(piece));
+      continue;
+    }
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      if (!regions[r].overlaps(box)) continue;
+      const clipper::Box2& t = regions[r];
+      const PolygonWithHoles2 rect{
+          {{t.xmin, t.ymin}, {t.xmax, t.ymin}, {t.xmax, t.ymax}, {t.xmin, t.ymax}}, {}};
+      ++stats.clips;
+      for (PolygonWithHoles2& q :
+           clip_of(piece.parent, [&] { return clipper::clip(piece.shape, rect).inside; })) {
+        by_region[r].push_back({std::move(q), piece.parent});
+      }
+    }
+  }
+  return by_region;
+}
+
+// Each region's area sort, in parallel; the fragments in region order. The failure passed
+// on is the first region's, whatever the threads did.
+std::vector<Fragment> sort_regions(std::vector<std::vector<Piece>> by_region,
+                                   const std::vector<Nearness>& nearness,
+                                   const std::vector<char>& facing, HsrStats& stats) {
+  std::vector<std::vector<Fragment>> found(by_region.size());
+  std::vector<HsrStats> region_stats(by_region.size());
+  for_each_in_parallel(by_region.size(), [&](std::size_t r) {
+    AreaSort(nearness, facing, region_stats[r]).run(std::move(by_region[r]), found[r]);
+  });
+  std::vector<Fragment> fragments;
+  for (std::size_t r = 0; r < found.size(); ++r) {
+    stats.templates += region_stats[r].templates;
+    stats.clips += region_stats[r].clips;
+    stats.depth_errors += region_stats[r].depth_errors;
+    stats.depth_splits += region_stats[r].depth_splits;
+    stats.cycle_breaks += region_stats[r].cycle_breaks;
+    for (Fragment& f : found[r]) fragments.push_back(std::move(f));
+  }
+  return fragments;
 }
 
 }  // namespace
@@ -290,7 +354,14 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const
     for (PolygonWithHoles2& p : image) pieces.push_back({std::move(p), i});
   }
 
-  AreaSort(result.nearness, facing, stats).run(std::move(pieces), result.fragments);
+  std::vector<clipper::Box2> boxes;
+  boxes.reserve(pieces.size());
+  for (const Piece& p : pieces) boxes.push_back(clipper::box_of(p.shape));
+  const std::size_t count = options.regions ? options.regions : region_count_for(pieces.size());
+  const std::vector<clipper::Box2> regions = image_regions(boxes, count);
+  stats.regions = regions.size();
+  result.fragments = sort_regions(split_into_regions(std::move(pieces), regions, stats),
+                                  result.nearness, facing, stats);
   stats.fragments_before_merge = result.fragments.size();
   if (options.merge_fragments) result.fragments = merge_by_parent(std::move(result.fragments));
   // Pieces that meet exactly can get vertices an ulp apart from two chains of clips, each

@@ -25,6 +25,9 @@
 // whichever is the template, so coplanar pairs such as the ground and a box's floor do
 // not depend on the input order.
 //
+// Regions. The image is cut into rectangles settled independently, in parallel
+// (image_regions.h), on oneTBB's threads: as many as the calling task arena allows.
+//
 // Cost. Templates find the polygons they overlap through a uniform grid over image-space
 // bounding boxes (polygons wider than many cells are kept on a short list of their own),
 // so for scenes of bounded depth complexity the work grows close to linearly with the
@@ -57,6 +60,7 @@ struct HsrStats {
   std::size_t projected_polygons = 0;  // with area in the view, after frustum clipping
   std::size_t edge_on = 0;             // seen edge-on: no area in the image
   std::size_t outside_view = 0;        // wholly outside the frustum
+  std::size_t regions = 0;             // of the image, settled independently (image_regions.h)
   std::size_t templates = 0;
   std::size_t clips = 0;
   std::size_t depth_errors = 0;  // recursions on a piece in front of its template
@@ -70,6 +74,10 @@ struct HsrStats {
 struct HsrOptions {
   // Merge fragments of one parent that share whole edges (cheap: no new clipping).
   bool merge_fragments = true;
+  // Regions of the image settled independently and in parallel (image_regions.h); 0: as
+  // many as region_count_for the number of pieces. The result depends on the regions,
+  // never on the threads.
+  std::size_t regions = 0;
 };
 
 struct VisibleSurfaces {

@@ -1,12 +1,13 @@
 #include "shadowgen/shadows/generate.h"
 
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <exception>
 #include <mutex>
 #include <new>
-#include <thread>
 
 #include "clipper/clip.h"
 #include "detail/face_parts.h"
@@ -14,6 +15,7 @@
 #include "detail/lit_parts.h"
 #include "detail/part_failure.h"
 #include "detail/receivers.h"
+#include "hsr/parallel.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/shadows/light_views.h"
 
@@ -24,13 +26,16 @@ namespace {
 // range, seen through each of its views, the parts it grazes worked out in their planes,
 // each part's views joined.
 std::vector<std::vector<LitPolygon>> light_one(const detail::FaceParts& parts, const Light& light,
-                                               LightStats& stats) {
+                                               const GenerateOptions& options, LightStats& stats) {
   const detail::Receivers receivers(parts, light, stats);
   const std::vector<hsr::View> views =
       light_views(light, receivers.polygons(), receivers.planes(), parts.centre);
   stats.frusta = views.size();
   std::vector<detail::LitPart> lit(parts.size());
-  for (const hsr::View& view : views) detail::light_through_view(receivers, view, lit, stats);
+  const hsr::HsrOptions hsr{.regions = options.image_regions};
+  for (const hsr::View& view : views) {
+    detail::light_through_view(receivers, view, hsr, lit, stats);
+  }
   detail::relight_grazed_parts(receivers, lit, stats);
   return detail::join_per_face(parts, std::move(lit), stats);
 }
@@ -38,10 +43,12 @@ std::vector<std::vector<LitPolygon>> light_one(const detail::FaceParts& parts, c
 // light_one, its failures named by the face and the light being worked on.
 std::vector<std::vector<LitPolygon>> light_one_named(const Scene& scene,
                                                      const detail::FaceParts& parts,
-                                                     std::size_t light, LightStats& stats) {
+                                                     std::size_t light,
+                                                     const GenerateOptions& options,
+                                                     LightStats& stats) {
   const std::string& light_id = scene.lights[light].id;
   try {
-    return light_one(parts, scene.lights[light], stats);
+    return light_one(parts, scene.lights[light], options, stats);
   } catch (const detail::PartFailure& e) {
     const std::string& face_id = scene.faces[parts.owners[e.part()].face].id;
     throw GenerationError("", face_id, light_id,
@@ -77,35 +84,25 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
 
   const detail::FaceParts parts = detail::flatten(scene);
   std::vector<std::vector<std::vector<LitPolygon>>> per_light(lights);
-  std::atomic<std::size_t> next{0};
   std::mutex report_mutex;
-  // Per light, so that the failure reported is the first light's whatever the threads did.
-  std::vector<std::exception_ptr> failures(lights);
-  auto worker = [&] {
-    for (std::size_t l = next++; l < lights; l = next++) {
-      try {
-        const auto start = std::chrono::steady_clock::now();
-        per_light[l] = light_one_named(scene, parts, l, result.stats[l]);
-        result.stats[l].seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (options.on_light_done) {
-          const std::lock_guard lock(report_mutex);
-          options.on_light_done(l, result.stats[l]);
-        }
-      } catch (...) {
-        failures[l] = std::current_exception();
+  // Lights in parallel, and within each light the regions of its views (hsr/
+  // image_regions.h) and its receivers, all on one pool of `threads` threads. The failure
+  // passed on is the first light's whatever the threads did.
+  const int threads =
+      options.threads ? static_cast<int>(options.threads) : tbb::info::default_concurrency();
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    hsr::for_each_in_parallel(lights, [&](std::size_t l) {
+      const auto start = std::chrono::steady_clock::now();
+      per_light[l] = light_one_named(scene, parts, l, options, result.stats[l]);
+      result.stats[l].seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (options.on_light_done) {
+        const std::lock_guard lock(report_mutex);
+        options.on_light_done(l, result.stats[l]);
       }
-    }
-  };
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t count = std::min<std::size_t>(options.threads ? options.threads : hw, lights);
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < count; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& failure : failures) {
-    if (failure) std::rethrow_exception(failure);
-  }
+    });
+  });
 
   for (std::size_t l = 0; l < lights; ++l) {
     for (std::size_t f = 0; f < faces; ++f) result.shadowed.lit[f][l] = std::move(per_light[l][f]);

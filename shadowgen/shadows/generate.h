@@ -47,7 +47,13 @@ struct LightStats {
 };
 
 struct GenerateOptions {
-  unsigned threads = 0;  // 0: one per hardware thread
+  // Threads for the lights and, within each, its views' image regions and its receivers
+  // (0: one per hardware thread). The result does not depend on them.
+  unsigned threads = 0;
+  // Regions each light view's image is cut into and settled independently (hsr/
+  // image_regions.h); 0: as many as the number of pieces calls for. Tests set it to cut
+  // small scenes.
+  std::size_t image_regions = 0;
   // Called after each light is done (from the worker that finished it); for progress.
   std::function<void(std::size_t light, const LightStats&)> on_light_done;
 };

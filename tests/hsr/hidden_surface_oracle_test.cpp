@@ -52,6 +52,16 @@ TEST_P(HiddenSurfaceOracle, ShuffledInputGivesTheSameVisibleAreas) {
   ExpectOrderIndependent(scene_of(GetParam()), 3, 7);
 }
 
+// The image cut into regions settled independently (hsr/image_regions.h): pieces crossing
+// a region's side are clipped to each region and merged again, and what each point shows
+// is the same.
+TEST_P(HiddenSurfaceOracle, RegionsOfTheImageSettledApartGiveTheSameAnswer) {
+  VisibilityCheckOptions options;
+  options.samples = 20000;
+  options.hsr.regions = 9;
+  ExpectVisibilityMatchesOracles(scene_of(GetParam()), options);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, HiddenSurfaceOracle, ::testing::ValuesIn(kScenes),
                          [](const ::testing::TestParamInfo<SceneCase>& param) {
                            return param.param.name;

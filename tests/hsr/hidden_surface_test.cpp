@@ -3,6 +3,7 @@
 #include "hsr/hidden_surface.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <iostream>
@@ -216,6 +217,50 @@ TEST(HiddenSurface, MergingFragmentsKeepsEachPolygonsArea) {
   const std::vector<double> a = visible_area_by_parent(merged, scene.polygons.size());
   const std::vector<double> b = visible_area_by_parent(unmerged, scene.polygons.size());
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-14) << "polygon " << i;
+}
+
+// Regions of the image (hsr/image_regions.h) are settled on as many threads as the task
+// arena has: the fragments are the same, byte for byte, on 1, 2 or 3 of them.
+TEST(HiddenSurface, RegionsGiveTheSameFragmentsOnAnyThreadCount) {
+  const Scene scene = triangle_soup(5, 150);
+  const View view = make_view(scene.views[0]);
+  auto on_threads = [&](int threads) {
+    tbb::task_arena arena(threads);
+    return arena.execute(
+        [&] { return hsr::remove_hidden_surfaces(scene.polygons, view, {.regions = 9}); });
+  };
+  const hsr::VisibleSurfaces one = on_threads(1);
+  EXPECT_EQ(one.stats.regions, 9u);
+  for (int threads : {2, 3}) {
+    const hsr::VisibleSurfaces more = on_threads(threads);
+    ASSERT_EQ(more.fragments.size(), one.fragments.size()) << threads << " threads";
+    for (std::size_t k = 0; k < one.fragments.size(); ++k) {
+      EXPECT_EQ(more.fragments[k].parent, one.fragments[k].parent) << k;
+      EXPECT_EQ(more.fragments[k].shape.outer, one.fragments[k].shape.outer) << k;
+      EXPECT_EQ(more.fragments[k].shape.holes, one.fragments[k].shape.holes) << k;
+    }
+  }
+}
+
+// Cut into regions and merged again, every polygon keeps its visible area (to rounding:
+// the cuts along region sides are rounded crossings).
+TEST(HiddenSurface, RegionsKeepEachPolygonsVisibleArea) {
+  const Scene scene = boxes_on_ground(9, 40);
+  for (const ViewSpec& spec : scene.views) {
+    const View view = make_view(spec);
+    const hsr::VisibleSurfaces whole = hsr::remove_hidden_surfaces(scene.polygons, view);
+    EXPECT_EQ(whole.stats.regions, 1u);
+    for (std::size_t regions : {2u, 5u, 16u}) {
+      const hsr::VisibleSurfaces cut =
+          hsr::remove_hidden_surfaces(scene.polygons, view, {.regions = regions});
+      EXPECT_GE(cut.stats.regions, regions / 2) << regions;
+      const std::vector<double> a = visible_area_by_parent(whole, scene.polygons.size());
+      const std::vector<double> b = visible_area_by_parent(cut, scene.polygons.size());
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_NEAR(a[i], b[i], 1e-12) << "polygon " << i << ", " << regions << " regions";
+      }
+    }
+  }
 }
 
 }  // namespace

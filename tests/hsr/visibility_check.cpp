@@ -457,7 +457,8 @@ void ExpectVisibilityMatchesOracles(const Scene& scene, const VisibilityCheckOpt
     SCOPED_TRACE(name);
     const hsr::View view = make_view(scene.views[v]);
     const auto start = std::chrono::steady_clock::now();
-    const hsr::VisibleSurfaces result = hsr::remove_hidden_surfaces(scene.polygons, view);
+    const hsr::VisibleSurfaces result =
+        hsr::remove_hidden_surfaces(scene.polygons, view, options.hsr);
     const auto removed = std::chrono::steady_clock::now();
     VisibilityCheckOptions view_options = options;
     view_options.seed = options.seed + v;

@@ -43,6 +43,7 @@ struct VisibilityCheckOptions {
   std::uint64_t seed = 1;
   double relative_area_tolerance = 1e-9;
   std::size_t lost_probes = 200;  // interior points tried per polygon without fragments
+  hsr::HsrOptions hsr;            // how the removal runs (regions of the image...)
 };
 
 struct VisibilityCheck {

@@ -6,6 +6,7 @@
 #include "clipper/merge.h"
 #include "coplanar_receivers.h"
 #include "hsr/hidden_surface.h"
+#include "hsr/parallel.h"
 #include "part_failure.h"
 #include "part_plane.h"
 
@@ -14,10 +15,10 @@ namespace {
 
 // Stage 1: the fragments the view sees, per receiver, in image coordinates.
 std::vector<clipper::PolygonSet2> seen_by_view(const Receivers& receivers, const hsr::View& view,
-                                               LightStats& stats) {
+                                               const hsr::HsrOptions& hsr, LightStats& stats) {
   hsr::VisibleSurfaces visible;
   try {
-    visible = hsr::remove_hidden_surfaces(receivers.polygons(), view);
+    visible = hsr::remove_hidden_surfaces(receivers.polygons(), view, hsr);
   } catch (const hsr::PolygonClipError& e) {
     throw PartFailure(receivers.part(e.polygon()), e.problem());
   }
@@ -48,17 +49,18 @@ void cast_back(const Receivers& receivers, std::size_t k, const hsr::View& view,
 }  // namespace
 
 void light_through_view(const Receivers& receivers, const hsr::View& view,
-                        std::vector<LitPart>& lit, LightStats& stats) {
-  std::vector<clipper::PolygonSet2> seen = seen_by_view(receivers, view, stats);
+                        const hsr::HsrOptions& hsr, std::vector<LitPart>& lit, LightStats& stats) {
+  std::vector<clipper::PolygonSet2> seen = seen_by_view(receivers, view, hsr, stats);
   std::vector<clipper::PolygonSet2> extra = seen_on_shared_planes(receivers, view, seen);
-  for (std::size_t k = 0; k < receivers.size(); ++k) {
-    if (!receivers.lit_side(k) || (seen[k].empty() && extra[k].empty())) continue;
+  // Receivers in parallel: each writes only its own part's list.
+  hsr::for_each_in_parallel(receivers.size(), [&](std::size_t k) {
+    if (!receivers.lit_side(k) || (seen[k].empty() && extra[k].empty())) return;
     clipper::PolygonSet2 pieces = std::move(seen[k]);
     for (auto& q : extra[k]) pieces.push_back(std::move(q));
     // Every view that saw the part gets its list, empty or not, for the join
     // (lit_parts.h) to see.
     cast_back(receivers, k, view, pieces, lit[receivers.part(k)]);
-  }
+  });
 }
 
 }  // namespace shadowgen::detail

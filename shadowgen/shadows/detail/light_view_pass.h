@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "hsr/hidden_surface.h"
 #include "hsr/view.h"
 #include "lit_parts.h"
 #include "receivers.h"
@@ -17,8 +18,9 @@
 namespace shadowgen::detail {
 
 // Appends this view's lit polygons to `lit` (indexed like the FaceParts) for every
-// receiver the view lights; counts the fragments in stats.fragments.
+// receiver the view lights; counts the fragments in stats.fragments. `hsr`: how the
+// view's hidden surfaces are removed (its image regions).
 void light_through_view(const Receivers& receivers, const hsr::View& view,
-                        std::vector<LitPart>& lit, LightStats& stats);
+                        const hsr::HsrOptions& hsr, std::vector<LitPart>& lit, LightStats& stats);
 
 }  // namespace shadowgen::detail

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "grazing_light.h"
+#include "hsr/parallel.h"
 #include "part_failure.h"
 #include "part_plane.h"
 
@@ -52,12 +53,16 @@ void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
 
 std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::vector<LitPart> lit,
                                                    LightStats& stats) {
+  // Parts in parallel, then gathered by face in order.
+  std::vector<std::vector<hsr::Polygon3>> joined_parts(parts.size());
+  hsr::for_each_in_parallel(parts.size(), [&](std::size_t i) {
+    joined_parts[i] =
+        on_part(i, [&] { return joined(std::move(lit[i]), parts.polygons[i], parts.planes[i]); });
+  });
   std::vector<std::vector<LitPolygon>> lit_by_face(parts.face_count);
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const PartOwner& owner = parts.owners[i];
-    std::vector<hsr::Polygon3> polygons =
-        on_part(i, [&] { return joined(std::move(lit[i]), parts.polygons[i], parts.planes[i]); });
-    for (hsr::Polygon3& p : polygons) {
+    for (hsr::Polygon3& p : joined_parts[i]) {
       ++stats.lit_polygons;
       lit_by_face[owner.face].push_back({owner.part, std::move(p)});
     }

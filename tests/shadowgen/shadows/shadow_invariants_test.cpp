@@ -127,6 +127,26 @@ TEST_P(Invariants, UniformScaleChangesNothing) {
   ExpectSameFractions(scene, scaled(scene, 1024.0), "scale_1024");
 }
 
+// Each light's image cut into regions settled apart (hsr/image_regions.h), on 1, 2 or 3
+// threads: the database is the same byte for byte whatever the thread count, and the
+// lit regions agree with the oracle as the uncut ones do.
+TEST_P(Invariants, ImageRegionsOnAnyThreadCountGiveOneDatabase) {
+  const Scene& scene = GetParam().scene;
+  GenerateOptions options;
+  options.image_regions = 6;
+  options.threads = 1;
+  const GenerateResult one = generate_shadows(scene, options);
+  const std::string database = database_json(one.shadowed);
+  for (unsigned threads : {2u, 3u}) {
+    options.threads = threads;
+    EXPECT_EQ(database_json(generate_shadows(scene, options).shadowed), database)
+        << threads << " threads";
+  }
+  const OracleCheck check = check_against_oracle(scene, one.shadowed, kTolerance);
+  std::printf("[ 6 regions ] %s\n", summary(check).c_str());
+  EXPECT_EQ(check.failures, 0u) << check.report;
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, Invariants, ::testing::ValuesIn(oracle_scenes()),
                          [](const auto& p) { return p.param.name; });
 
