@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Builds mesh_bench and prints, as markdown, shadowgen's exact generator against Embree
+# casting 1024 stratified shadow rays per face, one core each, on real meshes above a
+# ground under a sun and a lamp: per mesh and light the median CPU times, their ratio,
+# and Embree's errors against the exact result, all measured in one run.
+#
+#   bench/run_mesh_bench.sh [--no-build] [extra Google Benchmark flags...]
+#
+# BUILD_DIR (default build/release) and REPETITIONS (default 5) as in run_hsr_bench.sh.
+set -euo pipefail
+
+source "$(dirname "${BASH_SOURCE[0]}")/run_benchmark.sh"
+run_benchmark mesh_bench "$@"
+
+python3 - "$BENCH_JSON" "$BENCH_LOAD" <<'PY'
+import json, sys
+
+path, load = sys.argv[1], sys.argv[2]
+report = json.load(open(path))
+to_ms = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+runs = {}
+for b in report["benchmarks"]:
+    if b.get("aggregate_name") != "median" and not b.get("error_occurred"):
+        continue
+    name, mesh, light = b["run_name"].split("/")[:3]
+    runs[(name, int(mesh), int(light))] = b
+reps = next((b["repetitions"] for b in runs.values() if "repetitions" in b), "?")
+with open("/proc/loadavg") as f:
+    after = " ".join(f.read().split()[:3])
+print(f"{report['context'].get('date', '?')}; load average (1, 5, 15 min) {load} before the "
+      f"run, {after} after. Median CPU time of {reps} repetitions, one core each.")
+print()
+print("| mesh | faces | light | partly shadowed | exact | Embree | exact ÷ Embree "
+      "| mean frac. err | max frac. err | area err |")
+print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|")
+lights = ["sun", "lamp"]
+
+def ms(b):
+    return b["cpu_time"] * to_ms[b["time_unit"]]
+
+def cell(t):
+    return f"{t:.3g} ms" if t < 1000 else f"{t / 1000:.3g} s"
+
+for m in sorted({k[1] for k in runs}):
+    for l in sorted({k[2] for k in runs if k[1] == m}):
+        ex, em = runs.get(("BM_Exact", m, l)), runs.get(("BM_Embree", m, l))
+        label = f"{(ex or {}).get('label', m)} | "
+        failed = [b for b in (ex, em) if b is None or b.get("error_occurred")]
+        if failed:
+            why = "; ".join(b.get("error_message", "?") for b in failed if b)
+            print(f"| {label}| {lights[l]} | failed: {why or 'missing'} | | | | | | |")
+            continue
+        print(f"| {label}{ex['faces']:.0f} | {lights[l]} | {100 * ex['partly']:.0f} % "
+              f"| {cell(ms(ex))} | {cell(ms(em))} | {ms(ex) / ms(em):.2f} "
+              f"| {em['frac_err_mean']:.1e} | {em['frac_err_max']:.1e} | {em['area_err']:.1e} |")
+PY
