@@ -18,6 +18,9 @@
 
 namespace shadowgen::bench {
 
+// rtcOccluded1 per ray, or rtcOccluded16 on packets of 16 rays of one face.
+enum class RayCasting { kOneByOne, kPackets16 };
+
 class EmbreeShadowRays {
  public:
   EmbreeShadowRays();  // a device limited to one thread
@@ -26,7 +29,8 @@ class EmbreeShadowRays {
   EmbreeShadowRays& operator=(const EmbreeShadowRays&) = delete;
 
   // Estimated lit area of every face of `scene` under `light`, in the scene's face order.
-  std::vector<double> lit_areas(const Scene& scene, const Light& light, int k) const;
+  std::vector<double> lit_areas(const Scene& scene, const Light& light, int k,
+                                RayCasting casting = RayCasting::kOneByOne) const;
 
  private:
   RTCDevice device_;
