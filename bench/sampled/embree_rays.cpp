@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <stdexcept>
@@ -21,9 +20,9 @@ namespace {
 // units behind the rounded plane, and Embree's own intersection arithmetic adds a few
 // more; 8 units clears both, so a ray never hits its own face. The offset is kept that
 // small on purpose: a ray leaving a face at a grazing angle θ passes an occluder next to
-// it (a neighbour across a concave edge) higher by offset / sin θ, so a larger offset
-// (1e-5 of the scene, tried first) missed shadows near the terminator and lit some faces
-// up to 25 % more than the exact result and double-precision rays both said.
+// it (a neighbour across a concave edge) higher by offset / sin θ: an offset of 1e-5 of
+// the scene misses shadows near the terminator and lights some faces of the benchmark's
+// meshes up to 25 % more than the exact result and double-precision rays both say.
 constexpr double kOffsetUlps = 8.0;
 
 double origin_offset(const std::vector<glm::dvec3>& loop) {
