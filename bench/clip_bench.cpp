@@ -33,7 +33,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <exception>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -42,6 +41,7 @@
 #include "bench/cgal_bool_ops.h"
 #include "bench/clipper1_bool_ops.h"
 #include "bench/geos_bool_ops.h"
+#include "bench/guarded.h"
 #include "bench/jittered_star.h"
 #include "clipper/clip.h"
 
@@ -78,16 +78,6 @@ void report(benchmark::State& state, std::size_t vertex_count, const clipper::Cl
 
 std::size_t vertex_count(const benchmark::State& state) {
   return static_cast<std::size_t>(state.range(0));
-}
-
-// Runs `body` and turns an exception into a skipped benchmark carrying its message.
-template <class Body>
-void guarded(benchmark::State& state, Body body) {
-  try {
-    body();
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-  }
 }
 
 void BM_Shadowgen(benchmark::State& state) {

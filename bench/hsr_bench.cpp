@@ -25,12 +25,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cstddef>
-#include <exception>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "bench/guarded.h"
 #include "bench/scenes/cube_grid.h"
 #include "bench/scenes/triangle_soup.h"
 #include "hsr/hidden_surface.h"
@@ -85,15 +85,6 @@ void report(benchmark::State& state, std::span<const hsr::Polygon3> polygons, co
   state.counters["depth_errors"] = static_cast<double>(s.depth_errors);
   state.counters["depth_splits"] = static_cast<double>(s.depth_splits);
   state.counters["visible_area"] = visible_area;
-}
-
-template <class Body>
-void guarded(benchmark::State& state, Body body) {
-  try {
-    body();
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-  }
 }
 
 void run(benchmark::State& state, std::span<const hsr::Polygon3> polygons, const hsr::View& view) {

@@ -23,50 +23,37 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <exception>
-#include <map>
 #include <stdexcept>
-#include <utility>
 
+#include "bench/exact_one_thread.h"
+#include "bench/guarded.h"
+#include "bench/once_per_case.h"
 #include "bench/sampled/shadow_map.h"
 #include "bench/sampled/shadow_rays.h"
 #include "bench/scenes/city.h"
 #include "bench/scenes/cube_grid.h"
 #include "bench/scenes/scene_lit_areas.h"
-#include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::bench {
 namespace {
 
 const Scene& scene_with_light(int scene, int light) {
-  static std::map<std::pair<int, int>, Scene> cache;
-  auto it = cache.find({scene, light});
-  if (it == cache.end()) {
+  return once_per_case(scene, light, [&] {
     Scene s = scene == 0 ? city_scene({city_lots_for_faces(1000), 20.0, 1})
                          : cubes_on_ground({20, 10, 10, 0.0});
     s.lights = {s.lights.at(static_cast<std::size_t>(light))};
-    it = cache.emplace(std::pair{scene, light}, std::move(s)).first;
-  }
-  return it->second;
-}
-
-GenerateResult exact(const Scene& scene) {
-  GenerateOptions options;
-  options.threads = 1;
-  return generate_shadows(scene, options);
+    return s;
+  });
 }
 
 const LitAreas& reference(int scene, int light) {
-  static std::map<std::pair<int, int>, LitAreas> cache;
-  auto it = cache.find({scene, light});
-  if (it == cache.end()) {
-    LitAreas areas = checked_lit_areas(exact(scene_with_light(scene, light)).shadowed);
+  return once_per_case(scene, light, [&] {
+    LitAreas areas = checked_lit_areas(exact_one_thread(scene_with_light(scene, light)).shadowed);
     double lit = 0.0;
     for (double a : areas.lit[0]) lit += a;
     if (!(lit > 0.0)) throw std::runtime_error("exact result: nothing lit");
-    it = cache.emplace(std::pair{scene, light}, std::move(areas)).first;
-  }
-  return it->second;
+    return areas;
+  });
 }
 
 void report_error(benchmark::State& state, const LitAreas& ref, const std::vector<double>& lit) {
@@ -83,26 +70,13 @@ void report_error(benchmark::State& state, const LitAreas& ref, const std::vecto
   state.counters["lit_fraction"] = lit_sum / ref.total_area;
 }
 
-template <class Body>
-void guarded(benchmark::State& state, Body body) {
-  try {
-    body();
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-  }
-}
-
 int arg(const benchmark::State& state, int i) { return static_cast<int>(state.range(i)); }
 
 void BM_Exact(benchmark::State& state) {
   guarded(state, [&] {
     const Scene& scene = scene_with_light(arg(state, 0), arg(state, 1));
     const LitAreas& ref = reference(arg(state, 0), arg(state, 1));
-    GenerateResult result;
-    for (auto _ : state) {
-      result = exact(scene);
-      benchmark::DoNotOptimize(result.shadowed.lit.data());
-    }
+    const GenerateResult result = timed_exact_one_thread(state, scene);
     report_error(state, ref, checked_lit_areas(result.shadowed).lit[0]);
   });
 }
