@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "clipper/box.h"
 #include "clipper/clip.h"
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
@@ -24,14 +25,30 @@ using LightSet = std::vector<std::size_t>;
 using SetPieces = std::vector<std::pair<LightSet, clipper::PolygonSet2>>;
 
 // Every set's pieces split by the lit polygons `clips` of light l: the pieces inside go to
-// the set with l added, those outside stay.
+// the set with l added, those outside stay. A piece is clipped only by the lit polygons
+// whose boxes overlap its own, and one that no lit polygon's box overlaps stays whole
+// without a clip: under many lights (a sun path) most pieces of a face meet only a few
+// of each light's lit polygons, or none.
 SetPieces split_by_light(const SetPieces& regions,
                          std::span<const clipper::PolygonWithHoles2> clips, std::size_t l) {
+  std::vector<clipper::Box2> boxes;
+  boxes.reserve(clips.size());
+  for (const clipper::PolygonWithHoles2& c : clips) boxes.push_back(clipper::box_of(c));
+  std::vector<clipper::PolygonWithHoles2> near;
   SetPieces split;
   for (const auto& [set, pieces] : regions) {
     clipper::PolygonSet2 inside, outside;
     for (const clipper::PolygonWithHoles2& piece : pieces) {
-      clipper::ClipResult r = clipper::clip(piece, clips);
+      const clipper::Box2 box = clipper::box_of(piece);
+      near.clear();
+      for (std::size_t c = 0; c < clips.size(); ++c) {
+        if (boxes[c].overlaps(box)) near.push_back(clips[c]);
+      }
+      if (near.empty()) {
+        outside.push_back(piece);
+        continue;
+      }
+      clipper::ClipResult r = clipper::clip(piece, near);
       for (auto& p : r.inside) inside.push_back(std::move(p));
       for (auto& p : r.outside) outside.push_back(std::move(p));
     }
