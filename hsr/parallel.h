@@ -5,7 +5,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
 
 #include <cstddef>
 #include <exception>
@@ -14,24 +13,23 @@
 namespace shadowgen::hsr {
 
 // Calls work(i) for every i in [0, n), in parallel on the threads of the calling task
-// arena (every hardware thread unless a tbb::task_arena limits them), each index a task
-// of its own. work(i) must write only what belongs to i. Where calls throw, all still
-// run, and the exception of the lowest index is rethrown.
+// arena (every hardware thread unless a tbb::task_arena limits them); oneTBB's automatic
+// partitioner groups indices into tasks, fewer for many cheap calls, one each for a few
+// heavy ones when threads would idle. work(i) must write only what belongs to i. Where
+// calls throw, all still run, and the exception of the lowest index is rethrown.
 template <class Work>
 void for_each_in_parallel(std::size_t n, Work&& work) {
   std::vector<std::exception_ptr> failures(n);
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, n, 1),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-          try {
-            work(i);
-          } catch (...) {
-            failures[i] = std::current_exception();
-          }
-        }
-      },
-      tbb::simple_partitioner{});
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        try {
+                          work(i);
+                        } catch (...) {
+                          failures[i] = std::current_exception();
+                        }
+                      }
+                    });
   for (const std::exception_ptr& failure : failures) {
     if (failure) std::rethrow_exception(failure);
   }

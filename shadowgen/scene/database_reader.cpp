@@ -10,7 +10,9 @@
 #include "detail/face_builder.h"
 #include "detail/json_entities.h"
 #include "detail/lit_checks.h"
+#include "hsr/area.h"
 #include "hsr/collinearity.h"
+#include "hsr/parallel.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
@@ -55,6 +57,7 @@ class DatabaseParser {
     shadowed.lit.reserve(faces.size());
     for (std::size_t i = 0; i < faces.size(); ++i) read_face(faces.at(i), shadowed);
     top.finish();
+    check_lit(shadowed);
     return shadowed;
   }
 
@@ -75,15 +78,16 @@ class DatabaseParser {
       part.finish();
       face.parts.push_back(checked_part(std::move(polygon), part.value(), face.id));
     }
-    const detail::LitChecker checker(face);
-    if (!std::isfinite(checker.face_area())) {
+    if (!std::isfinite(hsr::area(face.parts))) {
       parts_value.fail("the face's area is not a finite number (coordinates too large)");
     }
     std::vector<std::vector<LitPolygon>> lit(shadowed.scene.lights.size());
+    lists_of_face_.push_back(lists_.size());
     for (const auto& [light_id, list] : entry.get("lit").object().entries()) {
       const auto light = light_index_.find(light_id);
       if (light == light_index_.end()) list.fail("no light has this id");
-      lit[light->second] = read_lit(list, face, checker);
+      lit[light->second] = read_lit(list, face);
+      lists_.push_back({light->second, list});
     }
     entry.finish();
     shadowed.scene.faces.push_back(std::move(face));
@@ -121,9 +125,9 @@ class DatabaseParser {
   // lit['id']: the polygons, each on the part its "part" key names. Without the key (a
   // database written before parts were recorded) a polygon lies on the part whose plane
   // is nearest to its outer vertices, the first of equals.
-  std::vector<LitPolygon> read_lit(const JsonValue& value, const Face& face,
-                                   const detail::LitChecker& checker) const {
+  std::vector<LitPolygon> read_lit(const JsonValue& value, const Face& face) const {
     const JsonArray list = value.array();
+    std::optional<detail::LitChecker> checker;  // only to place polygons without "part"
     std::vector<LitPolygon> out;
     out.reserve(list.size());
     for (std::size_t k = 0; k < list.size(); ++k) {
@@ -139,15 +143,35 @@ class DatabaseParser {
                      std::to_string(face.parts.size()) + " parts");
         }
       } else if (face.parts.size() > 1) {
-        lit.part = checker.nearest_part(lit.polygon);
+        if (!checker) checker.emplace(face);
+        lit.part = checker->nearest_part(lit.polygon);
       }
       object.finish();
       out.push_back(std::move(lit));
     }
-    if (const std::optional<detail::LitProblem> problem = checker.check(out)) {
-      (problem->polygon ? list.at(*problem->polygon) : value).fail(problem->what);
-    }
     return out;
+  }
+
+  // The lit polygons' checks (detail/lit_checks.h), the costly part of reading a
+  // database (a clip per part and light), faces in parallel; the problem reported is the
+  // first in the file's order.
+  void check_lit(const ShadowedScene& shadowed) const {
+    const std::size_t faces = lists_of_face_.size();
+    std::vector<std::optional<detail::LitProblem>> problems(lists_.size());
+    hsr::for_each_in_parallel(faces, [&](std::size_t f) {
+      const std::size_t end = f + 1 < faces ? lists_of_face_[f + 1] : lists_.size();
+      if (lists_of_face_[f] == end) return;
+      const detail::LitChecker checker(shadowed.scene.faces[f]);
+      for (std::size_t k = lists_of_face_[f]; k < end; ++k) {
+        problems[k] = checker.check(shadowed.lit[f][lists_[k].light]);
+      }
+    });
+    for (std::size_t k = 0; k < lists_.size(); ++k) {
+      if (const std::optional<detail::LitProblem>& problem = problems[k]) {
+        const JsonValue& value = lists_[k].value;
+        (problem->polygon ? value.array().at(*problem->polygon) : value).fail(problem->what);
+      }
+    }
   }
 
   const std::string file_;
@@ -155,6 +179,14 @@ class DatabaseParser {
   std::vector<std::string>& warnings_;
   detail::IdRegistry face_ids_;
   std::unordered_map<std::string, std::size_t> light_index_;
+  // Each face's lists of lit polygons, checked once all are read (check_lit): where each
+  // face's lists start in lists_, and per list its light and where it stands in the file.
+  struct LitList {
+    std::size_t light;
+    JsonValue value;
+  };
+  std::vector<std::size_t> lists_of_face_;
+  std::vector<LitList> lists_;
 };
 
 }  // namespace
