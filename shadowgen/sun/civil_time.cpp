@@ -82,6 +82,16 @@ std::string minute_text(const CivilTime& time) {
   return text;
 }
 
+std::string civil_text(const CivilTime& time) {
+  std::string text = minute_text(time);
+  if (time.second != 0) {
+    text += ':';
+    text += static_cast<char>('0' + time.second / 10);
+    text += static_cast<char>('0' + time.second % 10);
+  }
+  return text;
+}
+
 std::int64_t seconds_since_1970(const CivilTime& time) {
   return days_from_civil(time.year, time.month, time.day) * kSecondsPerDay +
          (time.hour * 60 + time.minute) * 60 + time.second;

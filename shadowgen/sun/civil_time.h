@@ -30,6 +30,9 @@ std::optional<CivilTime> parse_civil_time(std::string_view text);
 // `YYYY-MM-DDTHH:MM`: the name of an instant (its seconds are left out).
 std::string minute_text(const CivilTime& time);
 
+// `YYYY-MM-DDTHH:MM`, with `:SS` when the seconds are not 0.
+std::string civil_text(const CivilTime& time);
+
 // Seconds from 1970-01-01T00:00:00 on the same clock (negative before it), and back.
 std::int64_t seconds_since_1970(const CivilTime& time);
 CivilTime civil_time_at(std::int64_t seconds_since_1970);

@@ -30,6 +30,8 @@ TEST(CivilTime, RefusesAnythingElse) {
 TEST(CivilTime, NamesAnInstantToTheMinute) {
   EXPECT_EQ(minute_text({2026, 3, 21, 6, 5, 59}), "2026-03-21T06:05");
   EXPECT_EQ(minute_text({987, 1, 2, 3, 4, 0}), "0987-01-02T03:04");
+  EXPECT_EQ(civil_text({2026, 3, 21, 6, 5, 0}), "2026-03-21T06:05");
+  EXPECT_EQ(civil_text({2003, 10, 17, 12, 30, 7}), "2003-10-17T12:30:07");
 }
 
 TEST(CivilTime, SecondsRoundTripAcrossMonthsYearsAndLeapDays) {
