@@ -23,13 +23,15 @@ void add_lights_option(CLI::App& command, std::vector<std::string>& ids) {
       ->delimiter(',');
 }
 
-void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
+void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress, bool generates) {
   command.add_flag("--strict", args.strict,
                    "reading warnings are errors: a non-planar polygon (instead of being "
                    "triangulated), an unknown key");
-  command.add_option("--threads", args.threads,
-                     "worker threads when generating, one light each (0: one per hardware "
-                     "thread)");
+  if (generates) {
+    command.add_option("--threads", args.threads,
+                       "worker threads when generating, one light each (0: one per hardware "
+                       "thread)");
+  }
   add_lights_option(command, args.lights);
   command.add_flag("--verbose", args.verbose,
                    "every reading warning on its own line (a kind of warning that many faces "
