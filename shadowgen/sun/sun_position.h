@@ -22,8 +22,10 @@
 //
 // Tested (tests/shadowgen/sun/sun_position_test.cpp) against the paper's own example
 // (zenith 50.11162°, azimuth 194.34024°) to 1e-4°, Meeus's example 25.b (apparent right
-// ascension and declination) to 1e-3°, and the instants of equinoxes and solstices that
-// the US Naval Observatory publishes (declination 0 and ±ε) to 0.01°.
+// ascension and declination) to 1e-4°, and the instants of equinoxes and solstices that
+// the US Naval Observatory publishes to 0.01°: right ascension a multiple of 90°,
+// declination 0 or ±ε, the sun due east or west on the equator at an equinox, and at ε
+// above the horizon from the pole at a solstice.
 
 namespace shadowgen::sun {
 

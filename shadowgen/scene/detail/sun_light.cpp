@@ -134,8 +134,8 @@ bool is_sun_light(const JsonValue& value) {
   if (!value.is_object()) return false;
   JsonObject entry = value.object();
   const std::optional<JsonValue> type = entry.find("type");
-  return type && !type->is_object() && !type->is_array() && !type->is_null() &&
-         type->describe() == "a string" && type->string() == "sun";
+  // Anything else, a `type` that is not a string included, is read_light's to report.
+  return type && type->describe() == "a string" && type->string() == "sun";
 }
 
 std::vector<Light> read_sun_light(const JsonValue& value, IdRegistry& ids,

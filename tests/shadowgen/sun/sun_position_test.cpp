@@ -101,6 +101,21 @@ TEST(SunPosition, OnTheEquatorAtAnEquinoxTheSunIsDueEastOrDueWest) {
   EXPECT_NEAR(morning.elevation_deg + afternoon.elevation_deg, 90.0, 0.05);
 }
 
+// Seen from a pole the sun's elevation is its declination, whatever the hour: at the
+// June solstices from the North Pole and the December ones from the South Pole, ε (23.438°)
+// plus the refraction there (0.038°, Bennett and Saemundsson alike) less the parallax
+// (0.002°).
+TEST(SunPosition, FromThePoleAtASolsticeTheSunStandsAtTheObliquity) {
+  for (const char* june : {"2024-06-20T20:51", "2025-06-21T02:42", "2026-06-21T08:24"}) {
+    const SunPosition p = sun_position({90.0, 0.0}, julian_day_of(june), 69.0);
+    EXPECT_NEAR(p.elevation_deg, 23.438 + 0.038 - 0.002, 0.01) << june;
+  }
+  for (const char* december : {"2024-12-21T09:20", "2025-12-21T15:03", "2026-12-21T20:50"}) {
+    const SunPosition p = sun_position({-90.0, 0.0}, julian_day_of(december), 69.0);
+    EXPECT_NEAR(p.elevation_deg, 23.438 + 0.038 - 0.002, 0.01) << december;
+  }
+}
+
 TEST(SunPosition, BelowTheHorizonNoRefractionIsAdded) {
   // Midnight at Greenwich in March: the sun is some 38° below the horizon, and its
   // elevation is the true one, so that raising the pressure changes nothing.
