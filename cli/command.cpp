@@ -27,12 +27,12 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress, bo
   command.add_flag("--strict", args.strict,
                    "reading warnings are errors: a non-planar polygon (instead of being "
                    "triangulated), an unknown key");
-  if (generates) {
-    command.add_option("--threads", args.threads,
-                       "worker threads when generating, one light each (0: one per hardware "
-                       "thread)");
-  }
+  command.add_option("--threads", args.threads,
+                     "worker threads when generating, one light each (0: one per hardware "
+                     "thread)");
   add_lights_option(command, args.lights);
+  // Declared once above for every subcommand; one that computes no shadow has no use for it.
+  if (!generates) command.remove_option(command.get_option("--threads"));
   command.add_flag("--verbose", args.verbose,
                    "every reading warning on its own line (a kind of warning that many faces "
                    "of one mesh draw is otherwise one line)");
