@@ -23,7 +23,7 @@ void add_lights_option(CLI::App& command, std::vector<std::string>& ids) {
       ->delimiter(',');
 }
 
-void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
+void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress, bool generates) {
   command.add_flag("--strict", args.strict,
                    "reading warnings are errors: a non-planar polygon (instead of being "
                    "triangulated), an unknown key");
@@ -32,6 +32,8 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress) {
                      "light's view (0: one per hardware thread); the result does not depend "
                      "on them");
   add_lights_option(command, args.lights);
+  // Declared once above for every subcommand; one that computes no shadow has no use for it.
+  if (!generates) command.remove_option(command.get_option("--threads"));
   command.add_flag("--verbose", args.verbose,
                    "every reading warning on its own line (a kind of warning that many faces "
                    "of one mesh draw is otherwise one line)");

@@ -3,7 +3,8 @@
 // What the subcommands of `shadowgen` share, each defined once: the shape of a subcommand,
 // the reading options (--strict, --threads, --quiet) and -o/--output, and the error for
 // arguments that parse but do not fit together. main.cpp wires the subcommands
-// (generate_command.cpp, report_command.cpp, export_command.cpp, render_command.cpp)
+// (generate_command.cpp, report_command.cpp, export_command.cpp, render_command.cpp,
+// sun_command.cpp)
 // and turns their errors into exit codes.
 
 #include <CLI/CLI.hpp>
@@ -52,6 +53,7 @@ Command add_generate_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_export_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
+Command add_sun_command(CLI::App& app);
 
 // How an input is read and its shadows generated.
 struct ReadingArgs {
@@ -63,8 +65,10 @@ struct ReadingArgs {
 };
 
 // --strict, --threads, --lights, --verbose and -q/--quiet on `command`; `progress`: the subcommand
-// shows a progress line, which --quiet also silences.
-void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress = false);
+// shows a progress line, which --quiet also silences; without `generates` (a subcommand that
+// computes no shadow), no --threads.
+void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress = false,
+                         bool generates = true);
 
 // --lights on `command`: the ids of the only lights a run takes (LoadOptions::lights).
 void add_lights_option(CLI::App& command, std::vector<std::string>& ids);

@@ -36,6 +36,18 @@ struct LightRange {
   double exponent = 2.0;
 };
 
+// What a directional light placed by a `sun` entry stands for (docs/scene-format.md, "Site
+// and sun path"): one instant of the entry, kept for what sums over a sun path (sun hours,
+// shading schedules) and for listing the instants.
+struct SunInstant {
+  std::string sun_id;          // the `sun` entry's id; the light's is `<sun_id>@<YYYY-MM-DDTHH:MM>`
+                               // for a sun path, sun_id itself for a single `time`
+  std::string time;            // local standard time, `YYYY-MM-DDTHH:MM`, `:SS` added when not 0
+  int step_min = 0;            // the minutes the instant stands for in a sun path; 0 for a `time`
+  double azimuth_deg = 0.0;    // clockwise from true north
+  double elevation_deg = 0.0;  // apparent (refraction included), above 0
+};
+
 struct Light {
   std::string id;
   LightType type = LightType::kDirectional;
@@ -45,6 +57,7 @@ struct Light {
   glm::dvec3 position{0.0};  // point
   glm::dvec3 intensity{1.0, 1.0, 1.0};
   std::optional<LightRange> range;  // point lights only
+  std::optional<SunInstant> sun;    // directional lights a `sun` entry placed
 };
 
 struct ViewSpec {
@@ -55,10 +68,21 @@ struct ViewSpec {
   double fov_deg = 45.0;
 };
 
+// Where the scene stands on the Earth, and how it is turned.
+struct Site {
+  double latitude_deg = 0.0;    // north-positive, [-90, 90]
+  double longitude_deg = 0.0;   // east-positive, [-180, 180]
+  double elevation_m = 0.0;     // above sea level
+  double utc_offset_h = 0.0;    // local standard time minus UTC, no daylight saving
+  double north_axis_deg = 0.0;  // from true north to the scene's +y, clockwise from above
+};
+
 struct Scene {
   std::vector<Face> faces;  // polygons first, then mesh faces, in file order
+  // In file order; a `sun` entry is its instants, in time order, where it stood.
   std::vector<Light> lights;
   std::vector<ViewSpec> views;
+  std::optional<Site> site;
 };
 
 }  // namespace shadowgen

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "detail/csv_fields.h"
 #include "hsr/area.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/model/input_error.h"
@@ -20,6 +21,8 @@ namespace shadowgen {
 namespace {
 
 using Layout = JsonWriter::Layout;
+using detail::append_csv_field;
+using detail::append_csv_number;
 
 double fraction(double part, double whole) { return whole == 0.0 ? 0.0 : part / whole; }
 
@@ -42,32 +45,6 @@ class Sum {
   double sum_ = 0.0;
   double compensation_ = 0.0;
 };
-
-// %.17g, but independent of the C locale's decimal point.
-void append_csv_number(std::string& out, double value) {
-  out += number_text(value, std::chars_format::general, 17);
-}
-
-// RFC 4180: a field holding a comma, a quote, CR or LF is quoted, its quotes doubled.
-// CsvIds::kSpreadsheetSafe first puts "'" before a field a spreadsheet would take for a
-// formula.
-void append_csv_field(std::string& out, std::string_view field, CsvIds ids) {
-  const bool formula =
-      !field.empty() && std::string_view("=+-@\t\r").find(field.front()) != std::string_view::npos;
-  const std::string_view guard = ids == CsvIds::kSpreadsheetSafe && formula ? "'" : "";
-  if (field.find_first_of(",\"\r\n") == std::string_view::npos) {
-    out += guard;
-    out += field;
-    return;
-  }
-  out += '"';
-  out += guard;
-  for (const char c : field) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  out += '"';
-}
 
 void write_totals(JsonWriter& out, double area, double lit_area) {
   out.key("area").value(area).key("lit_area").value(lit_area);

@@ -17,9 +17,16 @@ std::vector<bool> chosen(const Scene& scene, std::span<const std::string> ids,
                          const std::string& file) {
   std::vector<bool> keep(scene.lights.size(), false);
   for (const std::string& id : ids) {
-    const auto it = std::find_if(scene.lights.begin(), scene.lights.end(),
-                                 [&id](const Light& light) { return light.id == id; });
-    if (it == scene.lights.end()) {
+    const auto named = [&id](const Light& light) {
+      return light.id == id || (light.sun && light.sun->sun_id == id);
+    };
+    bool found = false;
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+      if (!named(scene.lights[k])) continue;
+      keep[k] = true;
+      found = true;
+    }
+    if (!found) {
       std::string known;
       for (const Light& light : scene.lights) {
         known += (known.empty() ? "" : ", ") + std::string("'") + one_line(light.id) + "'";
@@ -29,7 +36,6 @@ std::vector<bool> chosen(const Scene& scene, std::span<const std::string> ids,
                            (known.empty() ? std::string("it has none") : "its lights: " + known) +
                            ")");
     }
-    keep[static_cast<std::size_t>(it - scene.lights.begin())] = true;
   }
   return keep;
 }

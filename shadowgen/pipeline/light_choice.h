@@ -13,8 +13,10 @@
 namespace shadowgen {
 
 // Keeps the lights whose ids are in `ids`, in the input's order whatever order they are
-// named in (a name given twice counts once). Throws InputError naming `file` for an id
-// the input has no light of, listing the ones it has. An empty `ids` keeps every light.
+// named in (a name given twice counts once). In a scene, the id of a `sun` entry names
+// all its instants (Light::sun); a database keeps only the instants' own ids. Throws InputError
+// naming `file` for an id the input has no light of, listing the ones it has. An empty `ids` keeps
+// every light.
 void keep_lights(Scene& scene, std::span<const std::string> ids, const std::string& file);
 
 // The same for a shadowed database: its lights and their lit polygons (std::invalid_argument

@@ -1,6 +1,7 @@
 #include "shadowgen/pipeline/load_shadowed.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "shadowgen/json/document.h"
@@ -17,16 +18,29 @@ void pass_on(const std::vector<std::string>& warnings, const LoadOptions& option
   for (const std::string& warning : warnings) options.on_warning(warning);
 }
 
-ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
-                        const LoadOptions& options) {
+// The scene read, as the options ask for it.
+Scene prepared(ReadResult read, const std::filesystem::path& path, const LoadOptions& options) {
   pass_on(read.warnings, options);
   keep_lights(read.scene, options.lights, path.string());
   if (options.on_scene) options.on_scene(read.scene);
+  return std::move(read.scene);
+}
+
+ReadOptions read_options(const LoadOptions& options) {
+  ReadOptions read;
+  read.strict = options.strict;
+  read.verbose = options.verbose;
+  return read;
+}
+
+ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
+                        const LoadOptions& options) {
+  const Scene scene = prepared(std::move(read), path, options);
   GenerateOptions generate;
   generate.threads = options.threads;
   generate.on_light_done = options.on_light_done;
   try {
-    return generate_shadows(read.scene, generate).shadowed;
+    return generate_shadows(scene, generate).shadowed;
   } catch (const GenerationError& e) {
     // Only here is the file known.
     throw GenerationError(path.string(), e.face_id(), e.light_id(), e.problem());
@@ -58,9 +72,7 @@ ShadowedScene database(const Document& document, const ReadOptions& read,
 }  // namespace
 
 ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options) {
-  ReadOptions read;
-  read.strict = options.strict;
-  read.verbose = options.verbose;
+  const ReadOptions read = read_options(options);
   // A scene only: the scene reader's own messages, a wrong "format" included.
   if (options.accept == Accept::kScene) return generated(read_scene(path, read), path, options);
 
@@ -70,6 +82,10 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
     refuse(document, options);
   }
   return generated(parse_scene(document.text, document.path, read), path, options);
+}
+
+Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+  return prepared(read_scene(path, read_options(options)), path, options);
 }
 
 }  // namespace shadowgen

@@ -1,11 +1,15 @@
 #include "shadowgen/scene/scene_reader.h"
 
+#include <iterator>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "detail/face_builder.h"
 #include "detail/json_entities.h"
 #include "detail/mesh_entry.h"
+#include "detail/site_entry.h"
+#include "detail/sun_light.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
@@ -40,12 +44,12 @@ class SceneParser {
                                 result_.warnings);
       }
     }
+    if (const std::optional<JsonValue> site = top.find("site")) {
+      result_.scene.site = detail::read_site(*site);
+    }
     if (const std::optional<JsonValue> lights = top.find("lights")) {
       const JsonArray list = lights->array();
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        result_.scene.lights.push_back(
-            detail::read_light(list.at(i), light_ids_, detail::Source::kScene));
-      }
+      for (std::size_t i = 0; i < list.size(); ++i) read_light_entry(list.at(i));
     }
     if (const std::optional<JsonValue> views = top.find("views")) {
       const JsonArray list = views->array();
@@ -83,14 +87,24 @@ class SceneParser {
     top.value().fail(problem);
   }
 
-  // Keys of the format's site and sun-path extension, which this reader does not
-  // implement: ignored, and said so (a sun light is an error: an unknown light type).
+  // The weather file of the site and sun-path extension, which this reader does not
+  // implement: ignored, and said so.
   void note_unsupported(JsonObject& top) const {
-    for (const char* key : {"site", "weather"}) {
-      if (const std::optional<JsonValue> value = top.find(key)) {
-        value->warn("not supported by this reader (site and sun path), ignored");
-      }
+    if (const std::optional<JsonValue> value = top.find("weather")) {
+      value->warn("not supported by this reader (a weather file), ignored");
     }
+  }
+
+  // A `sun` entry becomes the directional lights of its instants, where it stands.
+  void read_light_entry(const JsonValue& value) {
+    std::vector<Light>& lights = result_.scene.lights;
+    if (!detail::is_sun_light(value)) {
+      lights.push_back(detail::read_light(value, light_ids_, detail::Source::kScene));
+      return;
+    }
+    std::vector<Light> instants = detail::read_sun_light(value, light_ids_, result_.scene.site);
+    lights.insert(lights.end(), std::make_move_iterator(instants.begin()),
+                  std::make_move_iterator(instants.end()));
   }
 
   // Polygon ids and mesh ids share one namespace (a polygon id never contains '/', and a

@@ -18,16 +18,6 @@ glm::dvec3 read_point(const JsonValue& value) {
   return p;
 }
 
-// Only a direction's direction matters (the spec: it need not be unit length). Scaled by
-// a power of two, which is exact, so that its largest component lies in [0.5, 1): then
-// 1e-300 or 1e300 long directions neither underflow nor overflow in dot products.
-glm::dvec3 power_of_two_scaled(const glm::dvec3& v) {
-  const double largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  int exponent = 0;
-  std::frexp(largest, &exponent);
-  return {std::ldexp(v.x, -exponent), std::ldexp(v.y, -exponent), std::ldexp(v.z, -exponent)};
-}
-
 // A member a database must have and a scene may leave out.
 std::optional<JsonValue> member(JsonObject& object, std::string_view key, Source source) {
   if (source == Source::kDatabase) return object.get(key);
@@ -73,11 +63,24 @@ void read_light_kind(JsonObject& entry, Light& light, Source source) {
       light.range = read_range(*range, source);
     }
   } else {
-    type.fail("unknown light type '" + kind + "' (expected 'directional' or 'point')");
+    // A scene's `sun` entries are read apart (sun_light.h); a database holds their
+    // instants as directional lights.
+    type.fail("unknown light type '" + kind + "' (expected " +
+              (source == Source::kScene ? "'directional', 'point' or 'sun')"
+                                        : "'directional' or 'point')"));
   }
 }
 
 }  // namespace
+
+// Only a direction's direction matters (the spec: it need not be unit length); at this
+// scale 1e-300 or 1e300 long directions neither underflow nor overflow in dot products.
+glm::dvec3 power_of_two_scaled(const glm::dvec3& v) {
+  const double largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return {std::ldexp(v.x, -exponent), std::ldexp(v.y, -exponent), std::ldexp(v.z, -exponent)};
+}
 
 void IdRegistry::claim(const std::string& id, std::string owner, const JsonValue& at) {
   const auto [it, fresh] = owners_.emplace(id, std::move(owner));
@@ -91,8 +94,6 @@ std::string read_id(JsonObject& entry) {
   return id;
 }
 
-// The entry's id, claimed in `ids` for a `kind` ("light", "view") and naming the entry in
-// later errors.
 std::string read_claimed_id(JsonObject& entry, IdRegistry& ids, const std::string& kind) {
   std::string id = read_id(entry);
   ids.claim(id, "another " + kind, entry.get("id"));

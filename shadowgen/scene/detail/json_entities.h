@@ -33,6 +33,14 @@ class IdRegistry {
 // The entry's "id": a non-empty string.
 std::string read_id(JsonObject& entry);
 
+// The entry's id, claimed in `ids` for a `kind` ("light", "view"), and naming the entry in
+// later messages: `lights[1] ('lamp')`.
+std::string read_claimed_id(JsonObject& entry, IdRegistry& ids, const std::string& kind);
+
+// A light's direction scaled by a power of two, which is exact, so that its largest
+// component lies in [0.5, 1) (Light::direction). `v` is finite and not zero.
+glm::dvec3 power_of_two_scaled(const glm::dvec3& v);
+
 // lights[i]: its id claimed in `ids`; then named `light 'id'` in messages. In a scene, the
 // direction of a directional light is scaled by a power of two into [0.5, 1)
 // (Light::direction); a database's is kept as written.

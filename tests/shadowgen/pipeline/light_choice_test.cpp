@@ -37,6 +37,26 @@ TEST(KeepLights, KeepsTheNamedLightsInTheInputsOrder) {
   EXPECT_EQ(light_ids(scene), (std::vector<std::string>{"slant"}));
 }
 
+// A sun path's id names all its instants; an instant's own id names it alone.
+TEST(KeepLights, ASunPathsIdNamesAllItsInstants) {
+  Scene scene = parse_scene(
+                    R"({"format": "shadowgen-scene/1", "polygons": [],
+                        "site": {"latitude_deg": 51.4779, "longitude_deg": 0, "utc_offset_h": 0},
+                        "lights": [
+                          {"id": "down", "type": "directional", "direction": [0, 0, -1]},
+                          {"id": "day", "type": "sun", "from": "2026-03-21T10:00",
+                           "to": "2026-03-21T12:00", "step_min": 60}]})",
+                    "sun.json", {})
+                    .scene;
+  Scene one = scene;
+  keep_lights(scene, std::vector<std::string>{"day"}, "sun.json");
+  EXPECT_EQ(light_ids(scene),
+            (std::vector<std::string>{"day@2026-03-21T10:00", "day@2026-03-21T11:00",
+                                      "day@2026-03-21T12:00"}));
+  keep_lights(one, std::vector<std::string>{"day@2026-03-21T11:00", "down"}, "sun.json");
+  EXPECT_EQ(light_ids(one), (std::vector<std::string>{"down", "day@2026-03-21T11:00"}));
+}
+
 // Lights are generated independently: one light alone gives, bit for bit, what it gives
 // beside the others, and dropping the others from a database gives the same database.
 TEST(KeepLights, OneLightAloneIsThatLightOfTheWholeRun) {

@@ -503,13 +503,6 @@ TEST(SceneReaderKeys, AKeyWithoutAnyCloseKnownOneIsNamedAlone) {
             std::vector<std::string>{scene_path().string() + ": unknown key 'generator'"});
 }
 
-TEST(SceneReaderKeys, TheSiteAndSunPathExtensionIsNotSupportedAndSaysSo) {
-  const ReadResult r = parse(scene(R"("site": {"latitude_deg": 51.5, "longitude_deg": 0})"));
-  ASSERT_EQ(r.warnings.size(), 1u);
-  EXPECT_NE(r.warnings[0].find("site: not supported by this reader"), std::string::npos)
-      << r.warnings[0];
-}
-
 // nlohmann::json keeps the last of two equal keys: a second "polygons": [] dropped every face.
 TEST(SceneReaderKeys, AKeyGivenTwiceIsAnErrorNamingItAndItsPath) {
   const std::string twice = R"({"format": "shadowgen-scene/1", "polygons": [)" +
