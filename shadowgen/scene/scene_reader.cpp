@@ -19,6 +19,15 @@ namespace {
 
 constexpr std::string_view kFormat = "shadowgen-scene/1";
 
+// Calls read(entry) for every entry of the array at `key`, when the scene has the key.
+template <class Read>
+void for_each_entry(JsonObject& top, const char* key, Read&& read) {
+  if (const std::optional<JsonValue> value = top.find(key)) {
+    const JsonArray list = value->array();
+    for (std::size_t i = 0; i < list.size(); ++i) read(list.at(i));
+  }
+}
+
 class SceneParser {
  public:
   SceneParser(const std::filesystem::path& path, const ReadOptions& options)
@@ -33,31 +42,18 @@ class SceneParser {
     JsonObject top = root.object();
     check_format(top);
     check_has_faces(top);
-    if (const std::optional<JsonValue> polygons = top.find("polygons")) {
-      const JsonArray list = polygons->array();
-      for (std::size_t i = 0; i < list.size(); ++i) read_polygon_entry(list.at(i));
-    }
-    if (const std::optional<JsonValue> meshes = top.find("meshes")) {
-      const JsonArray list = meshes->array();
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        detail::read_mesh_entry(list.at(i), path_, options_, face_ids_, result_.scene.faces,
-                                result_.warnings);
-      }
-    }
+    for_each_entry(top, "polygons", [&](const JsonValue& entry) { read_polygon_entry(entry); });
+    for_each_entry(top, "meshes", [&](const JsonValue& entry) {
+      detail::read_mesh_entry(entry, path_, options_, face_ids_, result_.scene.faces,
+                              result_.warnings);
+    });
     if (const std::optional<JsonValue> site = top.find("site")) {
       result_.scene.site = detail::read_site(*site);
     }
-    if (const std::optional<JsonValue> lights = top.find("lights")) {
-      const JsonArray list = lights->array();
-      for (std::size_t i = 0; i < list.size(); ++i) read_light_entry(list.at(i));
-    }
-    if (const std::optional<JsonValue> views = top.find("views")) {
-      const JsonArray list = views->array();
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        result_.scene.views.push_back(
-            detail::read_view(list.at(i), view_ids_, detail::Source::kScene));
-      }
-    }
+    for_each_entry(top, "lights", [&](const JsonValue& entry) { read_light_entry(entry); });
+    for_each_entry(top, "views", [&](const JsonValue& entry) {
+      result_.scene.views.push_back(detail::read_view(entry, view_ids_, detail::Source::kScene));
+    });
     note_unsupported(top);
     top.finish();
     return std::move(result_);
