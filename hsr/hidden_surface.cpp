@@ -41,6 +41,14 @@ auto clip_of(std::size_t parent, Clip&& clip) {
   return clipper::failing_as<PolygonClipError>(parent, std::forward<Clip>(clip));
 }
 
+// The part of `piece` within rectangle `r` (a tile of a wide polygon, an image region).
+PolygonSet2 within_rectangle(const Piece& piece, const clipper::Box2& r, HsrStats& stats) {
+  const PolygonWithHoles2 rect{
+      {{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}}, {}};
+  ++stats.clips;
+  return clip_of(piece.parent, [&] { return clipper::clip(piece.shape, rect).inside; });
+}
+
 enum class DepthOrder { kBehindOrTied, kInFront, kCrossing };
 
 class AreaSort {
@@ -84,11 +92,7 @@ class AreaSort {
       // template over it, each time in whole: cut it into tiles first, so each template
       // clips only the tiles it covers. Tiles of one parent merge again at the end.
       for (const clipper::Box2& t : grid.tiles(box, kTileBlock)) {
-        const PolygonWithHoles2 rect{
-            {{t.xmin, t.ymin}, {t.xmax, t.ymin}, {t.xmax, t.ymax}, {t.xmin, t.ymax}}, {}};
-        ++stats_.clips;
-        for (PolygonWithHoles2& q :
-             clip_of(p.parent, [&] { return clipper::clip(p.shape, rect).inside; })) {
+        for (PolygonWithHoles2& q : within_rectangle(p, t, stats_)) {
           add({std::move(q), p.parent});
         }
       }
@@ -285,12 +289,7 @@ std::vector<std::vector<Piece>> split_into_regions(std::vector<Piece> pieces,
     }
     for (std::size_t r = 0; r < regions.size(); ++r) {
       if (!regions[r].overlaps(box)) continue;
-      const clipper::Box2& t = regions[r];
-      const PolygonWithHoles2 rect{
-          {{t.xmin, t.ymin}, {t.xmax, t.ymin}, {t.xmax, t.ymax}, {t.xmin, t.ymax}}, {}};
-      ++stats.clips;
-      for (PolygonWithHoles2& q :
-           clip_of(piece.parent, [&] { return clipper::clip(piece.shape, rect).inside; })) {
+      for (PolygonWithHoles2& q : within_rectangle(piece, regions[r], stats)) {
         by_region[r].push_back({std::move(q), piece.parent});
       }
     }

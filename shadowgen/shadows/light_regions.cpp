@@ -34,7 +34,8 @@ SetPieces split_by_light(const SetPieces& regions,
   std::vector<clipper::Box2> boxes;
   boxes.reserve(clips.size());
   for (const clipper::PolygonWithHoles2& c : clips) boxes.push_back(clipper::box_of(c));
-  std::vector<clipper::PolygonWithHoles2> near;
+  std::vector<std::size_t> near;
+  std::vector<clipper::PolygonWithHoles2> some;
   SetPieces split;
   for (const auto& [set, pieces] : regions) {
     clipper::PolygonSet2 inside, outside;
@@ -42,13 +43,19 @@ SetPieces split_by_light(const SetPieces& regions,
       const clipper::Box2 box = clipper::box_of(piece);
       near.clear();
       for (std::size_t c = 0; c < clips.size(); ++c) {
-        if (boxes[c].overlaps(box)) near.push_back(clips[c]);
+        if (boxes[c].overlaps(box)) near.push_back(c);
       }
       if (near.empty()) {
         outside.push_back(piece);
         continue;
       }
-      clipper::ClipResult r = clipper::clip(piece, near);
+      // Every lit polygon near: clipped against them in place, without copies.
+      if (near.size() < clips.size()) {
+        some.clear();
+        for (const std::size_t c : near) some.push_back(clips[c]);
+      }
+      clipper::ClipResult r =
+          clipper::clip(piece, near.size() == clips.size() ? clips : std::span(some));
       for (auto& p : r.inside) inside.push_back(std::move(p));
       for (auto& p : r.outside) outside.push_back(std::move(p));
     }

@@ -52,10 +52,6 @@ class LitChecker {
  public:
   explicit LitChecker(const Face& face);
 
-  // The face's area (hsr::area of its parts); not finite when its coordinates are too
-  // large for it, which the caller reports.
-  double face_area() const { return face_area_; }
-
   // The part whose plane is nearest to the polygon's outer vertices, the first of equals
   // (for lit polygons written without "part").
   std::size_t nearest_part(const hsr::Polygon3& polygon) const;

@@ -46,9 +46,9 @@ class BackProjector {
   const hsr::View& view_;
   glm::dvec3 normal_;
   double offset_from_eye_ = 0.0;
-  glm::dvec3 anchor_{0.0};  // the part's first vertex
-  double offset_from_anchor_ = 0.0;
-  double cast_reach_ = 0.0;  // the plane: normal·(p − anchor) = offset_from_anchor_
+  glm::dvec3 anchor_{0.0};           // the part's first vertex
+  double offset_from_anchor_ = 0.0;  // the plane: normal·(p − anchor) = offset_from_anchor_
+  double cast_reach_ = 0.0;
   std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original_;
 };
 
