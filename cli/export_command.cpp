@@ -48,9 +48,10 @@ void run_export(const ExportArgs& args) {
     throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
   refuse_input_as_output("--obj", obj_path.string(), args.input);
   refuse_input_as_output("--obj", mtl_path.string(), args.input);
-  const ShadowedScene shadowed = load_shadowed(
-      args.input, load_options(args.reading, Accept::kSceneOrDatabase,
-                               {{"--obj", obj_path.string()}, {"--obj", mtl_path.string()}}));
+  LoadOptions load = load_options(args.reading, Accept::kSceneOrDatabase,
+                                  {{"--obj", obj_path.string()}, {"--obj", mtl_path.string()}});
+  load.instant_polygons = true;
+  const ShadowedScene shadowed = load_shadowed(args.input, load);
   ObjFiles files;
   try {
     files = obj_export(shadowed, mtl_path.filename().string());

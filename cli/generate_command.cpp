@@ -35,6 +35,7 @@ struct GenerateArgs {
   std::vector<std::string> scenes;
   std::string output;
   ReadingArgs reading;
+  bool keep_instants = false;  // LoadOptions::instant_polygons
 };
 
 // Two spellings of one file compare equal (weakly_canonical resolves "." and ".." and
@@ -91,6 +92,7 @@ std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
 ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std::size_t index,
                         bool show_progress) {
   LoadOptions options = load_options(args.reading, Accept::kScene, {{"-o", database.string()}});
+  options.instant_polygons = args.keep_instants;
   // Ends its line when it goes, so that an error printed afterwards has a line of its own.
   std::optional<ProgressDisplay> progress;
   if (show_progress) {
@@ -136,6 +138,9 @@ void add_generate_options(CLI::App& command, GenerateArgs& args) {
                     "(made when missing) that gets NAME.shadowed.json for each scene NAME.json")
       ->required();
   add_reading_options(command, args.reading, /*progress=*/true);
+  command.add_flag("--keep-instants", args.keep_instants,
+                   "keep the lit polygons of every instant of a sun path, not only their sun "
+                   "hours and lit areas (export and render draw only lights with polygons)");
 }
 
 }  // namespace

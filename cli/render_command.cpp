@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vector_relational.hpp>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -113,6 +114,10 @@ void run_render(const RenderArgs& args) {
   LoadOptions load;
   load.accept = Accept::kDatabase;
   load.lights = args.lights;
+  load.instant_polygons = true;
+  load.on_warning = [](const std::string& warning) {
+    std::cerr << "shadowgen: warning: " << warning << '\n';
+  };
   refuse_input_as_output("--svg", args.svg, args.database);
   const ShadowedScene shadowed = load_shadowed(args.database, load);
   const Camera camera = camera_for(args, shadowed);

@@ -5,10 +5,12 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/command.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/report.h"
+#include "shadowgen/output/sun_hours_report.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -19,17 +21,22 @@ constexpr CommandText kReportText{
     "shadowed database is read as it is."};
 
 struct ReportArgs {
-  std::string input;           // a scene (generated first) or a shadowed database
-  std::string format = "csv";  // csv, json or table
-  bool csv_safe = false;       // CsvIds::kSpreadsheetSafe
-  std::string output;          // empty: standard output
-  std::size_t top = 10;        // table: most shadowed faces listed per light
+  std::string input;                    // a scene (generated first) or a shadowed database
+  std::string format = "csv";           // csv, json or table
+  bool csv_safe = false;                // CsvIds::kSpreadsheetSafe
+  std::string output;                   // empty: standard output
+  std::size_t top = 10;                 // table: most shadowed faces listed per light
+  std::vector<double> thresholds{2.0};  // sun-hours: hours the areas are counted at
   ReadingArgs reading;
 };
 
 std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
   if (args.format == "json") return report_json(shadowed);
   if (args.format == "table") return report_table(shadowed, args.top);
+  if (args.format == "sun-hours") {
+    return sun_hours_csv(shadowed, args.thresholds,
+                         args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
+  }
   return report_csv(shadowed, args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
 }
 
@@ -56,9 +63,18 @@ Command add_report_command(CLI::App& app) {
   add_input_option(*command, args->input);
   command
       ->add_option("--format", args->format,
-                   "csv (default; the spec's rows), json (rows and totals) or table (totals "
-                   "per light and the most shadowed faces, for reading)")
-      ->check(CLI::IsMember({"csv", "json", "table"}));
+                   "csv (default; the spec's rows), json (rows and totals), table (totals "
+                   "per light and the most shadowed faces, for reading) or sun-hours (per "
+                   "face and sun path: mean sun hours and the area with at least each "
+                   "--threshold)")
+      ->check(CLI::IsMember({"csv", "json", "table", "sun-hours"}));
+  CLI::Option* threshold =
+      command
+          ->add_option("--threshold", args->thresholds,
+                       "with --format sun-hours: hours of sun (comma-separated or repeated) "
+                       "each giving a column of the area with at least that many (default 2)")
+          ->delimiter(',')
+          ->check(CLI::NonNegativeNumber);
   CLI::Option* top = command
                          ->add_option("--top", args->top,
                                       "with --format table: most shadowed faces listed per "
@@ -73,12 +89,15 @@ Command add_report_command(CLI::App& app) {
                     "file to write (replaced whole); default: standard output");
   add_reading_options(*command, args->reading);
   // Run at the end of parsing, so that the error is reported as a parse error is.
-  command->callback([args, top, csv_safe] {
+  command->callback([args, top, csv_safe, threshold] {
+    if (threshold->count() > 0 && args->format != "sun-hours") {
+      throw CLI::ValidationError("--threshold", "applies only to --format sun-hours");
+    }
     if (top->count() > 0 && args->format != "table") {
       throw CLI::ValidationError("--top", "applies only to --format table");
     }
-    if (csv_safe->count() > 0 && args->format != "csv") {
-      throw CLI::ValidationError("--csv-safe", "applies only to --format csv");
+    if (csv_safe->count() > 0 && args->format != "csv" && args->format != "sun-hours") {
+      throw CLI::ValidationError("--csv-safe", "applies only to --format csv and sun-hours");
     }
   });
   return {command, [args] { run_report(*args); }};

@@ -77,7 +77,7 @@ fi
 
 for name in "${names[@]}"; do
   database="$databases/$name.shadowed.json"
-  "$shadowgen" generate "$examples/scenes/$name.json" -o "$database" --quiet
+  "$shadowgen" generate "$examples/scenes/$name.json" -o "$database" --keep-instants --quiet
   "$shadowgen" render "$database" --view main --svg "$pictures/$name.svg"
   echo "$name: $pictures/$name.svg"
 done

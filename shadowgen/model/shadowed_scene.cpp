@@ -25,4 +25,20 @@ std::vector<hsr::Polygon3> polygons_on_part(std::span<const LitPolygon> lit, std
   return out;
 }
 
+LitAreas::LitAreas(const ShadowedScene& shadowed)
+    : shadowed_(shadowed), place_(shadowed.scene.lights.size()) {
+  for (const SunPathHours& path : shadowed.sun_paths) {
+    if (path.lit_polygons_kept) continue;
+    for (std::size_t k = 0; k < path.instants.size(); ++k) {
+      place_.at(path.instants[k]) = Place{&path, k};
+    }
+  }
+}
+
+double LitAreas::operator()(std::size_t face, std::size_t light) const {
+  const Place& place = place_.at(light);
+  if (place.path) return place.path->lit_area.at(face).at(place.instant);
+  return lit_area(shadowed_.lit.at(face).at(light));
+}
+
 }  // namespace shadowgen

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "hsr/polygon3.h"
@@ -20,11 +21,53 @@ struct LitPolygon {
   hsr::Polygon3 polygon;
 };
 
+// Part of a face with a constant number of sun hours over a sun path.
+struct SunHoursRegion {
+  double hours = 0.0;
+  std::vector<LitPolygon> polygons;  // on their face's parts, like lit detail polygons
+};
+
+// A sun path summed over its instants (docs/scene-format.md, "Sun hours"): the instants
+// are lights of the scene (Light::sun), but only their lit areas are kept per face, not
+// their lit polygons, so a path of thousands of instants costs what its sum costs.
+struct SunPathHours {
+  std::string id;                             // the `sun` entry's id
+  int step_min = 0;                           // the minutes each instant stands for
+  std::vector<std::size_t> instants;          // indices into scene.lights, in time order
+  bool lit_polygons_kept = false;             // whether `lit` holds the instants' polygons too
+  std::vector<std::vector<double>> lit_area;  // [face][k]: lit area at instant k
+  // [face]: sun-hours regions in increasing hours (0 included), tiling the face.
+  std::vector<std::vector<SunHoursRegion>> regions;
+};
+
 struct ShadowedScene {
   Scene scene;
   // lit[face][light]: polygons with holes covering exactly the lit region; empty when
-  // unlit. The polygons of one part do not overlap.
+  // unlit, and for the instants of a path in sun_paths (see lit_area_of). The polygons of
+  // one part do not overlap.
   std::vector<std::vector<std::vector<LitPolygon>>> lit;
+  std::vector<SunPathHours> sun_paths;
+};
+
+// Lit area of every (face, light): from its lit polygons or, for an instant of a sun path
+// that keeps only its instants' lit areas, from the path's.
+class LitAreas {
+ public:
+  explicit LitAreas(const ShadowedScene& shadowed);
+
+  double operator()(std::size_t face, std::size_t light) const;
+
+  // The sun path light `light` is an instant of, where the path keeps only its instants'
+  // lit areas (no lit polygons in ShadowedScene::lit); nullptr for any other light.
+  const SunPathHours* summed_path(std::size_t light) const { return place_[light].path; }
+
+ private:
+  struct Place {
+    const SunPathHours* path = nullptr;
+    std::size_t instant = 0;
+  };
+  const ShadowedScene& shadowed_;
+  std::vector<Place> place_;  // per light
 };
 
 // Total area of lit detail polygons (hsr::area of each).

@@ -84,6 +84,26 @@ void check_writable(const ShadowedScene& shadowed) {
       check.finite(light.range->exponent, "range.exponent");
     }
   }
+  for (const SunPathHours& path : shadowed.sun_paths) {
+    const WriteCheck check("sun path '" + path.id + "'");
+    if (path.lit_area.size() != scene.faces.size() || path.regions.size() != scene.faces.size()) {
+      check.fail("sums not shaped [face]");
+    }
+    for (const std::size_t l : path.instants) {
+      if (l >= scene.lights.size() || !scene.lights[l].sun ||
+          scene.lights[l].sun->sun_id != path.id) {
+        check.fail("an instant that is not a light of this path");
+      }
+    }
+    for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+      if (path.lit_area[f].size() != path.instants.size()) check.fail("lit areas not per instant");
+      for (const double a : path.lit_area[f]) check.finite(a, "a lit area");
+      for (const SunHoursRegion& region : path.regions[f]) {
+        check.finite(region.hours, "sun hours");
+        for (const LitPolygon& p : region.polygons) check.polygons({&p.polygon, 1});
+      }
+    }
+  }
   for (const ViewSpec& view : scene.views) {
     const WriteCheck check("view '" + view.id + "'");
     check.finite(view.eye, "eye");
@@ -144,7 +164,20 @@ void write_light(JsonWriter& out, const Light& light) {
     out.key("exponent").value(light.range->exponent);
     out.end_object();
   }
+  if (light.sun) {
+    out.key("sun").begin_object().key("entry").value(light.sun->sun_id);
+    out.key("time").value(light.sun->time);
+    out.key("step_min").value(std::uint64_t(light.sun->step_min));
+    out.key("azimuth_deg").value(light.sun->azimuth_deg);
+    out.key("elevation_deg").value(light.sun->elevation_deg).end_object();
+  }
   out.end_object();
+}
+
+void write_sun_path(JsonWriter& out, const SunPathHours& path) {
+  out.begin_object().key("id").value(path.id);
+  out.key("step_min").value(std::uint64_t(path.step_min));
+  out.key("instant_polygons").value(path.lit_polygons_kept ? "kept" : "dropped").end_object();
 }
 
 void write_view(JsonWriter& out, const ViewSpec& view) {
@@ -153,8 +186,36 @@ void write_view(JsonWriter& out, const ViewSpec& view) {
   out.key("fov_deg").value(view.fov_deg).end_object();
 }
 
-void write_face(JsonWriter& out, const Face& face, const std::vector<Light>& lights,
-                const std::vector<std::vector<LitPolygon>>& lit) {
+void write_lit_polygons(JsonWriter& out, std::span<const LitPolygon> lit, bool with_part) {
+  out.begin_array(Layout::kLines);
+  for (const LitPolygon& p : lit) {
+    write_polygon(out, p.polygon, with_part ? std::optional(p.part) : std::nullopt);
+  }
+  out.end_array();
+}
+
+// "sun_hours": {"path": {"lit_area": [...], "regions": [{"hours": h, "polygons": [...]}]}}
+void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPathHours>& paths,
+                     bool with_part) {
+  out.key("sun_hours").begin_object(Layout::kLines);
+  for (const SunPathHours& path : paths) {
+    out.key(path.id).begin_object(Layout::kLines).key("lit_area").begin_array();
+    for (const double a : path.lit_area[face]) out.value(a);
+    out.end_array().key("regions").begin_array(Layout::kLines);
+    for (const SunHoursRegion& region : path.regions[face]) {
+      out.begin_object(Layout::kLines).key("hours").value(region.hours).key("polygons");
+      write_lit_polygons(out, region.polygons, with_part);
+      out.end_object();
+    }
+    out.end_array().end_object();
+  }
+  out.end_object();
+}
+
+void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
+  const Face& face = shadowed.scene.faces[f];
+  const std::vector<Light>& lights = shadowed.scene.lights;
+  const std::vector<std::vector<LitPolygon>>& lit = shadowed.lit[f];
   out.begin_object(Layout::kLines);
   out.key("id").value(face.id).key("source_file").value(face.source_file);
   out.key("parts").begin_array(Layout::kLines);
@@ -164,13 +225,11 @@ void write_face(JsonWriter& out, const Face& face, const std::vector<Light>& lig
   const bool with_part = face.parts.size() > 1;
   for (std::size_t l = 0; l < lights.size(); ++l) {
     if (lit[l].empty()) continue;
-    out.key(lights[l].id).begin_array(Layout::kLines);
-    for (const LitPolygon& p : lit[l]) {
-      write_polygon(out, p.polygon, with_part ? std::optional(p.part) : std::nullopt);
-    }
-    out.end_array();
+    out.key(lights[l].id);
+    write_lit_polygons(out, lit[l], with_part);
   }
   out.end_object();
+  if (!shadowed.sun_paths.empty()) write_sun_hours(out, f, shadowed.sun_paths, with_part);
   out.end_object();
 }
 
@@ -187,10 +246,13 @@ std::string database_json(const ShadowedScene& shadowed) {
   out.key("views").begin_array(Layout::kLines);
   for (const ViewSpec& view : scene.views) write_view(out, view);
   out.end_array();
-  out.key("faces").begin_array(Layout::kLines);
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    write_face(out, scene.faces[f], scene.lights, shadowed.lit[f]);
+  if (!shadowed.sun_paths.empty()) {
+    out.key("sun_paths").begin_array(Layout::kLines);
+    for (const SunPathHours& path : shadowed.sun_paths) write_sun_path(out, path);
+    out.end_array();
   }
+  out.key("faces").begin_array(Layout::kLines);
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) write_face(out, shadowed, f);
   out.end_array();
   out.end_object();
   return out.take();

@@ -11,10 +11,17 @@
 //     "lights": [                               scene order, ids unique
 //       {"id":"sun","type":"directional","direction":[x,y,z],"intensity":[r,g,b]},
 //       {"id":"lamp","type":"point","position":[x,y,z],"intensity":[r,g,b],
-//        "range":{"falloff_start":5.0,"end":20.0,"exponent":2.0}}    range optional
+//        "range":{"falloff_start":5.0,"end":20.0,"exponent":2.0}},   range optional
+//       {"id":"day@2026-03-21T12:00","type":"directional",...,           a sun's instant
+//        "sun":{"entry":"day","time":"2026-03-21T12:00","step_min":30,
+//               "azimuth_deg":180.2,"elevation_deg":38.3}}
 //     ],
 //     "views": [                                scene order, ids unique
 //       {"id":"main","eye":[x,y,z],"target":[x,y,z],"up":[x,y,z],"fov_deg":45.0}
+//     ],
+//     "sun_paths": [                            only with sun paths; their instants are
+//       {"id":"day","step_min":30,              the lights whose sun's entry is the id
+//        "instant_polygons":"dropped"}          or "kept": whether `lit` holds them
 //     ],
 //     "faces": [                                scene order, ids unique
 //       {
@@ -25,7 +32,11 @@
 //         ],
 //         "lit": {                              by light id; a light whose lit region
 //           "sun": [LIT, ...]                   on this face is empty is left out
-//         }
+//         },
+//         "sun_hours": {                        with sun paths: by path id, every path
+//           "day": {"lit_area": [a, ...],       per instant, in the path's order
+//                   "regions": [{"hours": 1.5, "polygons": [LIT, ...]}, ...]}
+//         }                                     increasing hours, tiling the face
 //       }
 //     ]
 //   }

@@ -169,6 +169,7 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
     throw std::invalid_argument("report: lit details for " + std::to_string(shadowed.lit.size()) +
                                 " faces, the scene has " + std::to_string(scene.faces.size()));
   }
+  const LitAreas lit_areas(shadowed);
   std::vector<ReportRow> rows;
   rows.reserve(scene.faces.size() * scene.lights.size());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
@@ -183,7 +184,7 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
       row.face = f;
       row.light = l;
       row.area = face_area;
-      row.lit_area = clamped_lit_area(lit_area(shadowed.lit[f][l]), face_area);
+      row.lit_area = clamped_lit_area(lit_areas(f, l), face_area);
       row.lit_fraction = fraction(row.lit_area, face_area);
       check_finite(row, scene);
       rows.push_back(row);

@@ -57,17 +57,61 @@ void keep_lights(Scene& scene, std::span<const std::string> ids, const std::stri
   keep_marked(scene.lights, chosen(scene, ids, file));
 }
 
-void keep_lights(ShadowedScene& shadowed, std::span<const std::string> ids,
-                 const std::string& file) {
-  if (ids.empty()) return;
-  const std::vector<bool> keep = chosen(shadowed.scene, ids, file);
+namespace {
+
+// Keeps the marked lights of a database with their lit polygons, and the sun paths all of
+// whose instants are kept (their indices renumbered). A path's sums cover all its instants:
+// one whose lit polygons were dropped cannot lose some of them; one that kept them becomes
+// plain lights.
+void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const std::string& file) {
   for (const std::vector<std::vector<LitPolygon>>& per_light : shadowed.lit) {
     if (per_light.size() != keep.size()) {
       throw std::invalid_argument("keep_lights: lit polygons not shaped [face][light]");
     }
   }
+  std::vector<std::size_t> renumbered(keep.size());
+  for (std::size_t l = 0, next = 0; l < keep.size(); ++l) renumbered[l] = keep[l] ? next++ : 0;
+  std::vector<SunPathHours> paths;
+  for (SunPathHours& path : shadowed.sun_paths) {
+    const auto kept = static_cast<std::size_t>(
+        std::count_if(path.instants.begin(), path.instants.end(),
+                      [&keep](std::size_t l) { return static_cast<bool>(keep[l]); }));
+    if (kept == path.instants.size()) {
+      for (std::size_t& l : path.instants) l = renumbered[l];
+      paths.push_back(std::move(path));
+    } else if (kept > 0 && !path.lit_polygons_kept) {
+      throw InputError(file, "",
+                       "--lights names " + std::to_string(kept) + " of the " +
+                           std::to_string(path.instants.size()) + " instants of sun path '" +
+                           one_line(path.id) +
+                           "', whose lit polygons were summed into sun hours: name the path "
+                           "itself, or generate with --keep-instants");
+    }
+  }
+  shadowed.sun_paths = std::move(paths);
   keep_marked(shadowed.scene.lights, keep);
   for (std::vector<std::vector<LitPolygon>>& per_light : shadowed.lit) keep_marked(per_light, keep);
+}
+
+}  // namespace
+
+void keep_lights(ShadowedScene& shadowed, std::span<const std::string> ids,
+                 const std::string& file) {
+  if (ids.empty()) return;
+  keep_marked(shadowed, chosen(shadowed.scene, ids, file), file);
+}
+
+std::vector<std::string> drop_summed_instants(ShadowedScene& shadowed, const std::string& file) {
+  const LitAreas areas(shadowed);
+  std::vector<bool> keep(shadowed.scene.lights.size());
+  std::vector<std::string> dropped;
+  for (std::size_t l = 0; l < keep.size(); ++l) {
+    const SunPathHours* path = areas.summed_path(l);
+    keep[l] = path == nullptr;
+    if (path && (dropped.empty() || dropped.back() != path->id)) dropped.push_back(path->id);
+  }
+  keep_marked(shadowed, keep, file);
+  return dropped;
 }
 
 }  // namespace shadowgen

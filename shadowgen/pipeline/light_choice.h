@@ -6,6 +6,7 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
 #include "shadowgen/model/scene.h"
 #include "shadowgen/model/shadowed_scene.h"
@@ -13,15 +14,21 @@
 namespace shadowgen {
 
 // Keeps the lights whose ids are in `ids`, in the input's order whatever order they are
-// named in (a name given twice counts once). In a scene, the id of a `sun` entry names
-// all its instants (Light::sun); a database keeps only the instants' own ids. Throws InputError
+// named in (a name given twice counts once). The id of a `sun` entry names all its
+// instants (Light::sun), in a scene and in a database. Throws InputError
 // naming `file` for an id the input has no light of, listing the ones it has. An empty `ids` keeps
 // every light.
 void keep_lights(Scene& scene, std::span<const std::string> ids, const std::string& file);
 
 // The same for a shadowed database: its lights and their lit polygons (std::invalid_argument
-// when `lit` is not shaped [face][light]).
+// when `lit` is not shaped [face][light]), and the sun paths whose instants are all kept
+// (a path's id names them all). Naming only some instants of a path whose lit polygons
+// were summed away is an InputError: its sums cannot be split.
 void keep_lights(ShadowedScene& shadowed, std::span<const std::string> ids,
                  const std::string& file);
+
+// Drops the instants of sun paths that kept only their lit areas, with those paths, for
+// what draws lit polygons (export, render); returns the ids of the paths dropped.
+std::vector<std::string> drop_summed_instants(ShadowedScene& shadowed, const std::string& file);
 
 }  // namespace shadowgen

@@ -6,6 +6,7 @@
 
 #include "shadowgen/json/document.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/one_line.h"
 #include "shadowgen/pipeline/light_choice.h"
 #include "shadowgen/scene/database_reader.h"
 #include "shadowgen/scene/scene_reader.h"
@@ -38,6 +39,7 @@ ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
   const Scene scene = prepared(std::move(read), path, options);
   GenerateOptions generate;
   generate.threads = options.threads;
+  generate.keep_instant_polygons = options.instant_polygons;
   generate.on_light_done = options.on_light_done;
   try {
     return generate_shadows(scene, generate).shadowed;
@@ -53,6 +55,15 @@ ShadowedScene database(const Document& document, const ReadOptions& read,
   ShadowedScene shadowed = parse_database(document.text, document.path, read, warnings);
   pass_on(warnings, options);
   keep_lights(shadowed, options.lights, document.path.string());
+  if (options.instant_polygons && options.on_warning) {
+    for (const std::string& path : drop_summed_instants(shadowed, document.path.string())) {
+      options.on_warning(document.path.string() + ": sun path '" + one_line(path) +
+                         "': its instants' lit polygons were summed into sun hours, not kept, "
+                         "so its instants are left out (generate --keep-instants keeps them)");
+    }
+  } else if (options.instant_polygons) {
+    drop_summed_instants(shadowed, document.path.string());
+  }
   return shadowed;
 }
 

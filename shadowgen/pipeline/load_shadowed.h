@@ -29,6 +29,10 @@ struct LoadOptions {
   bool strict = false;   // ReadOptions::strict, for a scene and a database alike
   bool verbose = false;  // ReadOptions::verbose
   unsigned threads = 0;  // GenerateOptions::threads
+  // Whether the caller draws every light's lit polygons (export, render): a scene's sun
+  // paths keep their instants' polygons (GenerateOptions::keep_instant_polygons); a
+  // database's sun paths that kept only lit areas are dropped, with a warning.
+  bool instant_polygons = false;
   // When not empty, only these of the input's lights (light_choice.h): a scene's others
   // are not generated, a database's are dropped.
   std::vector<std::string> lights;

@@ -1,5 +1,6 @@
 #include "shadowgen/scene/database_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string_view>
@@ -16,9 +17,15 @@
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/number_text.h"
 
 namespace shadowgen {
 namespace {
+
+// How far the sums of a face's sun-hours regions may stray from what they must equal,
+// relative to the face's area: the contract's consistency bound (docs/scene-format.md,
+// "Sun hours"), far above the clipper's rounding of crossings, far below any real error.
+constexpr double kSumTolerance = 1e-9;
 
 class DatabaseParser {
  public:
@@ -52,16 +59,99 @@ class DatabaseParser {
       shadowed.scene.views.push_back(
           detail::read_view(views.at(i), view_ids, detail::Source::kDatabase));
     }
+    if (const std::optional<JsonValue> paths = top.find("sun_paths")) {
+      read_sun_paths(*paths, shadowed);
+    }
     const JsonArray faces = top.get("faces").array();
     shadowed.scene.faces.reserve(faces.size());
     shadowed.lit.reserve(faces.size());
     for (std::size_t i = 0; i < faces.size(); ++i) read_face(faces.at(i), shadowed);
     top.finish();
     check_lit(shadowed);
+    check_sun_hours(shadowed);
     return shadowed;
   }
 
  private:
+  // "sun_paths": each path's instants are the lights whose "sun" names it, in order.
+  void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
+    const JsonArray paths = value.array();
+    detail::IdRegistry ids;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+      JsonObject entry = paths.at(i).object();
+      SunPathHours path;
+      path.id = detail::read_claimed_id(entry, ids, "sun path");
+      const JsonValue step = entry.get("step_min");
+      path.step_min = static_cast<int>(std::min<std::size_t>(step.index(), 1'000'001));
+      const JsonValue kept = entry.get("instant_polygons");
+      if (kept.string() != "kept" && kept.string() != "dropped") {
+        kept.fail("expected 'kept' or 'dropped'");
+      }
+      path.lit_polygons_kept = kept.string() == "kept";
+      for (std::size_t l = 0; l < shadowed.scene.lights.size(); ++l) {
+        const std::optional<SunInstant>& sun = shadowed.scene.lights[l].sun;
+        if (!sun || sun->sun_id != path.id) continue;
+        if (sun->step_min != path.step_min) {
+          step.fail("light '" + shadowed.scene.lights[l].id + "' of this path stands for " +
+                    std::to_string(sun->step_min) + " minutes, the path says " +
+                    std::to_string(path.step_min));
+        }
+        path.instants.push_back(l);
+      }
+      if (path.step_min <= 0 || path.instants.empty()) {
+        entry.value().fail(
+            "a sun path needs a positive step_min and lights with its id as "
+            "their sun's entry");
+      }
+      entry.finish();
+      path_values_.emplace_back();
+      shadowed.sun_paths.push_back(std::move(path));
+    }
+  }
+
+  // faces[i].sun_hours: every sun path's lit areas and sun-hours regions on this face.
+  void read_sun_hours(JsonObject& entry, const Face& face, ShadowedScene& shadowed) {
+    if (shadowed.sun_paths.empty()) return;
+    JsonObject sums = entry.get("sun_hours").object();
+    for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
+      SunPathHours& path = shadowed.sun_paths[p];
+      JsonObject sum = sums.get(path.id).object();
+      const JsonValue areas_value = sum.get("lit_area");
+      const JsonArray areas = areas_value.array();
+      if (areas.size() != path.instants.size()) {
+        areas_value.fail("expected one lit area per instant of the path (" +
+                         std::to_string(path.instants.size()) + "), found " +
+                         std::to_string(areas.size()));
+      }
+      std::vector<double>& lit_area = path.lit_area.emplace_back();
+      for (std::size_t k = 0; k < areas.size(); ++k) {
+        lit_area.push_back(areas.at(k).number());
+        if (lit_area.back() < 0.0) areas.at(k).fail("a lit area must not be negative");
+      }
+      const JsonValue regions_value = sum.get("regions");
+      const JsonArray regions = regions_value.array();
+      std::vector<SunHoursRegion>& out = path.regions.emplace_back();
+      for (std::size_t r = 0; r < regions.size(); ++r) {
+        JsonObject region = regions.at(r).object();
+        const JsonValue hours = region.get("hours");
+        const double count = std::round(hours.number() * 60.0 / path.step_min);
+        if (!(count >= 0.0 && count <= static_cast<double>(path.instants.size()) &&
+              count * path.step_min / 60.0 == hours.number())) {
+          hours.fail("expected a whole number of the path's " + std::to_string(path.step_min) +
+                     "-minute instants, from 0 to " + std::to_string(path.instants.size()));
+        }
+        if (!out.empty() && !(out.back().hours < hours.number())) {
+          hours.fail("regions must come in increasing hours");
+        }
+        out.push_back({hours.number(), read_lit(region.get("polygons"), face)});
+        region.finish();
+      }
+      sum.finish();
+      path_values_[p].push_back(sum.value());
+    }
+    sums.finish();
+  }
+
   void read_face(const JsonValue& value, ShadowedScene& shadowed) {
     JsonObject entry = value.object();
     Face face;
@@ -89,6 +179,7 @@ class DatabaseParser {
       lit[light->second] = read_lit(list, face);
       lists_.push_back({light->second, list});
     }
+    read_sun_hours(entry, face, shadowed);
     entry.finish();
     shadowed.scene.faces.push_back(std::move(face));
     shadowed.lit.push_back(std::move(lit));
@@ -174,6 +265,58 @@ class DatabaseParser {
     }
   }
 
+  // Each face's sun-hours regions over a path, checked as one face's lit polygons are,
+  // all regions together: on the face's planes, inside it, not overlapping. They must
+  // also tile it: their areas sum to the face's, up to the checker's rounding of areas
+  // beside the face's (kSumTolerance), and Σ hours × area to the lit areas' Σ × step.
+  void check_sun_hours(const ShadowedScene& shadowed) const {
+    const std::size_t faces = shadowed.scene.faces.size();
+    for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
+      const SunPathHours& path = shadowed.sun_paths[p];
+      std::vector<std::optional<std::string>> problems(faces);
+      hsr::for_each_in_parallel(faces, [&](std::size_t f) {
+        problems[f] = sun_hours_problem(shadowed.scene.faces[f], path, f);
+      });
+      for (std::size_t f = 0; f < faces; ++f) {
+        if (problems[f]) path_values_[p][f].fail(*problems[f]);
+      }
+    }
+  }
+
+  static std::optional<std::string> sun_hours_problem(const Face& face, const SunPathHours& path,
+                                                      std::size_t f) {
+    std::vector<LitPolygon> all;
+    double hour_area = 0.0, area = 0.0;
+    for (const SunHoursRegion& region : path.regions[f]) {
+      const double a = lit_area(region.polygons);
+      area += a;
+      hour_area += region.hours * a;
+      all.insert(all.end(), region.polygons.begin(), region.polygons.end());
+    }
+    const detail::LitChecker checker(face);
+    if (std::optional<detail::LitProblem> problem = checker.check(all)) {
+      return "regions: " + problem->what;
+    }
+    const double face_area = hsr::area(face.parts);
+    if (std::fabs(area - face_area) > kSumTolerance * face_area) {
+      return "the regions cover an area of " + shortest(area) + ", not the face's " +
+             shortest(face_area);
+    }
+    double lit_hours = 0.0;
+    for (const double a : path.lit_area[f]) {
+      if (a > face_area * (1.0 + kSumTolerance)) {
+        return "a lit area of " + shortest(a) + ", more than the face's area of " +
+               shortest(face_area);
+      }
+      lit_hours += a * path.step_min / 60.0;
+    }
+    if (std::fabs(hour_area - lit_hours) > kSumTolerance * (face_area + lit_hours)) {
+      return "the regions' hours times areas sum to " + shortest(hour_area) +
+             ", the lit areas' to " + shortest(lit_hours);
+    }
+    return std::nullopt;
+  }
+
   const std::string file_;
   const ReadOptions options_;
   std::vector<std::string>& warnings_;
@@ -187,6 +330,7 @@ class DatabaseParser {
   };
   std::vector<std::size_t> lists_of_face_;
   std::vector<LitList> lists_;
+  std::vector<std::vector<JsonValue>> path_values_;  // [path][face]: faces[f].sun_hours.<path>
 };
 
 }  // namespace

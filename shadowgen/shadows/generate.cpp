@@ -8,6 +8,7 @@
 #include <exception>
 #include <mutex>
 #include <new>
+#include <optional>
 
 #include "clipper/clip.h"
 #include "detail/face_parts.h"
@@ -18,6 +19,7 @@
 #include "hsr/parallel.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/shadows/light_views.h"
+#include "shadowgen/shadows/sun_hours.h"
 
 namespace shadowgen {
 namespace {
@@ -74,39 +76,134 @@ std::string GenerationError::format(const std::string& file, const std::string& 
   return one_line(s + problem);
 }
 
+namespace {
+
+// Instants generated before they are summed: few enough that a path's lit polygons never
+// all sit in memory, enough to keep the threads busy. A fixed number, so that the sums
+// are made in one order whatever the thread count.
+constexpr std::size_t kInstantsPerBatch = 16;
+
+// Where each light stands in the scene's sun paths: (path, k) for instant k of a path.
+struct PathPlace {
+  std::size_t path = 0, instant = 0;
+};
+
+// Sums sun paths as their instants come, face by face.
+class PathSums {
+ public:
+  PathSums(const Scene& scene, std::vector<SunPathHours>& paths, bool keep_polygons)
+      : scene_(scene), paths_(paths), place_(scene.lights.size()) {
+    hours_.resize(paths.size());
+    for (std::size_t p = 0; p < paths.size(); ++p) {
+      paths[p].lit_polygons_kept = keep_polygons;
+      paths[p].lit_area.assign(scene.faces.size(), std::vector<double>(paths[p].instants.size()));
+      hours_[p].resize(scene.faces.size());
+      for (std::size_t k = 0; k < paths[p].instants.size(); ++k) {
+        place_[paths[p].instants[k]] = PathPlace{p, k};
+      }
+    }
+  }
+
+  bool in_path(std::size_t light) const { return place_[light].has_value(); }
+
+  // Adds lights [first, last)'s lit polygons, lit[l - first][face], to their paths, in
+  // light order, each face on its own.
+  void add(std::size_t first, std::size_t last,
+           const std::vector<std::vector<std::vector<LitPolygon>>>& lit) {
+    hsr::for_each_in_parallel(scene_.faces.size(), [&](std::size_t f) {
+      for (std::size_t l = first; l < last; ++l) {
+        if (!place_[l]) continue;
+        const auto [p, k] = *place_[l];
+        const std::vector<LitPolygon>& polygons = lit[l - first][f];
+        paths_[p].lit_area[f][k] = lit_area(polygons);
+        if (polygons.empty()) continue;
+        named(f, p, [&] {
+          std::optional<FaceSunHours>& hours = hours_[p][f];
+          if (!hours) hours.emplace(scene_.faces[f]);
+          hours->add(polygons);
+        });
+      }
+    });
+  }
+
+  // Every path's regions, once all its instants are added.
+  void finish() {
+    for (std::size_t p = 0; p < paths_.size(); ++p) {
+      paths_[p].regions.resize(scene_.faces.size());
+      hsr::for_each_in_parallel(scene_.faces.size(), [&](std::size_t f) {
+        std::optional<FaceSunHours>& hours = hours_[p][f];
+        if (!hours) hours.emplace(scene_.faces[f]);  // lit at no instant
+        paths_[p].regions[f] = hours->regions(paths_[p].step_min);
+        hours.reset();
+      });
+    }
+  }
+
+ private:
+  // Work on face f's sums of path p, a failure named by the face and the path.
+  template <class Work>
+  void named(std::size_t f, std::size_t p, Work&& work) const {
+    try {
+      work();
+    } catch (const clipper::SnapRoundingError& e) {
+      throw GenerationError("", scene_.faces[f].id, paths_[p].id,
+                            "sun hours not computed: " + std::string(e.what()));
+    }
+  }
+
+  const Scene& scene_;
+  std::vector<SunPathHours>& paths_;
+  std::vector<std::optional<PathPlace>> place_;
+  std::vector<std::vector<std::optional<FaceSunHours>>> hours_;  // [path][face]
+};
+
+}  // namespace
+
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options) {
   GenerateResult result;
   result.shadowed.scene = scene;
   const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
   result.shadowed.lit.assign(faces, std::vector<std::vector<LitPolygon>>(lights));
   result.stats.resize(lights);
+  result.shadowed.sun_paths = sun_paths_of(scene);
+  PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons);
   if (lights == 0) return result;
 
   const detail::FaceParts parts = detail::flatten(scene);
-  std::vector<std::vector<std::vector<LitPolygon>>> per_light(lights);
   std::mutex report_mutex;
   // Lights in parallel, and within each light the regions of its views (hsr/
   // image_regions.h) and its receivers, all on one pool of `threads` threads. The failure
-  // passed on is the first light's whatever the threads did.
+  // passed on is the first light's whatever the threads did. With sun paths, the lights
+  // go in batches, each summed before the next starts.
   const int threads =
       options.threads ? static_cast<int>(options.threads) : tbb::info::default_concurrency();
+  const std::size_t batch = result.shadowed.sun_paths.empty() ? lights : kInstantsPerBatch;
   tbb::task_arena arena(threads);
   arena.execute([&] {
-    hsr::for_each_in_parallel(lights, [&](std::size_t l) {
-      const auto start = std::chrono::steady_clock::now();
-      per_light[l] = light_one_named(scene, parts, l, options, result.stats[l]);
-      result.stats[l].seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (options.on_light_done) {
-        const std::lock_guard lock(report_mutex);
-        options.on_light_done(l, result.stats[l]);
+    for (std::size_t first = 0; first < lights; first += batch) {
+      const std::size_t last = std::min(lights, first + batch);
+      std::vector<std::vector<std::vector<LitPolygon>>> per_light(last - first);
+      hsr::for_each_in_parallel(last - first, [&](std::size_t i) {
+        const std::size_t l = first + i;
+        const auto start = std::chrono::steady_clock::now();
+        per_light[i] = light_one_named(scene, parts, l, options, result.stats[l]);
+        result.stats[l].seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (options.on_light_done) {
+          const std::lock_guard lock(report_mutex);
+          options.on_light_done(l, result.stats[l]);
+        }
+      });
+      sums.add(first, last, per_light);
+      for (std::size_t l = first; l < last; ++l) {
+        if (sums.in_path(l) && !options.keep_instant_polygons) continue;
+        for (std::size_t f = 0; f < faces; ++f) {
+          result.shadowed.lit[f][l] = std::move(per_light[l - first][f]);
+        }
       }
-    });
+    }
+    sums.finish();
   });
-
-  for (std::size_t l = 0; l < lights; ++l) {
-    for (std::size_t f = 0; f < faces; ++f) result.shadowed.lit[f][l] = std::move(per_light[l][f]);
-  }
   return result;
 }
 

@@ -54,6 +54,11 @@ struct GenerateOptions {
   // image_regions.h); 0: as many as the number of pieces calls for. Tests set it to cut
   // small scenes.
   std::size_t image_regions = 0;
+  // Sun paths are summed into sun hours as their instants are generated (sun_hours.h,
+  // ShadowedScene::sun_paths), a few instants' lit polygons in memory at a time. Their
+  // instants' lit polygons are then dropped, only their lit areas kept, unless this is
+  // set: then each instant keeps its lit polygons as any light does.
+  bool keep_instant_polygons = false;
   // Called after each light is done (from the worker that finished it); for progress.
   std::function<void(std::size_t light, const LightStats&)> on_light_done;
 };

@@ -47,4 +47,32 @@ inline constexpr const char* kDartUnderRoof = R"({
     "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
   })";
 
+// A sun path's sums made by hand: face "g", 4 × 1 in z = 0 (from "test.json"), and path
+// "p" of four 30-minute instants (lights p@0 ... p@3, no lit polygons kept): [0,1] × [0,1]
+// lit at none, [1,3] at three (1.5 h, in two pieces), [3,4] at four (2 h).
+inline hsr::Polygon3 unit_strip(double x0, double x1) {
+  return {{{x0, 0, 0}, {x1, 0, 0}, {x1, 1, 0}, {x0, 1, 0}}, {}};
+}
+inline ShadowedScene sun_path_by_hand() {
+  ShadowedScene shadowed;
+  shadowed.scene.faces.push_back({"g", {unit_strip(0, 4)}, "test.json"});
+  for (int k = 0; k < 4; ++k) {
+    Light light;
+    light.id = "p@" + std::to_string(k);
+    light.sun = SunInstant{"p", "2026-03-21T1" + std::to_string(k) + ":00", 30, 180.0, 30.0};
+    shadowed.scene.lights.push_back(light);
+  }
+  shadowed.lit.assign(1, std::vector<std::vector<LitPolygon>>(4));
+  SunPathHours path;
+  path.id = "p";
+  path.step_min = 30;
+  path.instants = {0, 1, 2, 3};
+  path.lit_area = {{3, 3, 3, 1}};
+  path.regions = {{{0.0, {{0, unit_strip(0, 1)}}},
+                   {1.5, {{0, unit_strip(1, 2)}, {0, unit_strip(2, 3)}}},
+                   {2.0, {{0, unit_strip(3, 4)}}}}};
+  shadowed.sun_paths.push_back(path);
+  return shadowed;
+}
+
 }  // namespace shadowgen::test

@@ -71,6 +71,22 @@ void read_light_kind(JsonObject& entry, Light& light, Source source) {
   }
 }
 
+// A database light's "sun": what the `sun` entry that placed it says of it (SunInstant).
+SunInstant read_sun_instant(const JsonValue& value) {
+  JsonObject sun = value.object();
+  SunInstant instant;
+  instant.sun_id = sun.get("entry").string();
+  if (instant.sun_id.empty()) sun.get("entry").fail("must not be empty");
+  instant.time = sun.get("time").string();
+  const JsonValue step = sun.get("step_min");
+  if (step.index() > 1'000'000) step.fail("expected a number of minutes up to 1000000");
+  instant.step_min = static_cast<int>(step.index());
+  instant.azimuth_deg = sun.get("azimuth_deg").number();
+  instant.elevation_deg = sun.get("elevation_deg").number();
+  sun.finish();
+  return instant;
+}
+
 }  // namespace
 
 // Only a direction's direction matters (the spec: it need not be unit length); at this
@@ -106,6 +122,9 @@ Light read_light(const JsonValue& value, IdRegistry& ids, Source source) {
   Light light;
   light.id = read_claimed_id(entry, ids, "light");
   read_light_kind(entry, light, source);
+  if (source == Source::kDatabase) {
+    if (const std::optional<JsonValue> sun = entry.find("sun")) light.sun = read_sun_instant(*sun);
+  }
   if (const std::optional<JsonValue> intensity = member(entry, "intensity", source)) {
     light.intensity = intensity->vec3();
     if (light.intensity.x < 0.0 || light.intensity.y < 0.0 || light.intensity.z < 0.0) {

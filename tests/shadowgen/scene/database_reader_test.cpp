@@ -7,12 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/database.h"
+#include "tests/shadowgen/hand_scenes.h"
 
 namespace shadowgen {
 namespace {
@@ -199,6 +202,56 @@ TEST(DatabaseReader, ASliverTriangleLitWholeReadsBack) {
                           R"([0.1956559480312316,-0.24372513135791332,1.0],)"
                           R"([0.1956559480312316,-1.2437251313573806,1.0]], "holes": []})";
   EXPECT_NE(refusal(database(off, triangle)).problem, "(no error)");
+}
+
+// The sun path made by hand, written, changed by `change`, and read back: its problem.
+std::string sun_path_problem(const std::function<void(nlohmann::json&)>& change) {
+  nlohmann::json db = nlohmann::json::parse(database_json(test::sun_path_by_hand()));
+  change(db);
+  const Refusal r = refusal(db.dump());
+  EXPECT_EQ(r.file, "db.json") << r.problem;
+  return r.problem;
+}
+
+TEST(DatabaseReaderSunHours, SumsReadBackAsWritten) {
+  const std::string text = database_json(test::sun_path_by_hand());
+  const ShadowedScene read = parse_database(text, "db.json");
+  ASSERT_EQ(read.sun_paths.size(), 1u);
+  EXPECT_EQ(read.sun_paths[0].instants, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(read.scene.lights[2].sun->time, "2026-03-21T12:00");
+  EXPECT_EQ(database_json(read), text);
+}
+
+TEST(DatabaseReaderSunHours, SumsThatDoNotTileTheFaceOrMatchTheLitAreasAreErrors) {
+  const auto regions = [](nlohmann::json& db) -> nlohmann::json& {
+    return db["faces"][0]["sun_hours"]["p"]["regions"];
+  };
+  EXPECT_EQ(sun_path_problem([&](nlohmann::json& db) { regions(db).erase(0); }),
+            "faces[0].sun_hours.p: the regions cover an area of 3, not the face's 4");
+  EXPECT_EQ(sun_path_problem([&](nlohmann::json& db) { regions(db)[1]["hours"] = 1.0; }),
+            "faces[0].sun_hours.p: the regions' hours times areas sum to 4, the lit areas' to 5");
+  EXPECT_EQ(sun_path_problem([&](nlohmann::json& db) { regions(db)[1]["hours"] = 1.25; }),
+            "faces[0].sun_hours.p.regions[1].hours: expected a whole number of the path's "
+            "30-minute instants, from 0 to 4");
+  EXPECT_EQ(sun_path_problem([&](nlohmann::json& db) { regions(db)[2]["hours"] = 1.5; }),
+            "faces[0].sun_hours.p.regions[2].hours: regions must come in increasing hours");
+  EXPECT_EQ(sun_path_problem([&](nlohmann::json& db) {
+              regions(db)[0]["polygons"].push_back(regions(db)[2]["polygons"][0]);
+            }).rfind("faces[0].sun_hours.p: regions: ", 0),
+            0u);
+  EXPECT_EQ(sun_path_problem(
+                [](nlohmann::json& db) { db["faces"][0]["sun_hours"]["p"]["lit_area"].erase(3); }),
+            "faces[0].sun_hours.p.lit_area: expected one lit area per instant of the path (4), "
+            "found 3");
+  EXPECT_EQ(sun_path_problem(
+                [](nlohmann::json& db) { db["faces"][0]["sun_hours"]["p"]["lit_area"][0] = 5.0; }),
+            "faces[0].sun_hours.p: a lit area of 5, more than the face's area of 4");
+  EXPECT_EQ(sun_path_problem([](nlohmann::json& db) { db["faces"][0].erase("sun_hours"); }),
+            "faces[0]: missing 'sun_hours'");
+  EXPECT_EQ(sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["id"] = "q"; }),
+            "sun path 'q': sun_paths[0] ('q'): a sun path needs a positive step_min and lights "
+            "with its id as "
+            "their sun's entry");
 }
 
 }  // namespace

@@ -1,0 +1,85 @@
+#include "shadowgen/output/sun_hours_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "detail/csv_fields.h"
+#include "hsr/area.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/model/number_text.h"
+
+namespace shadowgen {
+
+std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
+                                        std::span<const double> thresholds) {
+  for (const double t : thresholds) {
+    if (!std::isfinite(t) || t < 0.0) {
+      throw std::invalid_argument("a sun-hours threshold must be a finite number of hours >= 0");
+    }
+  }
+  const Scene& scene = shadowed.scene;
+  if (shadowed.sun_paths.empty()) {
+    const std::string file = scene.faces.empty() ? "" : scene.faces.front().source_file;
+    throw InputError(file, "",
+                     "has no sun path (a `sun` light with from, to and step_min) to report "
+                     "sun hours of");
+  }
+  std::vector<SunHoursRow> rows;
+  rows.reserve(scene.faces.size() * shadowed.sun_paths.size());
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
+      SunHoursRow row;
+      row.face = f;
+      row.path = p;
+      row.area = hsr::area(scene.faces[f].parts);
+      row.area_at_least.assign(thresholds.size(), 0.0);
+      double hours_area = 0.0;
+      bool any = false;
+      for (const SunHoursRegion& region : shadowed.sun_paths[p].regions.at(f)) {
+        const double a = lit_area(region.polygons);
+        if (!(a > 0.0)) continue;
+        hours_area += region.hours * a;
+        row.min_hours = any ? std::min(row.min_hours, region.hours) : region.hours;
+        row.max_hours = any ? std::max(row.max_hours, region.hours) : region.hours;
+        any = true;
+        for (std::size_t t = 0; t < thresholds.size(); ++t) {
+          if (region.hours >= thresholds[t]) row.area_at_least[t] += a;
+        }
+      }
+      // The regions' areas are the face's up to the clipper's rounding of crossings, so
+      // the sums are too: a mean lies between the least and most hours, and no area
+      // above the face's is reported.
+      row.mean_hours =
+          row.area > 0.0 ? std::clamp(hours_area / row.area, row.min_hours, row.max_hours) : 0.0;
+      for (double& a : row.area_at_least) a = std::min(a, row.area);
+      rows.push_back(std::move(row));
+    }
+  }
+  return rows;
+}
+
+std::string sun_hours_csv(const ShadowedScene& shadowed, std::span<const double> thresholds,
+                          CsvIds ids) {
+  const std::vector<SunHoursRow> rows = sun_hours_rows(shadowed, thresholds);
+  std::string out = "face_id,sun_path,area,mean_sun_hours,min_sun_hours,max_sun_hours";
+  for (const double t : thresholds) out += ",area_at_least_" + shortest(t) + "h";
+  out += '\n';
+  for (const SunHoursRow& row : rows) {
+    detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
+    out += ',';
+    detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
+    for (const double v : {row.area, row.mean_hours, row.min_hours, row.max_hours}) {
+      out += ',';
+      detail::append_csv_number(out, v);
+    }
+    for (const double a : row.area_at_least) {
+      out += ',';
+      detail::append_csv_number(out, a);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace shadowgen

@@ -1,0 +1,65 @@
+#pragma once
+
+// Sun hours over a sun path (docs/scene-format.md, "Sun hours"): the number of a path's
+// instants at which a point of a face is lit, times the minutes each stands for. The
+// sun-hours regions of a face are the overlay of the instants' lit regions, each piece
+// labelled with its hours; they tile the face.
+//
+// Method: each part of the face is taken to its exact plane chart (hsr/plane_chart.h)
+// and starts as one piece lit at no instant. Each instant's lit polygons on the part split
+// every piece with the Weiler–Atherton clipper (detail/piece_split.h): the pieces inside
+// count one instant more. Pieces that come to the same count from two counts are merged
+// along their shared edges (clipper/merge.h), so a face holds about as many pieces as
+// its regions need, whatever the number of instants. The part's own vertices are lifted
+// back to themselves exactly, every other point onto the part's plane, as for the
+// light-set regions (light_regions.h). So the regions' areas sum to the face's area, and
+// Σ hours × area over the regions to Σ lit area × step over the instants, up to the
+// clipper's rounding of crossing points (clipper/clip.h).
+//
+// The instants must be added in one order (the path's) for the same regions bit for bit:
+// the pieces are the same sets whatever the order, but their rounded crossings are not.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "clipper/polygon.h"
+#include "hsr/plane_chart.h"
+#include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
+
+namespace shadowgen {
+
+// One face over one sun path, an instant at a time.
+class FaceSunHours {
+ public:
+  // The face lit at no instant yet. Parts without area get no regions.
+  explicit FaceSunHours(const Face& face);
+
+  // Counts one more instant: lit polygons of the face at it, each on the part it names.
+  // Throws clipper::SnapRoundingError where a clip's snapping does not settle.
+  void add(std::span<const LitPolygon> lit);
+
+  // The regions with hours = count × step_min / 60, in increasing hours, none empty.
+  std::vector<SunHoursRegion> regions(int step_min) const;
+
+ private:
+  struct CountPieces {
+    std::size_t count = 0;
+    clipper::PolygonSet2 pieces;
+  };
+  struct Part {
+    std::size_t index = 0;  // in Face::parts
+    hsr::ChartedPlane chart;
+    std::vector<CountPieces> by_count;  // increasing counts, none empty
+  };
+
+  std::vector<Part> parts_;
+};
+
+// The scene's sun paths (its `sun` entries with from, to and step_min, which placed the
+// lights whose Light::sun has step_min > 0), in the order of their first instant, with
+// their instants; lit_area and regions left empty.
+std::vector<SunPathHours> sun_paths_of(const Scene& scene);
+
+}  // namespace shadowgen

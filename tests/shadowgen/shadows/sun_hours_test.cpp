@@ -1,0 +1,218 @@
+// Sun-hours regions (shadowgen/shadows/sun_hours.h) against what they sum: the time the
+// sun stands in front of a lone wall, the instants' lit areas, and, point by point, the
+// instants at which a shadow ray from the point reaches the sun.
+
+#include "shadowgen/shadows/sun_hours.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <glm/geometric.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "hsr/area.h"
+#include "hsr/plane_chart.h"
+#include "shadowgen/output/database.h"
+#include "tests/shadowgen/hand_scenes.h"
+
+namespace shadowgen {
+namespace {
+
+using test::generated;
+
+std::string site_scene(const std::string& polygons, const std::string& path) {
+  return R"({"format": "shadowgen-scene/1", "polygons": [)" + polygons +
+         R"(], "site": {"latitude_deg": 51.5, "longitude_deg": -0.1, "utc_offset_h": 0},
+         "lights": [{"id": "day", "type": "sun", )" +
+         path + "}]}";
+}
+
+// A courtyard: ground 20 × 20, a block 6 × 4 × 5 on it, a free-standing wall.
+const std::string kCourtyard = R"(
+  {"id": "ground", "outer": [[-10,-10,0],[10,-10,0],[10,10,0],[-10,10,0]]},
+  {"id": "roof", "outer": [[-3,0,5],[3,0,5],[3,4,5],[-3,4,5]]},
+  {"id": "south", "outer": [[-3,0,0],[3,0,0],[3,0,5],[-3,0,5]]},
+  {"id": "east", "outer": [[3,0,0],[3,4,0],[3,4,5],[3,0,5]]},
+  {"id": "north", "outer": [[3,4,0],[-3,4,0],[-3,4,5],[3,4,5]]},
+  {"id": "west", "outer": [[-3,4,0],[-3,0,0],[-3,0,5],[-3,4,5]]},
+  {"id": "wall", "outer": [[-8,-6,0],[-8,-2,0],[-8,-2,2],[-8,-6,2]]})";
+
+const std::string kMarch21 =
+    R"("from": "2026-03-21T06:00", "to": "2026-03-21T18:00", "step_min": 30)";
+
+double relative(double a, double b) {
+  const double scale = std::max(std::fabs(a), std::fabs(b));
+  return scale == 0.0 ? 0.0 : std::fabs(a - b) / scale;
+}
+
+TEST(SunHours, ASouthWallInAnEmptySiteHasTheHoursTheSunStandsInFrontOfIt) {
+  // Facing -y, due south (north_axis_deg 0: +y is north), over the longest day.
+  const ShadowedScene shadowed =
+      generated(site_scene(R"({"id": "wall", "outer": [[0,0,0],[4,0,0],[4,0,3],[0,0,3]]})",
+                           R"("from": "2026-06-21T00:00", "to": "2026-06-21T23:59",
+                              "step_min": 10)"));
+  ASSERT_EQ(shadowed.sun_paths.size(), 1u);
+  const SunPathHours& path = shadowed.sun_paths[0];
+  // From the sun's positions alone: the sun is up at every instant of the path (the others
+  // are dropped), and in front of the wall where its azimuth points south of east-west.
+  std::size_t in_front = 0;
+  for (const std::size_t l : path.instants) {
+    const SunInstant& sun = *shadowed.scene.lights[l].sun;
+    ASSERT_GT(sun.elevation_deg, 0.0);
+    if (std::cos(sun.azimuth_deg * M_PI / 180.0) < 0.0) ++in_front;
+  }
+  ASSERT_GT(in_front, 30u);                   // most of the day...
+  ASSERT_LT(in_front, path.instants.size());  // ...but not before 6 and after 18
+  const double expected = static_cast<double>(in_front) * 10.0 / 60.0;
+  ASSERT_EQ(path.regions[0].size(), 1u);
+  EXPECT_NEAR(path.regions[0][0].hours, expected, 1e-9 * expected);
+  EXPECT_NEAR(lit_area(path.regions[0][0].polygons), 12.0, 1e-9 * 12.0);
+  EXPECT_TRUE(shadowed.lit[0][path.instants[0]].empty());  // instants' polygons not kept
+}
+
+TEST(SunHours, RegionsTileEachFaceAndSumItsInstantsLitAreas) {
+  const ShadowedScene shadowed = generated(site_scene(kCourtyard, kMarch21));
+  const SunPathHours& path = shadowed.sun_paths.at(0);
+  ASSERT_EQ(path.instants.size(), 24u);  // 06:00 is before sunrise at 51.5 N
+  for (std::size_t f = 0; f < shadowed.scene.faces.size(); ++f) {
+    const std::vector<SunHoursRegion>& regions = path.regions[f];
+    double area = 0.0, hours_area = 0.0, lit_hours = 0.0;
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      if (r > 0) {
+        EXPECT_LT(regions[r - 1].hours, regions[r].hours);
+      }
+      area += lit_area(regions[r].polygons);
+      hours_area += regions[r].hours * lit_area(regions[r].polygons);
+    }
+    for (const double a : path.lit_area[f]) lit_hours += a * 30.0 / 60.0;
+    const std::string& id = shadowed.scene.faces[f].id;
+    EXPECT_LE(relative(area, hsr::area(shadowed.scene.faces[f].parts)), 1e-9) << id;
+    EXPECT_LE(relative(hours_area, lit_hours), 1e-9) << id;
+  }
+  EXPECT_GE(path.regions[0].size(), 10u);  // the ground: many different hours
+}
+
+// Whether a ray from q crosses `loop` an odd number of times (the even-odd rule); `near` is
+// set where q lies within `margin` of the loop, where rounding could decide either way.
+bool odd_crossings(const clipper::Loop2& loop, const clipper::Point2& q, double margin,
+                   bool& near) {
+  bool odd = false;
+  for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+    const clipper::Point2 a = loop[j], b = loop[i];
+    const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+    const double s = std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / (len * len), 0.0, 1.0);
+    if (std::hypot(q.x - a.x - s * dx, q.y - a.y - s * dy) < margin) near = true;
+    if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) / dy * dx) odd = !odd;
+  }
+  return odd;
+}
+
+// Whether a segment from p against `direction` reaches the sun past the other faces (one
+// part each, no holes): no occluder's interior crossed. `near` is set where the ray passes
+// within `margin` of an occluder's boundary: such points are left out.
+bool sun_reaches(const Scene& scene, std::size_t face, const glm::dvec3& p,
+                 const glm::dvec3& direction, double margin, bool& near) {
+  for (std::size_t o = 0; o < scene.faces.size(); ++o) {
+    if (o == face) continue;
+    const hsr::Polygon3& polygon = scene.faces[o].parts[0];
+    const hsr::Plane3 plane = hsr::plane_of(polygon);
+    const double along = glm::dot(plane.normal, -direction);
+    if (along == 0.0) continue;
+    const double t = plane.signed_distance(p) / -along;
+    if (!(t > margin)) continue;
+    const hsr::PlaneChart chart = hsr::chart_facing(plane.normal);
+    if (odd_crossings(chart.flatten(polygon.outer), chart(p - t * direction), margin, near)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Whether chart point q lies in the polygons (even-odd over all loops); `near` is set
+// where it lies within `margin` of a loop.
+bool contains(const std::vector<LitPolygon>& polygons, const hsr::PlaneChart& chart,
+              const clipper::Point2& q, double margin, bool& near) {
+  bool inside = false;
+  for (const LitPolygon& polygon : polygons) {
+    inside ^= odd_crossings(chart.flatten(polygon.polygon.outer), q, margin, near);
+    for (const hsr::Loop3& hole : polygon.polygon.holes) {
+      inside ^= odd_crossings(chart.flatten(hole), q, margin, near);
+    }
+  }
+  return inside;
+}
+
+TEST(SunHours, EveryPointHasTheHoursOfTheInstantsWhoseShadowRaysReachTheSun) {
+  const ShadowedScene shadowed = generated(site_scene(kCourtyard, kMarch21));
+  const Scene& scene = shadowed.scene;
+  const SunPathHours& path = shadowed.sun_paths.at(0);
+  const hsr::PlaneChart chart = hsr::chart_facing({0.0, 0.0, 1.0});
+  std::mt19937_64 random(21);
+  std::uniform_real_distribution<double> coordinate(-10.0, 10.0);
+  constexpr double kMargin = 1e-7;
+  std::size_t checked = 0, partly = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const glm::dvec3 p(coordinate(random), coordinate(random), 0.0);
+    bool near = false;
+    std::size_t lit = 0;
+    for (const std::size_t l : path.instants) {
+      lit += sun_reaches(scene, 0, p, scene.lights[l].direction, kMargin, near) ? 1 : 0;
+    }
+    std::vector<double> hours;
+    for (const SunHoursRegion& region : path.regions[0]) {
+      if (contains(region.polygons, chart, chart(p), kMargin, near)) hours.push_back(region.hours);
+    }
+    if (near) continue;
+    ++checked;
+    if (lit > 0 && lit < path.instants.size()) ++partly;
+    ASSERT_EQ(hours.size(), 1u) << "point " << p.x << ", " << p.y;
+    EXPECT_EQ(hours[0], static_cast<double>(lit) * 30.0 / 60.0) << "point " << p.x << ", " << p.y;
+  }
+  EXPECT_GT(checked, 19000u);
+  EXPECT_GT(partly, 1000u);  // the shadows sweep much of the ground
+}
+
+TEST(SunHours, SameOnAnyThreadCountAndWithTheInstantsPolygonsKept) {
+  const Scene scene = parse_scene(site_scene(kCourtyard, kMarch21), "test.json").scene;
+  GenerateOptions one, two, kept;
+  one.threads = 1;
+  two.threads = 2;
+  kept.keep_instant_polygons = true;
+  const ShadowedScene a = generate_shadows(scene, one).shadowed;
+  EXPECT_EQ(database_json(a), database_json(generate_shadows(scene, two).shadowed));
+  const ShadowedScene k = generate_shadows(scene, kept).shadowed;
+  ASSERT_TRUE(k.sun_paths.at(0).lit_polygons_kept);
+  const std::size_t noon = k.sun_paths[0].instants[12];
+  EXPECT_FALSE(k.lit[0][noon].empty());
+  EXPECT_EQ(lit_area(k.lit[0][noon]), a.sun_paths[0].lit_area[0][12]);
+  // The same sums: the regions of both, written alike.
+  ShadowedScene without_polygons = k;
+  for (auto& per_light : without_polygons.lit) {
+    for (const std::size_t l : k.sun_paths[0].instants) per_light[l].clear();
+  }
+  without_polygons.sun_paths[0].lit_polygons_kept = false;
+  EXPECT_EQ(database_json(without_polygons), database_json(a));
+}
+
+TEST(SunHours, PathsAreTheSunEntriesWithASpanAndTheirInstantsInOrder) {
+  const Scene scene = parse_scene(R"({"format": "shadowgen-scene/1",
+        "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+        "site": {"latitude_deg": 0, "longitude_deg": 0, "utc_offset_h": 0},
+        "lights": [{"id": "noon", "type": "sun", "time": "2026-03-21T12:00"},
+                   {"id": "lamp", "type": "point", "position": [0,0,5]},
+                   {"id": "am", "type": "sun", "from": "2026-03-21T09:00",
+                    "to": "2026-03-21T10:00", "step_min": 20}]})",
+                                  "test.json")
+                          .scene;
+  const std::vector<SunPathHours> paths = sun_paths_of(scene);
+  ASSERT_EQ(paths.size(), 1u);
+  EXPECT_EQ(paths[0].id, "am");
+  EXPECT_EQ(paths[0].step_min, 20);
+  EXPECT_EQ(paths[0].instants, (std::vector<std::size_t>{2, 3, 4, 5}));
+}
+
+}  // namespace
+}  // namespace shadowgen
