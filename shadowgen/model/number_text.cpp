@@ -32,4 +32,22 @@ std::string number_text(double value, std::chars_format format, int precision) {
   }
 }
 
+std::optional<double> parse_number(std::string_view token) {
+  if (token.starts_with('+')) token.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
+  return value;
+}
+
+std::optional<std::int64_t> parse_integer(std::string_view token) {
+  if (token.starts_with('+')) token.remove_prefix(1);
+  std::int64_t value = 0;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (error != std::errc() || end != token.data() + token.size() || token.empty()) {
+    return std::nullopt;
+  }
+  return value;
+}
+
 }  // namespace shadowgen

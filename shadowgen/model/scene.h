@@ -77,12 +77,37 @@ struct Site {
   double north_axis_deg = 0.0;  // from true north to the scene's +y, clockwise from above
 };
 
+// One hourly row of an EnergyPlus weather file (docs/scene-format.md, "Weather file"): what
+// irradiation outputs need of it. The file's year is not kept: typical-year files mix
+// years, and rows are found by month, day and hour.
+struct WeatherHour {
+  int month = 1;   // 1 to 12
+  int day = 1;     // 1 to the month's length; February 29 may be present
+  int hour = 1;    // 1 to 24: the hour from (hour - 1):00 to hour:00, local standard time
+  int minute = 0;  // as the file gives it, 0 to 60; not used for timing
+  // Over the hour, on a surface facing the sun: Wh/m2, which is also the hour's mean
+  // irradiance in W/m2. nullopt where the file marks it missing (9999 or more) or gives a
+  // negative value; an error only when an instant needs it.
+  std::optional<double> direct_normal_wh_m2;
+  std::size_t line = 0;  // in the file, for messages
+};
+
+// An EnergyPlus weather file as read (shadowgen/weather/epw_reader.h).
+struct Weather {
+  std::string file;  // as messages name it
+  // The LOCATION header's text fields, as written (spaces around them removed).
+  std::string city, state_province, country, source, wmo;
+  Site site;                       // from the LOCATION header; north_axis_deg 0
+  std::vector<WeatherHour> hours;  // in file order: each the hour after the one before
+};
+
 struct Scene {
   std::vector<Face> faces;  // polygons first, then mesh faces, in file order
   // In file order; a `sun` entry is its instants, in time order, where it stood.
   std::vector<Light> lights;
   std::vector<ViewSpec> views;
-  std::optional<Site> site;
+  std::optional<Site> site;  // the scene's own, or else its weather file's
+  std::optional<Weather> weather;
 };
 
 }  // namespace shadowgen

@@ -10,6 +10,7 @@
 #include "detail/mesh_entry.h"
 #include "detail/site_entry.h"
 #include "detail/sun_light.h"
+#include "detail/weather_entry.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
@@ -47,14 +48,11 @@ class SceneParser {
       detail::read_mesh_entry(entry, path_, options_, face_ids_, result_.scene.faces,
                               result_.warnings);
     });
-    if (const std::optional<JsonValue> site = top.find("site")) {
-      result_.scene.site = detail::read_site(*site);
-    }
+    read_site_and_weather(top);
     for_each_entry(top, "lights", [&](const JsonValue& entry) { read_light_entry(entry); });
     for_each_entry(top, "views", [&](const JsonValue& entry) {
       result_.scene.views.push_back(detail::read_view(entry, view_ids_, detail::Source::kScene));
     });
-    note_unsupported(top);
     top.finish();
     return std::move(result_);
   }
@@ -83,11 +81,19 @@ class SceneParser {
     top.value().fail(problem);
   }
 
-  // The weather file of the site and sun-path extension, which this reader does not
-  // implement: ignored, and said so.
-  void note_unsupported(JsonObject& top) const {
-    if (const std::optional<JsonValue> value = top.find("weather")) {
-      value->warn("not supported by this reader (a weather file), ignored");
+  // Before the lights: a `sun` light needs the site, which the weather file gives when
+  // the scene has none.
+  void read_site_and_weather(JsonObject& top) {
+    Scene& scene = result_.scene;
+    const std::optional<JsonValue> site = top.find("site");
+    if (site) scene.site = detail::read_site(*site);
+    if (const std::optional<JsonValue> weather = top.find("weather")) {
+      scene.weather = detail::read_weather(*weather, path_);
+      if (site) {
+        detail::warn_if_site_differs(*scene.site, *site, *scene.weather);
+      } else {
+        scene.site = scene.weather->site;
+      }
     }
   }
 

@@ -9,13 +9,6 @@ constexpr std::int64_t kSecondsPerDay = 86400;
 // The Julian day of 1970-01-01T00:00.
 constexpr double kJulianDay1970 = 2440587.5;
 
-bool is_leap(int year) { return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0; }
-
-int days_in_month(int year, int month) {
-  constexpr int kDays[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  return month == 2 && is_leap(year) ? 29 : kDays[month - 1];
-}
-
 // Days from 1970-01-01 to a date, and back, in 400-year eras of 146097 days with the
 // year starting in March, so that February's leap day comes last (H. Hinnant,
 // "chrono-Compatible Low-Level Date Algorithms").
@@ -54,6 +47,13 @@ int digits(std::string_view text, std::size_t at, std::size_t count) {
 }
 
 }  // namespace
+
+bool is_leap(int year) { return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0; }
+
+int days_in_month(int year, int month) {
+  constexpr int kDays[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  return month == 2 && is_leap(year) ? 29 : kDays[month - 1];
+}
 
 std::optional<CivilTime> parse_civil_time(std::string_view text) {
   // YYYY-MM-DDTHH:MM, then optionally :SS.

@@ -23,6 +23,10 @@ struct CivilTime {
   friend bool operator==(const CivilTime&, const CivilTime&) = default;
 };
 
+// Whether `year` is a leap year, and the days of `month` (1 to 12) in it.
+bool is_leap(int year);
+int days_in_month(int year, int month);
+
 // `YYYY-MM-DDTHH:MM` or `YYYY-MM-DDTHH:MM:SS`, every field its digits exactly and within
 // its range (February 29 only in a leap year); nullopt for anything else.
 std::optional<CivilTime> parse_civil_time(std::string_view text);

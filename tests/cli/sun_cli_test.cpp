@@ -86,7 +86,8 @@ TEST_F(SunCli, ASunLightWithoutASiteExits1NamingTheLightAndLeavesNoFile) {
   EXPECT_EQ(o.code, 1);
   EXPECT_EQ(o.err, "shadowgen: " + scene.string() +
                        ": light 'noon': lights[0] ('noon'): a sun light needs the scene's "
-                       "\"site\" (latitude_deg, longitude_deg, utc_offset_h), which is missing\n");
+                       "\"site\" (latitude_deg, longitude_deg, utc_offset_h) or a \"weather\" "
+                       "file, and it has neither\n");
   EXPECT_EQ(files(), std::vector<std::string>{"nosite.json"});
 }
 

@@ -6,11 +6,11 @@
 #include <cstdint>
 #include <optional>
 #include <sstream>
-#include <system_error>
 #include <utility>
 
 #include "detail/face_builder.h"
 #include "detail/mesh_reader.h"
+#include "detail/referenced_file.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
@@ -152,17 +152,11 @@ void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_
   ids.claim(id, "mesh '" + id + "'", entry.get("id"));
   entry.name("mesh '" + id + "'", id);
   const JsonValue file_value = entry.get("file");
-  const std::string file = file_value.string();
-  if (file.empty()) file_value.fail("the file name is empty");
   std::optional<Transform> transform;
   if (const std::optional<JsonValue> t = entry.find("transform")) transform = transform_of(*t);
   entry.finish();
 
-  const std::filesystem::path mesh_path = (scene_path.parent_path() / file).lexically_normal();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(mesh_path, error)) {
-    file_value.fail("mesh file '" + file + "' not found (looked for '" + mesh_path.string() + "')");
-  }
+  const std::filesystem::path mesh_path = referenced_file(file_value, scene_path, "mesh file");
   const MeshSoup soup = read_mesh(mesh_path, id);
   const std::string mesh_file = mesh_path.string();
   if (soup.faces.empty()) {

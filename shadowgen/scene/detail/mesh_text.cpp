@@ -1,8 +1,6 @@
 #include "mesh_text.h"
 
-#include <charconv>
 #include <cstdio>
-#include <system_error>
 
 #include "shadowgen/model/input_error.h"
 
@@ -39,19 +37,6 @@ void require_text(std::string_view bytes, const std::string& file) {
     throw InputError(file, "", *problem);
 }
 
-bool LineReader::next(std::string_view& line) {
-  if (pos_ >= text_.size()) return false;
-  std::size_t end = pos_;
-  while (end < text_.size() && text_[end] != '\n' && text_[end] != '\r') ++end;
-  line = text_.substr(pos_, end - pos_);
-  pos_ = end;
-  if (pos_ < text_.size()) {
-    pos_ += text_[pos_] == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n' ? 2 : 1;
-  }
-  ++number_;
-  return true;
-}
-
 std::vector<std::string_view> split_tokens(std::string_view line) {
   auto space = [](char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; };
   std::vector<std::string_view> tokens;
@@ -63,24 +48,6 @@ std::vector<std::string_view> split_tokens(std::string_view line) {
     if (i > start) tokens.push_back(line.substr(start, i - start));
   }
   return tokens;
-}
-
-std::optional<double> parse_number(std::string_view token) {
-  if (token.starts_with('+')) token.remove_prefix(1);
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (error != std::errc() || end != token.data() + token.size()) return std::nullopt;
-  return value;
-}
-
-std::optional<std::int64_t> parse_integer(std::string_view token) {
-  if (token.starts_with('+')) token.remove_prefix(1);
-  std::int64_t value = 0;
-  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (error != std::errc() || end != token.data() + token.size() || token.empty()) {
-    return std::nullopt;
-  }
-  return value;
 }
 
 std::string MeshParser::face_id() const {

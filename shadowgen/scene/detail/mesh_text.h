@@ -4,7 +4,6 @@
 // junk and UTF-16, lines, tokens and numbers.
 
 #include <cstddef>
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -12,6 +11,8 @@
 #include <vector>
 
 #include "mesh_reader.h"
+#include "shadowgen/model/line_reader.h"
+#include "shadowgen/model/number_text.h"
 
 namespace shadowgen::detail {
 
@@ -25,31 +26,8 @@ std::optional<std::string> text_problem(std::string_view bytes);
 // Throws InputError(file, "", the problem) when `bytes` is not text.
 void require_text(std::string_view bytes, const std::string& file);
 
-// Lines ending in "\n", "\r\n" or a lone "\r" (old Mac files), without their ending.
-class LineReader {
- public:
-  explicit LineReader(std::string_view text) : text_(text) {}
-  // The next line; false at the end of the text.
-  bool next(std::string_view& line);
-  std::size_t number() const { return number_; }  // 1-based, of the line last returned
-  std::size_t offset() const { return pos_; }     // where the next line begins
-
- private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  std::size_t number_ = 0;
-};
-
 // Tokens separated by spaces, tabs, vertical tabs and form feeds.
 std::vector<std::string_view> split_tokens(std::string_view line);
-
-// The whole token as a double (a leading '+' allowed); nullopt when it is not a number or
-// is out of a double's range. Infinities and NaNs spelled out come back as such: callers
-// that need finite numbers check.
-std::optional<double> parse_number(std::string_view token);
-
-// The whole token as an integer (a leading '+' allowed); nullopt otherwise.
-std::optional<std::int64_t> parse_integer(std::string_view token);
 
 // What every mesh parser keeps: the file and mesh id its errors name, and the soup it fills.
 class MeshParser {

@@ -145,8 +145,8 @@ std::vector<Light> read_sun_light(const JsonValue& value, IdRegistry& ids,
   (void)entry.get("type");
   if (!site) {
     entry.value().fail(
-        "a sun light needs the scene's \"site\" (latitude_deg, longitude_deg, utc_offset_h), "
-        "which is missing");
+        "a sun light needs the scene's \"site\" (latitude_deg, longitude_deg, utc_offset_h) "
+        "or a \"weather\" file, and it has neither");
   }
   const std::optional<JsonValue> time = entry.find("time");
   const bool has_path = entry.has("from") || entry.has("to") || entry.has("step_min");

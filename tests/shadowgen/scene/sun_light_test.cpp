@@ -188,13 +188,6 @@ TEST(SunPath, WithTheSunAlwaysDownIsEmptyAndSaysSo) {
                             "at every instant of the path"});
 }
 
-TEST(SunLight, TheWeatherFileIsNotSupportedAndSaysSo) {
-  const ReadResult r = read(scene(kGreenwich + R"(, "weather": "london.epw")", ""));
-  EXPECT_EQ(r.warnings, std::vector<std::string>{std::string(kFile) +
-                                                 ": weather: not supported by this reader (a "
-                                                 "weather file), ignored"});
-}
-
 // ---- Errors -----------------------------------------------------------------------------
 
 struct SunError {
@@ -215,7 +208,7 @@ std::vector<SunError> sun_errors() {
   return {
       {"MissingSite", scene("", noon),
        "light 'noon': lights[0] ('noon'): a sun light needs the scene's \"site\" (latitude_deg, "
-       "longitude_deg, utc_offset_h), which is missing"},
+       "longitude_deg, utc_offset_h) or a \"weather\" file, and it has neither"},
       {"LatitudeOutOfRange",
        scene(site(R"("latitude_deg": 91, "longitude_deg": 0, "utc_offset_h": 0)"), ""),
        "site.latitude_deg: must lie between -90 and 90 degrees"},

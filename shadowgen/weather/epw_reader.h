@@ -1,0 +1,36 @@
+#pragma once
+
+// Reading an EnergyPlus weather file (EPW), as the EnergyPlus Auxiliary Programs
+// documentation defines it ("EnergyPlus Weather File (EPW) Data Dictionary"): 8 header
+// lines (LOCATION, DESIGN CONDITIONS, TYPICAL/EXTREME PERIODS, GROUND TEMPERATURES,
+// HOLIDAYS/DAYLIGHT SAVINGS, COMMENTS 1, COMMENTS 2, DATA PERIODS), then one row of 35
+// comma-separated fields per hour. Read here (docs/scene-format.md, "Weather file"):
+// - LOCATION: city, state or province, country, source and WMO as text; latitude (north
+//   positive, -90 to 90), longitude (east positive, -180 to 180), time zone (hours from
+//   GMT, -12 to 14, as EnergyPlus's Site:Location allows) and elevation (m, -1000 to
+//   9999.9) as the Site, with north_axis_deg 0;
+// - DATA PERIODS: the records per hour, which must be 1 (hourly files only);
+// - each row's month, day, hour (1 to 24), minute (0 to 60) and field 15, the direct
+//   normal radiation in Wh/m2 (fields counted from 1: year, month, day, hour, minute, the
+//   data source flags, then the dry bulb temperature as field 7). The year (field 1) must
+//   be a whole number and is otherwise not read; the other fields are not read.
+// The rows must run hour by hour, each the hour after the one before it (hour 1 of the
+// next day after hour 24, February 29 present or not, January 1 after December 31), and
+// no hour may come twice: a file holds at most a year.
+// A UTF-8 byte order mark and CRLF (or CR) line endings are accepted; empty lines may end
+// the file. Every problem is an InputError naming the file and the line.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "shadowgen/model/scene.h"
+
+namespace shadowgen::weather {
+
+Weather read_epw(const std::filesystem::path& path);
+
+// The same from the file's text; `file` names it in messages and in Weather::file.
+Weather parse_epw(std::string_view text, const std::string& file);
+
+}  // namespace shadowgen::weather
