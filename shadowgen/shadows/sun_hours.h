@@ -7,14 +7,18 @@
 //
 // Method: each part of the face is taken to its exact plane chart (hsr/plane_chart.h)
 // and starts as one piece lit at no instant. Each instant's lit polygons on the part split
-// every piece with the Weiler–Atherton clipper (detail/piece_split.h): the pieces inside
-// count one instant more. Pieces that come to the same count from two counts are merged
-// along their shared edges (clipper/merge.h), so a face holds about as many pieces as
-// its regions need, whatever the number of instants. The part's own vertices are lifted
-// back to themselves exactly, every other point onto the part's plane, as for the
-// light-set regions (light_regions.h). So the regions' areas sum to the face's area, and
-// Σ hours × area over the regions to Σ lit area × step over the instants, up to the
-// clipper's rounding of crossing points (clipper/clip.h).
+// the pieces with the Weiler–Atherton clipper: the pieces inside count one instant more.
+// Only pieces whose boxes meet both the lit region's and the shadow's are clipped (one
+// clip per count); a part unlit at an instant, or lit whole (its one lit polygon the part
+// itself, as generation gives it where nothing shades it), needs none. The pieces of one
+// count are merged along their shared edges (clipper/merge.h) once, when the regions are
+// taken. The regions are the arrangement of the instants' shadow edges: a facade that
+// the shadows of a neighbour sweep across in both directions gets a grid of cells, so a
+// face's regions can hold many polygons (thousands over a day at 10-minute steps). The part's own
+// vertices are lifted back to themselves exactly, every other point onto the part's plane, as for
+// the light-set regions (light_regions.h). So the regions' areas sum to the face's area, and Σ
+// hours × area over the regions to Σ lit area × step over the instants, up to the clipper's
+// rounding of crossing points (clipper/clip.h).
 //
 // The instants must be added in one order (the path's) for the same regions bit for bit:
 // the pieces are the same sets whatever the order, but their rounded crossings are not.
@@ -50,8 +54,10 @@ class FaceSunHours {
   };
   struct Part {
     std::size_t index = 0;  // in Face::parts
+    hsr::Polygon3 polygon;  // the part itself
     hsr::ChartedPlane chart;
-    std::vector<CountPieces> by_count;  // increasing counts, none empty
+    clipper::PolygonSet2 whole;         // the part in its chart
+    std::vector<CountPieces> by_count;  // increasing counts, none empty; not merged
   };
 
   std::vector<Part> parts_;

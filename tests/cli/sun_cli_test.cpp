@@ -1,6 +1,9 @@
 // End-to-end tests of `shadowgen sun`: the built executable lists a scene's sun instants
 // as CSV, on standard output or into a file; bad input exits 1 with one message and
-// leaves no file behind.
+// leaves no file behind. And of sun paths summed into sun hours: `generate` writes the
+// sums, `report --format sun-hours` reads them from a scene or a database alike, and the
+// commands that draw lit polygons say what a database without the instants' polygons
+// cannot give them.
 
 #include <gtest/gtest.h>
 
@@ -29,6 +32,18 @@ const std::string kScene = R"({
     {"id": "march21", "type": "sun", "from": "2026-03-21T00:00", "to": "2026-03-21T23:59",
      "step_min": 60}
   ]
+})";
+
+// A yard north of a 4 m wall at Greenwich, over the day of 21 March 2026, every 30 minutes.
+const std::string kYard = R"({
+  "format": "shadowgen-scene/1",
+  "polygons": [
+    {"id": "yard", "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
+    {"id": "wall", "outer": [[0,-0.5,0],[10,-0.5,0],[10,-0.5,4],[0,-0.5,4]]}
+  ],
+  "site": {"latitude_deg": 51.4779, "longitude_deg": -0.0015, "utc_offset_h": 0},
+  "lights": [{"id": "march21", "type": "sun", "from": "2026-03-21T06:00",
+              "to": "2026-03-21T18:30", "step_min": 30}]
 })";
 
 std::vector<std::string> lines(const std::string& text) {
@@ -102,6 +117,77 @@ TEST_F(SunCli, ASceneWithoutSunsGivesTheHeaderAlone) {
 TEST_F(SunCli, ThreadsIsNotAnOptionOfIt) {
   const fs::path scene = write("greenwich.json", kScene);
   EXPECT_EQ(run({"sun", scene.string(), "--threads", "2"}).code, 2);
+}
+
+TEST_F(SunCli, TheReportIsTheSameFromTheSceneAndFromItsDatabase) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path db = dir_ / "yard.shadowed.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const Outcome from_db =
+      run({"report", db.string(), "--format", "sun-hours", "--threshold", "2,8"});
+  const Outcome from_scene = run(
+      {"report", scene.string(), "--format", "sun-hours", "--threshold", "2", "--threshold", "8"});
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  EXPECT_EQ(from_db.err, "");
+  EXPECT_EQ(from_scene.out, from_db.out);
+  const std::vector<std::string> rows = lines(from_db.out);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0],
+            "face_id,sun_path,area,mean_sun_hours,min_sun_hours,max_sun_hours,"
+            "area_at_least_2h,area_at_least_8h");
+  const std::vector<std::string> yard = csv_fields(rows[1]);
+  ASSERT_EQ(yard.size(), 8u);
+  EXPECT_EQ(yard[0], "yard");
+  EXPECT_EQ(yard[2], "100");
+  // The wall shades the yard's south edge around noon (its ends let the low morning and
+  // evening sun in), and the north part gets the whole day: 24 instants, 06:30 to 18:00.
+  EXPECT_LT(std::stod(yard[4]), 6.0);
+  EXPECT_EQ(std::stod(yard[5]), 12.0);
+  EXPECT_GT(std::stod(yard[6]), std::stod(yard[7]));
+  EXPECT_LT(std::stod(yard[6]), 100.0);
+  // The instants' rows come from the stored lit areas.
+  const Outcome csv = run({"report", db.string()});
+  ASSERT_EQ(csv.code, 0) << csv.err;
+  EXPECT_EQ(lines(csv.out).size(), 1u + 2u * 24u);
+  EXPECT_EQ(csv.out, run({"report", scene.string()}).out);
+}
+
+TEST_F(SunCli, ExportOfSummedInstantsWarnsAndPartOfAPathIsRefused) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path db = dir_ / "yard.shadowed.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const Outcome exported = run({"export", db.string(), "--obj", (dir_ / "yard.obj").string()});
+  ASSERT_EQ(exported.code, 0) << exported.err;
+  EXPECT_EQ(exported.err,
+            "shadowgen: warning: " + db.string() +
+                ": sun path 'march21': its instants' lit polygons were summed into sun hours, "
+                "not kept, so its instants are left out (generate --keep-instants keeps them)\n");
+  const Outcome part = run({"report", db.string(), "--lights", "march21@2026-03-21T12:00"});
+  EXPECT_EQ(part.code, 1);
+  EXPECT_EQ(part.err, "shadowgen: " + db.string() +
+                          ": --lights names 1 of the 24 instants of sun path 'march21', whose "
+                          "lit polygons were summed into sun hours: name the path itself, or "
+                          "generate with --keep-instants\n");
+  EXPECT_EQ(run({"report", db.string(), "--lights", "march21", "--format", "sun-hours"}).code, 0);
+  // Kept, the instants' polygons are exported like any light's.
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string(), "--keep-instants"}).code, 0);
+  const Outcome kept = run({"export", db.string(), "--obj", (dir_ / "yard.obj").string()});
+  ASSERT_EQ(kept.code, 0) << kept.err;
+  EXPECT_EQ(kept.err, "");
+  EXPECT_NE(contents(dir_ / "yard.mtl").find("march21@2026-03-21T12:00"), std::string::npos);
+}
+
+TEST_F(SunCli, NoSunPathOrAThresholdWithoutTheFormatIsAnError) {
+  const fs::path scene = write("lamp.json", R"({"format": "shadowgen-scene/1",
+      "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+      "lights": [{"id": "lamp", "type": "point", "position": [0, 0, 3]}]})");
+  const Outcome none = run({"report", scene.string(), "--format", "sun-hours"});
+  EXPECT_EQ(none.code, 1);
+  EXPECT_EQ(none.err, "shadowgen: " + scene.string() +
+                          ": has no sun path (a `sun` light with from, to and step_min) to "
+                          "report sun hours of\n");
+  EXPECT_EQ(run({"report", scene.string(), "--threshold", "2"}).code, 2);
+  EXPECT_EQ(run({"report", scene.string(), "--format", "sun-hours", "--threshold", "-1"}).code, 2);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #pragma once
 
-// Pieces of a face split by one light's lit polygons, as the partitions of a face need
-// them (light_regions.h by light sets, sun_hours.h by sun hours): each piece is clipped
+// Pieces of a face split by one light's lit polygons, as the partition of a face by light
+// sets needs them (light_regions.h), whose pieces carry different sets: each piece is clipped
 // only by the lit polygons whose boxes overlap its own, and one that no lit polygon's
 // box overlaps stays whole without a clip. Under many lights (a sun path) most pieces
 // of a face meet only a few of each light's lit polygons, or none.
