@@ -8,6 +8,14 @@
 namespace shadowgen::hsr {
 namespace {
 
+// Below this |normal · forward| an orthographic view cannot tell which way a plane faces
+// it: the dot product of two unit vectors rounds by up to 3u, a unit normal from plane_of
+// is a few ulps off the exact one (hsr/polygon3.h), and the view's frame as much again
+// (u = 2^-53). Such a plane is seen edge-on: its image, each vertex projected as it is, is
+// thinner than the rounding of its depth extent, and a quad twisted by the rounding of its
+// vertices projects to a bowtie.
+constexpr double kEdgeOnSine = 16.0 * 0x1p-53;
+
 // A right-handed frame (right, up, forward) with forward along `direction`.
 void make_frame(const glm::dvec3& direction, const glm::dvec3& up_hint, glm::dvec3& right,
                 glm::dvec3& up, glm::dvec3& forward) {
@@ -117,7 +125,7 @@ std::optional<Nearness> View::nearness_on(const glm::dvec3& normal, double rel) 
     return Nearness{nr / rel, nu / rel, nf / rel};
   }
   // p = centre + x right + y up + z forward: z = (rel − x nr − y nu) / nf, nearness −z.
-  if (nf == 0.0) return std::nullopt;
+  if (!(std::fabs(nf) > kEdgeOnSine)) return std::nullopt;
   return Nearness{nr / nf, nu / nf, -rel / nf};
 }
 

@@ -64,7 +64,8 @@ class View {
   std::optional<glm::dvec3> unproject_offset(const clipper::Point2& image, const glm::dvec3& normal,
                                              double offset_from_eye) const;
   // Nearness on `plane`, or nullopt when the plane is seen edge-on (it contains the
-  // view direction, or the eye).
+  // view direction, or the eye; for an orthographic view, within the rounding of the
+  // normal and the view's frame, 2^-49, of containing it).
   std::optional<Nearness> nearness_on(const Plane3& plane) const;
   // The same for the plane normal · d = offset_from_eye of points eye() + d. Far from the
   // origin (1e8) plane.offset − normal · eye cancels and loses what decides the order of

@@ -1,6 +1,6 @@
 // The plane chart: the one tie rule, exact lifts of the vertices that came in, the
-// orientation kept where the chart mirrors the plane, new points on the plane far from
-// the origin, and Newell's vector.
+// orientation kept where the chart mirrors the plane, and new points on the plane far from
+// the origin.
 
 #include "hsr/plane_chart.h"
 
@@ -216,15 +216,6 @@ TEST(ChartedPlane, DotOnPlaneIsAffineOnTheChart) {
       EXPECT_NEAR(f.at(q), glm::dot(g, chart.on_plane(q)), 1e-12);
     }
   }
-}
-
-TEST(Newell, TwiceTheVectorArea) {
-  const dvec3 o(1e8, -1e8, 5e7);
-  const Loop3 square{o, o + dvec3(0, 3, 0), o + dvec3(0, 3, 2), o + dvec3(0, 0, 2)};
-  EXPECT_EQ(newell_vector(square), dvec3(12.0, 0.0, 0.0));
-  EXPECT_EQ(area(Polygon3{square, {}}), 6.0);
-  EXPECT_EQ(plane_of({square, {}}).normal, dvec3(1.0, 0.0, 0.0));
-  EXPECT_EQ(newell_vector({o, o + dvec3(1, 0, 0)}), dvec3(0.0));
 }
 
 }  // namespace

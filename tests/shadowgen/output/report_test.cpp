@@ -148,7 +148,8 @@ TEST(ReportRows, LitAreaARoundingOverTheAreaIsClampedALargerExcessIsNot) {
   s.scene.faces = {Face{"side", {face}, "scene.json"}, Face{"bad", {face}, "scene.json"}};
   s.scene.lights = {directional("lamp")};
   Polygon3 hair_over = face;
-  hair_over.outer[1].x = std::nextafter(0.34, 1.0);  // a rounding outside the face
+  // A rounding outside the face: its right side an ulp further out.
+  hair_over.outer[1].x = hair_over.outer[2].x = std::nextafter(0.34, 1.0);
   s.lit = {{{{0, hair_over}}}, {{{0, rectangle(0, 0, 0.35, 0.04)}}}};
   ASSERT_GT(hsr::area(hair_over), hsr::area(face));
   const std::vector<ReportRow> rows = report_rows(s);
