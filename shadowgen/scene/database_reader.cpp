@@ -22,11 +22,6 @@
 namespace shadowgen {
 namespace {
 
-// How far the sums of a face's sun-hours regions may stray from what they must equal,
-// relative to the face's area: the contract's consistency bound (docs/scene-format.md,
-// "Sun hours"), far above the clipper's rounding of crossings, far below any real error.
-constexpr double kSumTolerance = 1e-9;
-
 class DatabaseParser {
  public:
   DatabaseParser(const std::filesystem::path& path, const ReadOptions& options,
@@ -267,8 +262,10 @@ class DatabaseParser {
 
   // Each face's sun-hours regions over a path, checked as one face's lit polygons are,
   // all regions together: on the face's planes, inside it, not overlapping. They must
-  // also tile it: their areas sum to the face's, up to the checker's rounding of areas
-  // beside the face's (kSumTolerance), and Σ hours × area to the lit areas' Σ × step.
+  // also tile it: their areas sum to the face's, and Σ hours × area to the lit areas'
+  // Σ × step, up to the rounding along the regions' boundaries (LitChecker::
+  // area_tolerance; times the path's hours for the second sum, each instant's lit
+  // boundary lying along them), and no instant's lit area exceeds the face's by more.
   void check_sun_hours(const ShadowedScene& shadowed) const {
     const std::size_t faces = shadowed.scene.faces.size();
     for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
@@ -298,19 +295,21 @@ class DatabaseParser {
       return "regions: " + problem->what;
     }
     const double face_area = hsr::area(face.parts);
-    if (std::fabs(area - face_area) > kSumTolerance * face_area) {
+    const double tolerance = checker.area_tolerance(all);
+    const double path_hours = static_cast<double>(path.instants.size()) * path.step_min / 60.0;
+    if (std::fabs(area - face_area) > tolerance) {
       return "the regions cover an area of " + shortest(area) + ", not the face's " +
              shortest(face_area);
     }
     double lit_hours = 0.0;
     for (const double a : path.lit_area[f]) {
-      if (a > face_area * (1.0 + kSumTolerance)) {
+      if (a > face_area + tolerance) {
         return "a lit area of " + shortest(a) + ", more than the face's area of " +
                shortest(face_area);
       }
       lit_hours += a * path.step_min / 60.0;
     }
-    if (std::fabs(hour_area - lit_hours) > kSumTolerance * (face_area + lit_hours)) {
+    if (std::fabs(hour_area - lit_hours) > path_hours * tolerance) {
       return "the regions' hours times areas sum to " + shortest(hour_area) +
              ", the lit areas' to " + shortest(lit_hours);
     }

@@ -172,14 +172,17 @@ std::optional<LitProblem> LitChecker::check_loops_and_planes(
   return std::nullopt;
 }
 
-std::optional<LitProblem> LitChecker::check_area(std::span<const LitPolygon> lit) const {
-  double lit_area = 0.0;
+double LitChecker::area_tolerance(std::span<const LitPolygon> lit) const {
   double tolerance = 0.0;
   for (const Part& part : parts_) tolerance += part.reach * part.perimeter;
-  for (const LitPolygon& p : lit) {
-    lit_area += hsr::area(p.polygon);
-    tolerance += parts_[p.part].reach * perimeter(p.polygon);
-  }
+  for (const LitPolygon& p : lit) tolerance += parts_[p.part].reach * perimeter(p.polygon);
+  return tolerance;
+}
+
+std::optional<LitProblem> LitChecker::check_area(std::span<const LitPolygon> lit) const {
+  double lit_area = 0.0;
+  for (const LitPolygon& p : lit) lit_area += hsr::area(p.polygon);
+  const double tolerance = area_tolerance(lit);
   if (!std::isfinite(lit_area)) {
     return LitProblem{std::nullopt, "the lit area is not a finite number"};
   }

@@ -59,6 +59,11 @@ class LitChecker {
   // The first problem of the lit polygons of one light on this face, if any.
   std::optional<LitProblem> check(std::span<const LitPolygon> lit) const;
 
+  // How far the area of `lit` may stray from its exact value by the rounding that
+  // generation and clipping leave along boundaries: kRoundingReach × (extent + magnitude)
+  // × the perimeters of the face's parts and of `lit` (the bound the area check uses).
+  double area_tolerance(std::span<const LitPolygon> lit) const;
+
  private:
   struct Part {
     const hsr::Polygon3* polygon = nullptr;
