@@ -113,7 +113,7 @@ class PathSums {
     hsr::for_each_in_parallel(scene_.faces.size(), [&](std::size_t f) {
       for (std::size_t l = first; l < last; ++l) {
         if (!place_[l]) continue;
-        const auto [p, k] = *place_[l];
+        const std::size_t p = place_[l]->path, k = place_[l]->instant;
         const std::vector<LitPolygon>& polygons = lit[l - first][f];
         paths_[p].lit_area[f][k] = lit_area(polygons);
         if (polygons.empty()) continue;
