@@ -8,9 +8,13 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/energyplus_shading.h"
+#include "shadowgen/output/irradiation_report.h"
 #include "shadowgen/output/report.h"
 #include "shadowgen/output/sun_hours_report.h"
+#include "shadowgen/weather/epw_reader.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -27,11 +31,32 @@ struct ReportArgs {
   std::string output;                   // empty: standard output
   std::size_t top = 10;                 // table: most shadowed faces listed per light
   std::vector<double> thresholds{2.0};  // sun-hours: hours the areas are counted at
+  std::string weather;                  // irradiation: an EPW file, else the scene's
   ReadingArgs reading;
 };
 
+// The weather file irradiation reads: --weather, else the scene's `weather`.
+Weather weather_for(const ShadowedScene& shadowed, const ReportArgs& args) {
+  if (!args.weather.empty()) return weather::read_epw(args.weather);
+  if (shadowed.scene.weather) return *shadowed.scene.weather;
+  throw InputError(args.input, "",
+                   "the irradiation report needs a weather file: a scene's \"weather\" key, or "
+                   "--weather FILE.epw");
+}
+
 std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
   if (args.format == "json") return report_json(shadowed);
+  if (args.format == "energyplus") {
+    EnergyPlusShading shading = energyplus_shading(shadowed);
+    for (const std::string& warning : shading.warnings) {
+      std::cerr << "shadowgen: warning: " << args.input << ": " << warning << '\n';
+    }
+    return std::move(shading.csv);
+  }
+  if (args.format == "irradiation") {
+    return irradiation_csv(shadowed, weather_for(shadowed, args),
+                           args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
+  }
   if (args.format == "table") return report_table(shadowed, args.top);
   if (args.format == "sun-hours") {
     return sun_hours_csv(shadowed, args.thresholds,
@@ -41,7 +66,10 @@ std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
 }
 
 void run_report(const ReportArgs& args) {
-  if (!args.output.empty()) refuse_input_as_output("-o", args.output, args.input);
+  if (!args.output.empty()) {
+    refuse_input_as_output("-o", args.output, args.input);
+    if (!args.weather.empty()) refuse_input_as_output("-o", args.output, args.weather);
+  }
   std::vector<OutputFile> outputs;
   if (!args.output.empty()) outputs.push_back({"-o", args.output});
   const ShadowedScene shadowed = load_shadowed(
@@ -66,8 +94,15 @@ Command add_report_command(CLI::App& app) {
                    "csv (default; the spec's rows), json (rows and totals), table (totals "
                    "per light and the most shadowed faces, for reading) or sun-hours (per "
                    "face and sun path: mean sun hours and the area with at least each "
-                   "--threshold)")
-      ->check(CLI::IsMember({"csv", "json", "table", "sun-hours"}));
+                   "--threshold) or irradiation (per face and sun path: direct solar energy "
+                   "received, from a weather file's direct normal irradiance) or energyplus "
+                   "(the sunlit fraction of every face at every time step of one sun path, "
+                   "as EnergyPlus's Schedule:File:Shading reads it)")
+      ->check(CLI::IsMember({"csv", "json", "table", "sun-hours", "irradiation", "energyplus"}));
+  CLI::Option* weather =
+      command->add_option("--weather", args->weather,
+                          "with --format irradiation: EnergyPlus weather file (EPW) whose hourly "
+                          "direct normal irradiance is used (default: the scene's \"weather\")");
   CLI::Option* threshold =
       command
           ->add_option("--threshold", args->thresholds,
@@ -89,15 +124,20 @@ Command add_report_command(CLI::App& app) {
                     "file to write (replaced whole); default: standard output");
   add_reading_options(*command, args->reading);
   // Run at the end of parsing, so that the error is reported as a parse error is.
-  command->callback([args, top, csv_safe, threshold] {
+  command->callback([args, top, csv_safe, threshold, weather] {
+    if (weather->count() > 0 && args->format != "irradiation") {
+      throw CLI::ValidationError("--weather", "applies only to --format irradiation");
+    }
     if (threshold->count() > 0 && args->format != "sun-hours") {
       throw CLI::ValidationError("--threshold", "applies only to --format sun-hours");
     }
     if (top->count() > 0 && args->format != "table") {
       throw CLI::ValidationError("--top", "applies only to --format table");
     }
-    if (csv_safe->count() > 0 && args->format != "csv" && args->format != "sun-hours") {
-      throw CLI::ValidationError("--csv-safe", "applies only to --format csv and sun-hours");
+    if (csv_safe->count() > 0 && args->format != "csv" && args->format != "sun-hours" &&
+        args->format != "irradiation") {
+      throw CLI::ValidationError("--csv-safe",
+                                 "applies only to --format csv, sun-hours and irradiation");
     }
   });
   return {command, [args] { run_report(*args); }};

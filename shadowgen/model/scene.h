@@ -46,6 +46,9 @@ struct SunInstant {
   int step_min = 0;            // the minutes the instant stands for in a sun path; 0 for a `time`
   double azimuth_deg = 0.0;    // clockwise from true north
   double elevation_deg = 0.0;  // apparent (refraction included), above 0
+  // For a sun path's instant, the path's span as its entry gives it (`from`, `to`, local
+  // standard time, written as `time` is); empty for a `time`.
+  std::string path_from = {}, path_to = {};
 };
 
 struct Light {

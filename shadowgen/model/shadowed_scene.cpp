@@ -1,5 +1,7 @@
 #include "shadowgen/model/shadowed_scene.h"
 
+#include <stdexcept>
+
 #include "hsr/area.h"
 
 namespace shadowgen {
@@ -23,6 +25,15 @@ std::vector<hsr::Polygon3> polygons_on_part(std::span<const LitPolygon> lit, std
     if (p.part == part) out.push_back(p.polygon);
   }
   return out;
+}
+
+double part_lit_area(const SunPathHours& path, std::size_t face, std::size_t part, std::size_t k) {
+  const std::vector<std::vector<double>>& parts = path.part_lit_area.at(face);
+  if (parts.empty()) {
+    if (part != 0) throw std::out_of_range("part_lit_area: a face of one part");
+    return path.lit_area.at(face).at(k);
+  }
+  return parts.at(part).at(k);
 }
 
 LitAreas::LitAreas(const ShadowedScene& shadowed)

@@ -31,11 +31,16 @@ struct SunHoursRegion {
 // are lights of the scene (Light::sun), but only their lit areas are kept per face, not
 // their lit polygons, so a path of thousands of instants costs what its sum costs.
 struct SunPathHours {
-  std::string id;                             // the `sun` entry's id
-  int step_min = 0;                           // the minutes each instant stands for
+  std::string id;        // the `sun` entry's id
+  int step_min = 0;      // the minutes each instant stands for
+  std::string from, to;  // the entry's span, local standard time (sun/civil_time.h civil_text)
   std::vector<std::size_t> instants;          // indices into scene.lights, in time order
   bool lit_polygons_kept = false;             // whether `lit` holds the instants' polygons too
   std::vector<std::vector<double>> lit_area;  // [face][k]: lit area at instant k
+  // [face][part][k]: the lit area on each part at instant k, for a face of several parts
+  // (the triangles of a non-planar polygon, each turned its own way to the sun, as
+  // irradiation needs); empty for a face of one part, whose lit_area it is.
+  std::vector<std::vector<std::vector<double>>> part_lit_area;
   // [face]: sun-hours regions in increasing hours (0 included), tiling the face.
   std::vector<std::vector<SunHoursRegion>> regions;
 };
@@ -69,6 +74,9 @@ class LitAreas {
   const ShadowedScene& shadowed_;
   std::vector<Place> place_;  // per light
 };
+
+// The lit area on part `part` of face `face` at instant `k` of `path`.
+double part_lit_area(const SunPathHours& path, std::size_t face, std::size_t part, std::size_t k);
 
 // Total area of lit detail polygons (hsr::area of each).
 double lit_area(std::span<const LitPolygon> lit);

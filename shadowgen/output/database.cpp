@@ -98,6 +98,13 @@ void check_writable(const ShadowedScene& shadowed) {
     for (std::size_t f = 0; f < scene.faces.size(); ++f) {
       if (path.lit_area[f].size() != path.instants.size()) check.fail("lit areas not per instant");
       for (const double a : path.lit_area[f]) check.finite(a, "a lit area");
+      const std::size_t parts = scene.faces[f].parts.size();
+      const std::vector<std::vector<double>>& on_parts = path.part_lit_area.at(f);
+      if (on_parts.size() != (parts > 1 ? parts : 0)) check.fail("part lit areas not per part");
+      for (const std::vector<double>& areas : on_parts) {
+        if (areas.size() != path.instants.size()) check.fail("part lit areas not per instant");
+        for (const double a : areas) check.finite(a, "a part's lit area");
+      }
       for (const SunHoursRegion& region : path.regions[f]) {
         check.finite(region.hours, "sun hours");
         for (const LitPolygon& p : region.polygons) check.polygons({&p.polygon, 1});
@@ -177,6 +184,7 @@ void write_light(JsonWriter& out, const Light& light) {
 void write_sun_path(JsonWriter& out, const SunPathHours& path) {
   out.begin_object().key("id").value(path.id);
   out.key("step_min").value(std::uint64_t(path.step_min));
+  out.key("from").value(path.from).key("to").value(path.to);
   out.key("instant_polygons").value(path.lit_polygons_kept ? "kept" : "dropped").end_object();
 }
 
@@ -194,14 +202,25 @@ void write_lit_polygons(JsonWriter& out, std::span<const LitPolygon> lit, bool w
   out.end_array();
 }
 
-// "sun_hours": {"path": {"lit_area": [...], "regions": [{"hours": h, "polygons": [...]}]}}
+// "sun_hours": {"path": {"lit_area": [...], "part_lit_area": [[...], ...] (on a face of
+// several parts), "regions": [{"hours": h, "polygons": [...]}]}}
 void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPathHours>& paths,
                      bool with_part) {
   out.key("sun_hours").begin_object(Layout::kLines);
   for (const SunPathHours& path : paths) {
     out.key(path.id).begin_object(Layout::kLines).key("lit_area").begin_array();
     for (const double a : path.lit_area[face]) out.value(a);
-    out.end_array().key("regions").begin_array(Layout::kLines);
+    out.end_array();
+    if (!path.part_lit_area[face].empty()) {
+      out.key("part_lit_area").begin_array(Layout::kLines);
+      for (const std::vector<double>& areas : path.part_lit_area[face]) {
+        out.begin_array();
+        for (const double a : areas) out.value(a);
+        out.end_array();
+      }
+      out.end_array();
+    }
+    out.key("regions").begin_array(Layout::kLines);
     for (const SunHoursRegion& region : path.regions[face]) {
       out.begin_object(Layout::kLines).key("hours").value(region.hours).key("polygons");
       write_lit_polygons(out, region.polygons, with_part);

@@ -21,6 +21,8 @@
 //     ],
 //     "sun_paths": [                            only with sun paths; their instants are
 //       {"id":"day","step_min":30,              the lights whose sun's entry is the id
+//        "from":"2026-03-21T00:00",             the entry's span
+//        "to":"2026-03-21T23:59",
 //        "instant_polygons":"dropped"}          or "kept": whether `lit` holds them
 //     ],
 //     "faces": [                                scene order, ids unique
@@ -35,6 +37,7 @@
 //         },
 //         "sun_hours": {                        with sun paths: by path id, every path
 //           "day": {"lit_area": [a, ...],       per instant, in the path's order
+//                   "part_lit_area": [[a, ...], ...],  per part, on a face of several
 //                   "regions": [{"hours": 1.5, "polygons": [LIT, ...]}, ...]}
 //         }                                     increasing hours, tiling the face
 //       }

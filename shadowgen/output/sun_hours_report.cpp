@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "detail/csv_fields.h"
+#include "detail/sun_paths_required.h"
 #include "hsr/area.h"
-#include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
 
 namespace shadowgen {
@@ -18,13 +18,8 @@ std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
       throw std::invalid_argument("a sun-hours threshold must be a finite number of hours >= 0");
     }
   }
+  detail::require_sun_paths(shadowed, "sun hours");
   const Scene& scene = shadowed.scene;
-  if (shadowed.sun_paths.empty()) {
-    const std::string file = scene.faces.empty() ? "" : scene.faces.front().source_file;
-    throw InputError(file, "",
-                     "has no sun path (a `sun` light with from, to and step_min) to report "
-                     "sun hours of");
-  }
   std::vector<SunHoursRow> rows;
   rows.reserve(scene.faces.size() * shadowed.sun_paths.size());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {

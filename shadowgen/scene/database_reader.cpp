@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string_view>
 #include <unordered_map>
@@ -18,6 +19,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
+#include "shadowgen/sun/civil_time.h"
 
 namespace shadowgen {
 namespace {
@@ -68,6 +70,22 @@ class DatabaseParser {
   }
 
  private:
+  // A sun path's "from" and "to", in seconds on the path's clock.
+  static std::pair<std::int64_t, std::int64_t> read_span(JsonObject& entry, SunPathHours& path) {
+    std::int64_t seconds[2] = {0, 0};
+    std::string* texts[2] = {&path.from, &path.to};
+    const char* keys[2] = {"from", "to"};
+    for (int i = 0; i < 2; ++i) {
+      const JsonValue value = entry.get(keys[i]);
+      *texts[i] = value.string();
+      const std::optional<sun::CivilTime> time = sun::parse_civil_time(*texts[i]);
+      if (!time) value.fail("expected a local time YYYY-MM-DDTHH:MM (seconds optional)");
+      seconds[i] = sun::seconds_since_1970(*time);
+    }
+    if (seconds[1] < seconds[0]) entry.get("to").fail("must not be before 'from'");
+    return {seconds[0], seconds[1]};
+  }
+
   // "sun_paths": each path's instants are the lights whose "sun" names it, in order.
   void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
     const JsonArray paths = value.array();
@@ -78,6 +96,7 @@ class DatabaseParser {
       path.id = detail::read_claimed_id(entry, ids, "sun path");
       const JsonValue step = entry.get("step_min");
       path.step_min = static_cast<int>(std::min<std::size_t>(step.index(), 1'000'001));
+      const auto [from, to] = read_span(entry, path);
       const JsonValue kept = entry.get("instant_polygons");
       if (kept.string() != "kept" && kept.string() != "dropped") {
         kept.fail("expected 'kept' or 'dropped'");
@@ -90,6 +109,12 @@ class DatabaseParser {
           step.fail("light '" + shadowed.scene.lights[l].id + "' of this path stands for " +
                     std::to_string(sun->step_min) + " minutes, the path says " +
                     std::to_string(path.step_min));
+        }
+        const std::optional<sun::CivilTime> time = sun::parse_civil_time(sun->time);
+        if (!time || sun::seconds_since_1970(*time) < from || sun::seconds_since_1970(*time) > to) {
+          entry.get("to").fail("light '" + shadowed.scene.lights[l].id + "' of this path is at " +
+                               sun->time + ", outside its span from " + path.from + " to " +
+                               path.to);
         }
         path.instants.push_back(l);
       }
@@ -104,6 +129,39 @@ class DatabaseParser {
     }
   }
 
+  // One lit area per instant of `path`, none negative.
+  static std::vector<double> read_instant_areas(const JsonValue& value, const SunPathHours& path) {
+    const JsonArray areas = value.array();
+    if (areas.size() != path.instants.size()) {
+      value.fail("expected one lit area per instant of the path (" +
+                 std::to_string(path.instants.size()) + "), found " + std::to_string(areas.size()));
+    }
+    std::vector<double> out;
+    out.reserve(areas.size());
+    for (std::size_t k = 0; k < areas.size(); ++k) {
+      out.push_back(areas.at(k).number());
+      if (out.back() < 0.0) areas.at(k).fail("a lit area must not be negative");
+    }
+    return out;
+  }
+
+  // sun_hours.<path>.part_lit_area on a face of several parts: per part, one lit area per
+  // instant.
+  static void read_part_lit_areas(JsonObject& sum, const Face& face, SunPathHours& path) {
+    std::vector<std::vector<double>>& on_parts = path.part_lit_area.emplace_back();
+    if (face.parts.size() < 2) return;
+    const JsonValue parts_value = sum.get("part_lit_area");
+    const JsonArray parts = parts_value.array();
+    if (parts.size() != face.parts.size()) {
+      parts_value.fail("expected one list of lit areas per part of the face (" +
+                       std::to_string(face.parts.size()) + "), found " +
+                       std::to_string(parts.size()));
+    }
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      on_parts.push_back(read_instant_areas(parts.at(i), path));
+    }
+  }
+
   // faces[i].sun_hours: every sun path's lit areas and sun-hours regions on this face.
   void read_sun_hours(JsonObject& entry, const Face& face, ShadowedScene& shadowed) {
     if (shadowed.sun_paths.empty()) return;
@@ -111,18 +169,8 @@ class DatabaseParser {
     for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
       SunPathHours& path = shadowed.sun_paths[p];
       JsonObject sum = sums.get(path.id).object();
-      const JsonValue areas_value = sum.get("lit_area");
-      const JsonArray areas = areas_value.array();
-      if (areas.size() != path.instants.size()) {
-        areas_value.fail("expected one lit area per instant of the path (" +
-                         std::to_string(path.instants.size()) + "), found " +
-                         std::to_string(areas.size()));
-      }
-      std::vector<double>& lit_area = path.lit_area.emplace_back();
-      for (std::size_t k = 0; k < areas.size(); ++k) {
-        lit_area.push_back(areas.at(k).number());
-        if (lit_area.back() < 0.0) areas.at(k).fail("a lit area must not be negative");
-      }
+      path.lit_area.push_back(read_instant_areas(sum.get("lit_area"), path));
+      read_part_lit_areas(sum, face, path);
       const JsonValue regions_value = sum.get("regions");
       const JsonArray regions = regions_value.array();
       std::vector<SunHoursRegion>& out = path.regions.emplace_back();
@@ -301,6 +349,9 @@ class DatabaseParser {
       return "the regions cover an area of " + shortest(area) + ", not the face's " +
              shortest(face_area);
     }
+    if (std::optional<std::string> problem = part_lit_area_problem(face, path, f, tolerance)) {
+      return problem;
+    }
     double lit_hours = 0.0;
     for (const double a : path.lit_area[f]) {
       if (a > face_area + tolerance) {
@@ -312,6 +363,32 @@ class DatabaseParser {
     if (std::fabs(hour_area - lit_hours) > path_hours * tolerance) {
       return "the regions' hours times areas sum to " + shortest(hour_area) +
              ", the lit areas' to " + shortest(lit_hours);
+    }
+    return std::nullopt;
+  }
+
+  // On a face of several parts: each part's lit area at most the part's, and the parts'
+  // sum the face's lit area, at every instant, up to `tolerance` (the regions').
+  static std::optional<std::string> part_lit_area_problem(const Face& face,
+                                                          const SunPathHours& path, std::size_t f,
+                                                          double tolerance) {
+    const std::vector<std::vector<double>>& on_parts = path.part_lit_area[f];
+    if (on_parts.empty()) return std::nullopt;
+    for (std::size_t k = 0; k < path.instants.size(); ++k) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < on_parts.size(); ++i) {
+        const double part_area = hsr::area(face.parts[i]);
+        if (on_parts[i][k] > part_area + tolerance) {
+          return "part " + std::to_string(i) + "'s lit area of " + shortest(on_parts[i][k]) +
+                 " at instant " + std::to_string(k) + ", more than the part's area of " +
+                 shortest(part_area);
+        }
+        sum += on_parts[i][k];
+      }
+      if (std::fabs(sum - path.lit_area[f][k]) > tolerance) {
+        return "the parts' lit areas at instant " + std::to_string(k) + " sum to " + shortest(sum) +
+               ", not the face's lit area of " + shortest(path.lit_area[f][k]);
+      }
     }
     return std::nullopt;
   }

@@ -16,6 +16,7 @@
 #include "detail/lit_parts.h"
 #include "detail/part_failure.h"
 #include "detail/receivers.h"
+#include "hsr/area.h"
 #include "hsr/parallel.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/shadows/light_views.h"
@@ -96,7 +97,15 @@ class PathSums {
     hours_.resize(paths.size());
     for (std::size_t p = 0; p < paths.size(); ++p) {
       paths[p].lit_polygons_kept = keep_polygons;
-      paths[p].lit_area.assign(scene.faces.size(), std::vector<double>(paths[p].instants.size()));
+      const std::size_t instants = paths[p].instants.size();
+      paths[p].lit_area.assign(scene.faces.size(), std::vector<double>(instants));
+      paths[p].part_lit_area.assign(scene.faces.size(), {});
+      for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+        const std::size_t face_parts = scene.faces[f].parts.size();
+        if (face_parts > 1) {
+          paths[p].part_lit_area[f].assign(face_parts, std::vector<double>(instants));
+        }
+      }
       hours_[p].resize(scene.faces.size());
       for (std::size_t k = 0; k < paths[p].instants.size(); ++k) {
         place_[paths[p].instants[k]] = PathPlace{p, k};
@@ -116,6 +125,11 @@ class PathSums {
         const std::size_t p = place_[l]->path, k = place_[l]->instant;
         const std::vector<LitPolygon>& polygons = lit[l - first][f];
         paths_[p].lit_area[f][k] = lit_area(polygons);
+        if (!paths_[p].part_lit_area[f].empty()) {
+          for (const LitPolygon& lit_polygon : polygons) {
+            paths_[p].part_lit_area[f].at(lit_polygon.part)[k] += hsr::area(lit_polygon.polygon);
+          }
+        }
         if (polygons.empty()) continue;
         named(f, p, [&] {
           std::optional<FaceSunHours>& hours = hours_[p][f];

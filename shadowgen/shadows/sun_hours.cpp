@@ -160,6 +160,8 @@ std::vector<SunPathHours> sun_paths_of(const Scene& scene) {
       SunPathHours path;
       path.id = sun->sun_id;
       path.step_min = sun->step_min;
+      path.from = sun->path_from;
+      path.to = sun->path_to;
       paths.push_back(std::move(path));
     }
     paths[at->second].instants.push_back(l);

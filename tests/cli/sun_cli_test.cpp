@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tests/cli/cli_harness.h"
+#include "tests/shadowgen/weather/epw_text.h"
 
 namespace shadowgen::test {
 namespace {
@@ -188,6 +189,74 @@ TEST_F(SunCli, NoSunPathOrAThresholdWithoutTheFormatIsAnError) {
                           "report sun hours of\n");
   EXPECT_EQ(run({"report", scene.string(), "--threshold", "2"}).code, 2);
   EXPECT_EQ(run({"report", scene.string(), "--format", "sun-hours", "--threshold", "-1"}).code, 2);
+}
+
+TEST_F(SunCli, EnergyPlusShadingScheduleFromTheSceneOrItsDatabase) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path db = dir_ / "yard.shadowed.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const Outcome from_scene = run({"report", scene.string(), "--format", "energyplus"});
+  ASSERT_EQ(from_scene.code, 0) << from_scene.err;
+  EXPECT_EQ(from_scene.err, "shadowgen: warning: " + scene.string() +
+                                ": sun path 'march21' covers 1 days, from 2026-03-21T06:00 to "
+                                "2026-03-21T18:30: EnergyPlus reads Schedule:File:Shading only "
+                                "for a whole year (January 1 to December 31 at every time step)\n");
+  const Outcome from_db = run({"report", db.string(), "--format", "energyplus"});
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  EXPECT_EQ(from_db.out, from_scene.out);
+  const std::vector<std::string> rows = lines(from_db.out);
+  ASSERT_EQ(rows.size(), 1u + 48u);
+  EXPECT_EQ(rows[0], "Surface Name,YARD,WALL,");
+  EXPECT_EQ(rows[1], " 03/21 00:30,0.00000000,0.00000000,");
+  // 12:00 to 12:30: the wall's front faces south, wholly lit; the yard partly shaded.
+  const std::vector<std::string> noon = csv_fields(rows[25]);
+  ASSERT_EQ(noon.size(), 4u);
+  EXPECT_EQ(noon[0], " 03/21 12:30");
+  EXPECT_GT(std::stod(noon[1]), 0.5);
+  EXPECT_LT(std::stod(noon[1]), 1.0);
+  EXPECT_EQ(noon[2], "1.00000000");
+}
+
+// The yard with its site from a weather file of 21 March's hours.
+TEST_F(SunCli, IrradiationFromTheScenesWeatherFileOrFromADatabaseWithWeather) {
+  write("march.epw", joined(epw_lines(3, 21, 1)));
+  std::string yard = kYard;
+  const std::string site =
+      R"("site": {"latitude_deg": 51.4779, "longitude_deg": -0.0015, "utc_offset_h": 0},)";
+  ASSERT_NE(yard.find(site), std::string::npos);
+  yard.replace(yard.find(site), site.size(), R"("weather": "march.epw",)");
+  const fs::path scene = write("yard.json", yard);
+  const fs::path db = dir_ / "yard.shadowed.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const Outcome from_scene = run({"report", scene.string(), "--format", "irradiation"});
+  ASSERT_EQ(from_scene.code, 0) << from_scene.err;
+  EXPECT_EQ(from_scene.err, "");
+  const fs::path epw = dir_ / "march.epw";
+  const Outcome from_db =
+      run({"report", db.string(), "--format", "irradiation", "--weather", epw.string()});
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  EXPECT_EQ(from_db.out, from_scene.out);
+  const std::vector<std::string> rows = lines(from_db.out);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0],
+            "face_id,sun_path,area,direct_wh,direct_wh_per_area,unshaded_direct_wh_per_area");
+  const std::vector<std::string> ground = csv_fields(rows[1]);
+  ASSERT_EQ(ground.size(), 6u);
+  EXPECT_EQ(ground[0], "yard");
+  EXPECT_GT(std::stod(ground[3]), 0.0);
+  EXPECT_LT(std::stod(ground[4]), std::stod(ground[5]));  // the wall shades part of it
+
+  const Outcome no_weather = run({"report", db.string(), "--format", "irradiation"});
+  EXPECT_EQ(no_weather.code, 1);
+  EXPECT_EQ(no_weather.err, "shadowgen: " + db.string() +
+                                ": the irradiation report needs a weather file: a scene's "
+                                "\"weather\" key, or --weather FILE.epw\n");
+  EXPECT_EQ(run({"report", db.string(), "--weather", epw.string()}).code, 2);
+  const Outcome onto_weather = run({"report", db.string(), "--format", "irradiation", "--weather",
+                                    epw.string(), "-o", epw.string()});
+  EXPECT_EQ(onto_weather.code, 2);
+  EXPECT_NE(onto_weather.err.find("is the input"), std::string::npos) << onto_weather.err;
+  EXPECT_EQ(contents(epw), joined(epw_lines(3, 21, 1)));
 }
 
 }  // namespace

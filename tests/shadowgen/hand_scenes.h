@@ -66,8 +66,11 @@ inline ShadowedScene sun_path_by_hand() {
   SunPathHours path;
   path.id = "p";
   path.step_min = 30;
+  path.from = "2026-03-21T10:00";
+  path.to = "2026-03-21T13:00";
   path.instants = {0, 1, 2, 3};
   path.lit_area = {{3, 3, 3, 1}};
+  path.part_lit_area = {{}};
   path.regions = {{{0.0, {{0, unit_strip(0, 1)}}},
                    {1.5, {{0, unit_strip(1, 2)}, {0, unit_strip(2, 3)}}},
                    {2.0, {{0, unit_strip(3, 4)}}}}};

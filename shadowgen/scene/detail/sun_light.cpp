@@ -112,8 +112,10 @@ class SunEntry {
       if (!(p.elevation_deg > 0.0)) continue;
       std::string id = id_ + "@" + sun::minute_text(time);
       ids_.claim(id, "an instant of sun path '" + id_ + "'", entry_.get("id"));
-      lights.push_back(
-          instant_light(std::move(id), {id_, sun::civil_text(time), step_min}, site_, p));
+      SunInstant instant{id_, sun::civil_text(time), step_min};
+      instant.path_from = sun::civil_text(from);
+      instant.path_to = sun::civil_text(to);
+      lights.push_back(instant_light(std::move(id), std::move(instant), site_, p));
     }
     if (lights.empty()) {
       entry_.value().warn("the sun is below the horizon at every instant of the path");

@@ -254,5 +254,54 @@ TEST(DatabaseReaderSunHours, SumsThatDoNotTileTheFaceOrMatchTheLitAreasAreErrors
             "their sun's entry");
 }
 
+TEST(DatabaseReaderSunHours, APathsSpanMustBeTimesInOrderHoldingItsInstants) {
+  EXPECT_EQ(
+      sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["from"] = "noon"; }),
+      "sun path 'p': sun_paths[0] ('p').from: expected a local time YYYY-MM-DDTHH:MM (seconds "
+      "optional)");
+  EXPECT_EQ(
+      sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["to"] = "2026-03-21T09:00"; }),
+      "sun path 'p': sun_paths[0] ('p').to: must not be before 'from'");
+  EXPECT_EQ(
+      sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["to"] = "2026-03-21T12:30"; }),
+      "sun path 'p': sun_paths[0] ('p').to: light 'p@3' of this path is at 2026-03-21T13:00, "
+      "outside its span from 2026-03-21T10:00 to 2026-03-21T12:30");
+}
+
+// The dart of kDartUnderRoof, a face of two parts, over a morning: each part's lit areas.
+TEST(DatabaseReaderSunHours, APartsLitAreasMustFitThePartAndSumToTheFaces) {
+  std::string scene = test::kDartUnderRoof;
+  const std::string light = R"({"id": "sun", "type": "directional", "direction": [0,0,-1]})";
+  scene.replace(scene.find(light), light.size(),
+                R"({"id": "am", "type": "sun", "from": "2026-03-21T09:00",
+                    "to": "2026-03-21T11:00", "step_min": 60})");
+  scene.replace(scene.find(R"("lights")"), 0,
+                R"("site": {"latitude_deg": 51.5, "longitude_deg": 0, "utc_offset_h": 0}, )");
+  const std::string text = database_json(test::generated(scene));
+  EXPECT_EQ(database_json(parse_database(text, "db.json")), text);
+  const auto problem = [&](const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json db = nlohmann::json::parse(text);
+    change(db);
+    return refusal(db.dump()).problem;
+  };
+  const auto parts = [](nlohmann::json& db) -> nlohmann::json& {
+    return db["faces"][0]["sun_hours"]["am"]["part_lit_area"];
+  };
+  EXPECT_EQ(problem([&](nlohmann::json& db) { parts(db)[1][0] = 4.0; }),
+            "faces[0].sun_hours.am: part 1's lit area of 4 at instant 0, more than the part's "
+            "area of 3.7416573867739413");
+  EXPECT_EQ(problem([&](nlohmann::json& db) {
+              parts(db)[1][0] = 0.0;
+            }).rfind("faces[0].sun_hours.am: the parts' lit areas at instant 0 sum to ", 0),
+            0u);
+  EXPECT_EQ(problem([&](nlohmann::json& db) { parts(db).erase(1); }),
+            "faces[0].sun_hours.am.part_lit_area: expected one list of lit areas per part of the "
+            "face (2), found 1");
+  EXPECT_EQ(problem([&](nlohmann::json& db) {
+              db["faces"][0]["sun_hours"]["am"].erase("part_lit_area");
+            }),
+            "faces[0].sun_hours.am: missing 'part_lit_area'");
+}
+
 }  // namespace
 }  // namespace shadowgen
