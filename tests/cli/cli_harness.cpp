@@ -154,11 +154,6 @@ std::vector<ReportRow> parse_report(const std::string& csv) {
   return rows;
 }
 
-double relative_error(double actual, double expected) {
-  if (expected == 0.0) return std::abs(actual);
-  return std::abs(actual - expected) / std::abs(expected);
-}
-
 void ExpectWellFormedXml(const fs::path& file, const fs::path& scratch) {
   EXPECT_EQ(shell("xmllint --noout " + quoted(file.string()) + " 2>" + quoted(scratch.string())), 0)
       << file << ": " << contents(scratch);

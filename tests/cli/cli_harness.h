@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "tests/support/relative_error.h"
+
 namespace shadowgen::test {
 
 namespace fs = std::filesystem;
@@ -65,9 +67,6 @@ struct ReportRow {
 // The rows of the report's CSV; a wrong header or a row without five fields fails the test
 // (the row is skipped).
 std::vector<ReportRow> parse_report(const std::string& csv);
-
-// |actual - expected| / |expected|, or |actual| where `expected` is 0.
-double relative_error(double actual, double expected);
 
 // xmllint finds `file` well-formed; its complaints go through `scratch` into the message.
 void ExpectWellFormedXml(const fs::path& file, const fs::path& scratch);
