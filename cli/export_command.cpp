@@ -2,13 +2,16 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "cli/command.h"
+#include "cli/sun_hours_options.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/obj_export.h"
+#include "shadowgen/output/sun_hours_export.h"
 #include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::cli {
@@ -20,8 +23,9 @@ constexpr CommandText kExportText{
     "the OBJ; spaces and other bytes OBJ names cannot hold escaped as %XX): every face split "
     "into the regions lit by the same set of lights, grouped by "
     "face id, one material per light set (\"shadow\", \"sun\", \"sun+lamp\"; shadow grey "
-    "0.2, lit parts lighter). A scene is generated first; a shadowed database is read as "
-    "it is."};
+    "0.2, lit parts lighter); or, with --sun-hours, a sun path's sun-hours regions grouped "
+    "by face and band of hours, one material per band. A scene is generated first; a "
+    "shadowed database is read as it is."};
 
 // The MTL goes next to the OBJ, named with the OBJ's stem and ".mtl"; the stem escaped as
 // obj_name() escapes names ("my scene.obj" gets "my%20scene.mtl"), so that the OBJ's
@@ -32,6 +36,7 @@ struct ExportArgs {
   std::string input;  // a scene (generated first) or a shadowed database
   std::string obj;    // OBJ file to write
   ReadingArgs reading;
+  SunHoursArgs sun_hours;  // --sun-hours: that path's regions by band instead
 };
 
 void run_export(const ExportArgs& args) {
@@ -50,11 +55,16 @@ void run_export(const ExportArgs& args) {
   refuse_input_as_output("--obj", mtl_path.string(), args.input);
   LoadOptions load = load_options(args.reading, Accept::kSceneOrDatabase,
                                   {{"--obj", obj_path.string()}, {"--obj", mtl_path.string()}});
-  load.instant_polygons = true;
+  // A sun-hours export writes a path's sums, not its instants' lit polygons.
+  load.instant_polygons = args.sun_hours.path.empty();
   const ShadowedScene shadowed = load_shadowed(args.input, load);
+  std::optional<SunHoursMap> map;
+  if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.input);
   ObjFiles files;
   try {
-    files = obj_export(shadowed, mtl_path.filename().string());
+    files =
+        map ? sun_hours_obj_export(shadowed, *map->path, map->bands, mtl_path.filename().string())
+            : obj_export(shadowed, mtl_path.filename().string());
   } catch (const GenerationError& e) {
     throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
   }
@@ -69,6 +79,7 @@ void add_export_options(CLI::App& command, ExportArgs& args) {
       .add_option("--obj", args.obj, "OBJ file to write (replaced whole); the MTL goes next to it")
       ->required();
   add_reading_options(command, args.reading);
+  add_sun_hours_options(command, args.sun_hours, "write");
 }
 
 }  // namespace

@@ -15,11 +15,13 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/sun_hours_options.h"
 #include "shadowgen/model/coordinate_range.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/view/camera.h"
 #include "shadowgen/view/render.h"
+#include "shadowgen/view/sun_hours_map.h"
 #include "shadowgen/view/svg_writer.h"
 
 namespace shadowgen::cli {
@@ -28,8 +30,9 @@ namespace {
 constexpr CommandText kRenderText{
     "render",
     "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
-    "eye, each visible face split by the lights reaching it, flat shaded. Reads only the "
-    "database; no shadows are recomputed."};
+    "eye, each visible face split by the lights reaching it, flat shaded; or, with "
+    "--sun-hours, split by a sun path's sun hours, coloured by band, with a legend. Reads "
+    "only the database; no shadows are recomputed."};
 
 // A picture of a shadowed database (never a scene: no shadow pass runs) from the
 // database's view `view` or from eye/target/up/fov.
@@ -44,6 +47,7 @@ struct RenderArgs {
   int width = 800;
   int height = 600;
   std::vector<std::string> lights;  // --lights: only these are drawn
+  SunHoursArgs sun_hours;           // --sun-hours: a sun-hours map of that path instead
 };
 
 // "X,Y,Z" as three finite doubles; nullopt when it is not.
@@ -114,19 +118,23 @@ void run_render(const RenderArgs& args) {
   LoadOptions load;
   load.accept = Accept::kDatabase;
   load.lights = args.lights;
-  load.instant_polygons = true;
+  // A sun-hours map draws a path's sums, not its instants' lit polygons.
+  load.instant_polygons = args.sun_hours.path.empty();
   load.on_warning = [](const std::string& warning) {
     std::cerr << "shadowgen: warning: " << warning << '\n';
   };
   refuse_input_as_output("--svg", args.svg, args.database);
   const ShadowedScene shadowed = load_shadowed(args.database, load);
+  std::optional<SunHoursMap> map;
+  if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.database);
   const Camera camera = camera_for(args, shadowed);
   RenderOptions options;
   options.width = args.width;
   options.height = args.height;
   Picture picture;
   try {
-    picture = render(shadowed, camera, options);
+    picture = map ? render_sun_hours(shadowed, *map->path, map->bands, camera, options)
+                  : render(shadowed, camera, options);
   } catch (const std::invalid_argument& e) {
     // A camera the database's view or the arguments describe badly (eye == target): the
     // camera does not know which of them it came from.
@@ -174,6 +182,8 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
   command.add_option("--height", args.height, "picture height in pixels (default 600)")
       ->check(CLI::Range(1, 1 << 20));
   add_lights_option(command, args.lights);
+  // A sun-hours map draws one path whole: there is nothing for --lights to choose.
+  add_sun_hours_options(command, args.sun_hours, "draw")->excludes(command.get_option("--lights"));
 }
 
 }  // namespace

@@ -1,16 +1,19 @@
 #!/usr/bin/env bash
 # Makes the example pictures: for each scene in examples/scenes, generate its shadowed
-# database and draw its `main` view to <name>.svg. The one way the pictures are made: the
-# build target `example_pictures` runs it into examples/, and the end-to-end test
+# database and draw its `main` view to <name>.svg; for a scene listed in sun_hours_maps
+# below, also the sun-hours map of its sun path from that view, <name>-sun-hours.svg
+# (render --sun-hours). The one way the pictures are made: the build target
+# `example_pictures` runs it into examples/, and the end-to-end test
 # (tests/cli/examples_cli_test.cpp) runs it into a temporary folder and compares the bytes
 # with the pictures checked in.
 #
 #   examples/render_examples.sh SHADOWGEN [--out FOLDER] [--databases FOLDER] [NAME ...]
 #
 # SHADOWGEN is the built executable (e.g. build/release/cli/shadowgen). NAME is a scene's
-# name (scenes/NAME.json); without any, every scene. The pictures go to --out (default:
-# examples/, beside this script); the databases to --databases when given (kept), else to
-# a temporary folder (removed at the end). Usually run through
+# name (scenes/NAME.json), all of whose pictures are made; without any, every scene's. The
+# pictures go to --out (default: examples/, beside this script); the databases to
+# --databases when given (kept), else to a temporary folder (removed at the end). Usually
+# run through
 #
 #   cmake --build --preset release --target example_pictures
 set -euo pipefail
@@ -55,6 +58,9 @@ if [[ ! -x $shadowgen ]]; then
   exit 1
 fi
 
+# The scenes whose sun path gets a sun-hours map, and the path's id.
+declare -A sun_hours_maps=([garden]=march21)
+
 if [[ ${#names[@]} -eq 0 ]]; then
   for scene in "$examples"/scenes/*.json; do
     names+=("$(basename "$scene" .json)")
@@ -80,4 +86,9 @@ for name in "${names[@]}"; do
   "$shadowgen" generate "$examples/scenes/$name.json" -o "$database" --keep-instants --quiet
   "$shadowgen" render "$database" --view main --svg "$pictures/$name.svg"
   echo "$name: $pictures/$name.svg"
+  if [[ -n ${sun_hours_maps[$name]:-} ]]; then
+    "$shadowgen" render "$database" --view main --sun-hours "${sun_hours_maps[$name]}" \
+      --svg "$pictures/$name-sun-hours.svg"
+    echo "$name: $pictures/$name-sun-hours.svg"
+  fi
 done

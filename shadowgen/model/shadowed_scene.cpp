@@ -3,8 +3,25 @@
 #include <stdexcept>
 
 #include "hsr/area.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/model/one_line.h"
 
 namespace shadowgen {
+
+const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_view id,
+                                   const std::string& file) {
+  std::string known;
+  for (const SunPathHours& path : shadowed.sun_paths) {
+    if (path.id == id) return path;
+    known += (known.empty() ? "'" : ", '") + one_line(path.id) + "'";
+  }
+  throw InputError(file, "",
+                   known.empty()
+                       ? "has no sun path (a `sun` light with from, to and step_min), "
+                         "so no sun hours of '" +
+                             one_line(id) + "'"
+                       : "has no sun path '" + one_line(id) + "' (its sun paths: " + known + ")");
+}
 
 double lit_area(std::span<const LitPolygon> lit) {
   double sum = 0.0;

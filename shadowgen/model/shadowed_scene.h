@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hsr/polygon3.h"
@@ -53,6 +54,11 @@ struct ShadowedScene {
   std::vector<std::vector<std::vector<LitPolygon>>> lit;
   std::vector<SunPathHours> sun_paths;
 };
+
+// The sun path whose id is `id`. Throws InputError naming `file` where there is none,
+// listing the ids of the paths there are, or saying that there is no sun path at all.
+const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_view id,
+                                   const std::string& file);
 
 // Lit area of every (face, light): from its lit polygons or, for an instant of a sun path
 // that keeps only its instants' lit areas, from the path's.

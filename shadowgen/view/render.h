@@ -18,6 +18,8 @@
 //      going to that set, and what is left at the end is in shadow. So the pieces of one
 //      fragment never overlap and cover it, whatever rounding did to the regions;
 //   3. each piece is shaded flat and mapped to pixels.
+// Sun-hours maps (sun_hours_map.h) take the same steps with other regions and colours
+// (detail/painter.h).
 //
 // Shading (linear RGB in [0, 1], clamped per channel, written as 8-bit round(255·v)):
 //
@@ -47,6 +49,7 @@
 // of the visible faces within the picture's rectangle (up to the clipper's rounding).
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,6 +83,20 @@ struct Piece {
   bool back_side = false;
   clipper::PolygonWithHoles2 shape;  // pixels
   Rgb colour;
+  // Sun-hours maps (sun_hours_map.h): the hours of the piece's region; lights and
+  // light_set are then empty.
+  std::optional<double> sun_hours;
+};
+
+// A legend beside the picture, for sun-hours maps: caption lines, then one swatch per
+// entry, from the least hours to the most.
+struct LegendEntry {
+  Rgb colour;
+  std::string label;
+};
+struct Legend {
+  std::vector<std::string> caption;
+  std::vector<LegendEntry> entries;
 };
 
 struct RenderStats {
@@ -98,6 +115,7 @@ struct Picture {
   Rgb background;
   std::vector<Piece> pieces;
   RenderStats stats;
+  Legend legend;  // no entries but in a sun-hours map
 };
 
 // Throws std::invalid_argument for a bad camera or size (see CameraView) and when `lit`

@@ -1,5 +1,6 @@
 #include "shadowgen/view/svg_writer.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -53,8 +54,8 @@ std::size_t valid_xml_char(std::string_view text, std::size_t i) {
   return length;
 }
 
-void append_attribute_value(std::string& out, std::string_view text) {
-  out += '"';
+// `text` as XML character data, in an attribute value or an element.
+void append_escaped(std::string& out, std::string_view text) {
   for (std::size_t i = 0; i < text.size();) {
     const std::size_t length = valid_xml_char(text, i);
     if (length == 0) {
@@ -92,6 +93,11 @@ void append_attribute_value(std::string& out, std::string_view text) {
     }
     i += length;
   }
+}
+
+void append_attribute_value(std::string& out, std::string_view text) {
+  out += '"';
+  append_escaped(out, text);
   out += '"';
 }
 
@@ -105,18 +111,64 @@ void append_loop(std::string& out, const clipper::Loop2& loop) {
   out += " Z";
 }
 
+// The legend's layout, in pixels: a strip of kLegendWidth to the right of the picture.
+constexpr int kLegendWidth = 220;
+constexpr int kLegendMargin = 16;
+constexpr int kCaptionLine = 18;  // caption baselines apart
+constexpr int kEntryLine = 22;    // swatches apart
+constexpr int kSwatchWidth = 28;
+constexpr int kSwatchHeight = 16;
+constexpr int kFontSize = 12;
+
+int legend_height(const Legend& legend) {
+  return 2 * kLegendMargin + static_cast<int>(legend.caption.size()) * kCaptionLine +
+         static_cast<int>(legend.entries.size()) * kEntryLine;
+}
+
+void append_text(std::string& out, int x, int y, std::string_view text) {
+  out += "<text x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(y) + "\">";
+  append_escaped(out, text);
+  out += "</text>\n";
+}
+
+// The caption, then a swatch and a label per entry, the most hours at the top.
+void append_legend(std::string& out, const Legend& legend, int left) {
+  const int x = left + kLegendMargin;
+  out += "<g font-family=\"sans-serif\" font-size=\"" + std::to_string(kFontSize) +
+         "\" fill=\"#000000\" data-legend=\"sun-hours\">\n";
+  int y = kLegendMargin;
+  for (const std::string& line : legend.caption) {
+    append_text(out, x, y + kFontSize, line);
+    y += kCaptionLine;
+  }
+  for (auto it = legend.entries.rbegin(); it != legend.entries.rend(); ++it) {
+    out += "<rect x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(y + 2) + "\" width=\"" +
+           std::to_string(kSwatchWidth) + "\" height=\"" + std::to_string(kSwatchHeight) +
+           "\" fill=\"";
+    append_colour(out, it->colour);
+    out += "\" stroke=\"#000000\" stroke-width=\"0.5\"/>\n";
+    append_text(out, x + kSwatchWidth + 8, y + kFontSize + 3, it->label);
+    y += kEntryLine;
+  }
+  out += "</g>\n";
+}
+
 }  // namespace
 
 std::string svg_document(const Picture& picture) {
+  const bool legend = !picture.legend.entries.empty();
+  const int width = picture.width + (legend ? kLegendWidth : 0);
+  const int height =
+      legend ? std::max(picture.height, legend_height(picture.legend)) : picture.height;
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"";
-  out += std::to_string(picture.width);
+  out += std::to_string(width);
   out += "\" height=\"";
-  out += std::to_string(picture.height);
+  out += std::to_string(height);
   out += "\" viewBox=\"0 0 ";
-  out += std::to_string(picture.width);
+  out += std::to_string(width);
   out += ' ';
-  out += std::to_string(picture.height);
+  out += std::to_string(height);
   out += '"';
   if (picture.pixels_per_unit > 0.0) {
     out += " data-pixels-per-unit=\"";
@@ -124,9 +176,9 @@ std::string svg_document(const Picture& picture) {
     out += '"';
   }
   out += ">\n<rect x=\"0\" y=\"0\" width=\"";
-  out += std::to_string(picture.width);
+  out += std::to_string(width);
   out += "\" height=\"";
-  out += std::to_string(picture.height);
+  out += std::to_string(height);
   out += "\" fill=\"";
   append_colour(out, picture.background);
   out += "\"/>\n";
@@ -138,11 +190,18 @@ std::string svg_document(const Picture& picture) {
     append_colour(out, piece.colour);
     out += "\" fill-rule=\"evenodd\" data-face=";
     append_attribute_value(out, piece.face_id);
-    out += " data-lights=";
-    append_attribute_value(out, piece.light_set);
+    if (piece.sun_hours) {
+      out += " data-hours=\"";
+      append_shortest(out, *piece.sun_hours);
+      out += '"';
+    } else {
+      out += " data-lights=";
+      append_attribute_value(out, piece.light_set);
+    }
     if (piece.back_side) out += " data-side=\"back\"";
     out += "/>\n";
   }
+  if (legend) append_legend(out, picture.legend, picture.width);
   out += "</svg>\n";
   return out;
 }

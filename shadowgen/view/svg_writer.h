@@ -10,6 +10,18 @@
 //         data-face="wall" data-lights="sun+lamp"/>         one per piece, in picture order
 //   </svg>
 //
+// A sun-hours map's pieces carry data-hours="1.5" (their region's hours) instead of
+// data-lights, and its legend (Picture::legend) is drawn in a strip 220 pixels wide to the
+// right of the picture, which widens the document by that much (and makes it taller where
+// the legend needs it); the background fills both:
+//
+//   <g font-family="sans-serif" font-size="12" fill="#000000" data-legend="sun-hours">
+//   <text x=".." y="..">Sun hours: march21</text>              each caption line
+//   <rect x=".." y=".." width="28" height="16" fill="#rrggbb" stroke="#000000"
+//         stroke-width="0.5"/>                                 each entry, the last on top,
+//   <text x=".." y="..">≥ 10 h</text>                            then its label
+//   </g>
+//
 // A path holds the piece's outer loop and its holes as closed subpaths; even-odd filling
 // makes the holes. Coordinates are pixels, y down, printed in the shortest form that reads
 // back to the same double (std::to_chars), so the picture is exact at any zoom. A piece

@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace shadowgen::test {
 
@@ -154,9 +156,48 @@ std::vector<ReportRow> parse_report(const std::string& csv) {
   return rows;
 }
 
-double relative_error(double actual, double expected) {
-  if (expected == 0.0) return std::abs(actual);
-  return std::abs(actual - expected) / std::abs(expected);
+double svg_path_area(const std::string& d) {
+  std::vector<std::vector<std::pair<double, double>>> loops;
+  std::vector<double> numbers;
+  auto flush = [&] {
+    if (numbers.empty()) return;
+    loops.emplace_back();
+    for (std::size_t i = 0; i + 1 < numbers.size(); i += 2) {
+      loops.back().emplace_back(numbers[i], numbers[i + 1]);
+    }
+    numbers.clear();
+  };
+  const char* p = d.data();
+  const char* end = p + d.size();
+  while (p < end) {
+    if (*p == 'M') flush();
+    if (*p == 'M' || *p == 'L' || *p == 'Z' || *p == ' ' || *p == ',') {
+      ++p;
+      continue;
+    }
+    double v = 0.0;
+    const auto [next, error] = std::from_chars(p, end, v);
+    if (error != std::errc()) {
+      ADD_FAILURE() << "not a number at: " << std::string(p, std::min<std::size_t>(20, end - p));
+      return NAN;
+    }
+    numbers.push_back(v);
+    p = next;
+  }
+  flush();
+  double area = 0.0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    double twice = 0.0;
+    const auto& loop = loops[l];
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const auto& [x0, y0] = loop[i];
+      const auto& [x1, y1] = loop[(i + 1) % loop.size()];
+      twice += (x0 - loop[0].first) * (y1 - loop[0].second) -
+               (x1 - loop[0].first) * (y0 - loop[0].second);
+    }
+    area += (l == 0 ? 0.5 : -0.5) * std::abs(twice);
+  }
+  return area;
 }
 
 void ExpectWellFormedXml(const fs::path& file, const fs::path& scratch) {

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "tests/support/relative_error.h"
+
 namespace shadowgen::test {
 
 namespace fs = std::filesystem;
@@ -66,8 +68,9 @@ struct ReportRow {
 // (the row is skipped).
 std::vector<ReportRow> parse_report(const std::string& csv);
 
-// |actual - expected| / |expected|, or |actual| where `expected` is 0.
-double relative_error(double actual, double expected);
+// Area of the region of an SVG <path>'s data `d` ("M x,y L x,y ... Z M ..."): its first
+// subpath is the outer loop, the others holes. A number it cannot read fails the test.
+double svg_path_area(const std::string& d);
 
 // xmllint finds `file` well-formed; its complaints go through `scratch` into the message.
 void ExpectWellFormedXml(const fs::path& file, const fs::path& scratch);

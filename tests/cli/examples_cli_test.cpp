@@ -5,7 +5,8 @@
 // face, its triangles adding up to the report's areas) and drawn from its `main` view
 // (well-formed SVG per xmllint, naming only faces and lights of the scene).
 //
-// The pictures checked in beside the scenes (examples/<name>.svg) are what the build target
+// The pictures checked in beside the scenes (examples/<name>.svg, and the sun-hours map
+// examples/<name>-sun-hours.svg of a scene with a sun path) are what the build target
 // `example_pictures` makes: every scene has its picture and every picture its scene, and
 // each picture is remade here by examples/render_examples.sh (the script that target runs)
 // into a temporary folder and compared byte for byte with the one checked in.
@@ -64,6 +65,22 @@ std::vector<std::string> picture_names() {
   }
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// The scene a picture is of: the picture's name, less "-sun-hours" for a sun-hours map.
+std::string scene_of(const std::string& picture) {
+  const std::string map = "-sun-hours";
+  return picture.ends_with(map) ? picture.substr(0, picture.size() - map.size()) : picture;
+}
+
+// The pictures checked in of the scene `name`, as file names, sorted.
+std::vector<std::string> pictures_of(const std::string& name) {
+  std::vector<std::string> files;
+  for (const std::string& picture : picture_names()) {
+    if (scene_of(picture) == name) files.push_back(picture + ".svg");
+  }
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 // The paths of an SVG picture: its `<path` elements.
@@ -152,6 +169,9 @@ TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
   for (const char* expected : {"chairs", "courtyard", "garden", "house", "pergola", "room"}) {
     EXPECT_TRUE(std::find(names.begin(), names.end(), expected) != names.end()) << expected;
   }
+  // The garden's sun path of 21 March also has its sun-hours map.
+  EXPECT_EQ(pictures_of("garden"),
+            (std::vector<std::string>{"garden-sun-hours.svg", "garden.svg"}));
   for (const std::string& name : names) {
     const nlohmann::json scene =
         nlohmann::json::parse(contents(kExamples / "scenes" / (name + ".json")));
@@ -169,8 +189,9 @@ TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
   // ... and every picture checked in is one of a scene: no orphan.
   for (const std::string& name : picture_names()) {
     const fs::path picture = kExamples / (name + ".svg");
-    EXPECT_TRUE(std::find(names.begin(), names.end(), name) != names.end())
-        << picture << " is the picture of no scene (no examples/scenes/" << name
+    const std::string scene = scene_of(name);
+    EXPECT_TRUE(std::find(names.begin(), names.end(), scene) != names.end())
+        << picture << " is the picture of no scene (no examples/scenes/" << scene
         << ".json): remove it, or add its scene and " << kRemake;
     EXPECT_NE(contents(picture).find("data-face="), std::string::npos) << picture;
     EXPECT_EQ(shell("xmllint --noout " + quoted(picture.string()) + " 2>/dev/null"), 0) << picture;
@@ -186,8 +207,9 @@ class ExamplePicture : public CliFolderTest<::testing::TestWithParam<std::string
 // build target example_pictures runs) makes from its scene with the shadowgen just built.
 TEST_P(ExamplePicture, IsByteForByteAFreshRender) {
   const std::string name = GetParam();
+  const std::string scene = scene_of(name);
   const fs::path checked_in = kExamples / (name + ".svg");
-  ASSERT_TRUE(fs::is_regular_file(kExamples / "scenes" / (name + ".json")))
+  ASSERT_TRUE(fs::is_regular_file(kExamples / "scenes" / (scene + ".json")))
       << checked_in << " is the picture of no scene";
 
   const fs::path fresh_folder = dir_ / "pictures";
@@ -196,20 +218,20 @@ TEST_P(ExamplePicture, IsByteForByteAFreshRender) {
   const std::string command = "bash " + quoted((kExamples / "render_examples.sh").string()) + " " +
                               quoted(SHADOWGEN_EXECUTABLE) + " --out " +
                               quoted(fresh_folder.string()) + " --databases " +
-                              quoted((dir_ / "databases").string()) + " " + quoted(name) + " >" +
+                              quoted((dir_ / "databases").string()) + " " + quoted(scene) + " >" +
                               quoted(out.string()) + " 2>" + quoted(err.string());
   ASSERT_EQ(shell(command), 0) << command << "\n" << contents(out) << contents(err);
   EXPECT_EQ(contents(err), "");
   const fs::path fresh_path = fresh_folder / (name + ".svg");
   ASSERT_TRUE(fs::is_regular_file(fresh_path)) << command;
-  // The script makes only the picture asked for.
-  EXPECT_EQ(sorted_names(fresh_folder, {}), std::vector<std::string>{name + ".svg"});
+  // The script makes only the pictures of the scene asked for.
+  EXPECT_EQ(sorted_names(fresh_folder, {}), pictures_of(scene));
 
   const std::string fresh = contents(fresh_path);
   const std::string kept = contents(checked_in);
   ASSERT_FALSE(fresh.empty());
   EXPECT_TRUE(kept == fresh) << "examples/" << name
-                             << ".svg differs from a fresh render of examples/scenes/" << name
+                             << ".svg differs from a fresh render of examples/scenes/" << scene
                              << ".json (" << path_count(kept) << " paths checked in, "
                              << path_count(fresh) << " fresh; first difference at "
                              << first_difference(kept, fresh) << "; the fresh one is " << fresh_path

@@ -1,8 +1,8 @@
 #pragma once
 
 // Small scenes written by hand whose shadows are known exactly, shared by the tests of
-// what is built on a shadowed scene (light regions, OBJ export, render), and `generated`,
-// which makes a scene's database from its JSON.
+// what is built on a shadowed scene (light regions, OBJ export, render, sun-hours maps),
+// and `generated`, which makes a scene's database from its JSON.
 
 #include <string>
 
@@ -46,6 +46,29 @@ inline constexpr const char* kDartUnderRoof = R"({
     ],
     "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
   })";
+
+// A scene of `polygons` (JSON objects, comma-separated) at London (51.5° N, 0.1° W, UT)
+// under one `sun` light "day" whose span is `path` (its "from", "to" and "step_min").
+inline std::string site_scene(const std::string& polygons, const std::string& path) {
+  return R"({"format": "shadowgen-scene/1", "polygons": [)" + polygons +
+         R"(], "site": {"latitude_deg": 51.5, "longitude_deg": -0.1, "utc_offset_h": 0},
+         "lights": [{"id": "day", "type": "sun", )" +
+         path + "}]}";
+}
+
+// A courtyard: ground 20 × 20, a block 6 × 4 × 5 on it, a free-standing wall.
+inline const std::string kCourtyard = R"(
+  {"id": "ground", "outer": [[-10,-10,0],[10,-10,0],[10,10,0],[-10,10,0]]},
+  {"id": "roof", "outer": [[-3,0,5],[3,0,5],[3,4,5],[-3,4,5]]},
+  {"id": "south", "outer": [[-3,0,0],[3,0,0],[3,0,5],[-3,0,5]]},
+  {"id": "east", "outer": [[3,0,0],[3,4,0],[3,4,5],[3,0,5]]},
+  {"id": "north", "outer": [[3,4,0],[-3,4,0],[-3,4,5],[3,4,5]]},
+  {"id": "west", "outer": [[-3,4,0],[-3,0,0],[-3,0,5],[-3,4,5]]},
+  {"id": "wall", "outer": [[-8,-6,0],[-8,-2,0],[-8,-2,2],[-8,-6,2]]})";
+
+// The span of 21 March from 06:00 to 18:00 every 30 minutes, for site_scene.
+inline const std::string kMarch21 =
+    R"("from": "2026-03-21T06:00", "to": "2026-03-21T18:00", "step_min": 30)";
 
 // A sun path's sums made by hand: face "g", 4 × 1 in z = 0 (from "test.json"), and path
 // "p" of four 30-minute instants (lights p@0 ... p@3, no lit polygons kept): [0,1] × [0,1]

@@ -22,6 +22,7 @@
 #include "shadowgen/shadows/light_regions.h"
 #include "tests/shadowgen/hand_scenes.h"
 #include "tests/support/obj_text.h"
+#include "tests/support/relative_error.h"
 
 namespace shadowgen {
 namespace {
@@ -29,11 +30,7 @@ namespace {
 using test::generated;
 using test::kDartUnderRoof;
 using test::kTwoLights;
-
-double relative_error(double actual, double expected) {
-  if (expected == 0.0) return std::abs(actual);
-  return std::abs(actual - expected) / std::abs(expected);
-}
+using test::relative_error;
 
 struct Worst {
   double region = 0.0;  // a material's triangles against its region, relative

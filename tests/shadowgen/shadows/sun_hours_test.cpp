@@ -22,26 +22,9 @@ namespace shadowgen {
 namespace {
 
 using test::generated;
-
-std::string site_scene(const std::string& polygons, const std::string& path) {
-  return R"({"format": "shadowgen-scene/1", "polygons": [)" + polygons +
-         R"(], "site": {"latitude_deg": 51.5, "longitude_deg": -0.1, "utc_offset_h": 0},
-         "lights": [{"id": "day", "type": "sun", )" +
-         path + "}]}";
-}
-
-// A courtyard: ground 20 × 20, a block 6 × 4 × 5 on it, a free-standing wall.
-const std::string kCourtyard = R"(
-  {"id": "ground", "outer": [[-10,-10,0],[10,-10,0],[10,10,0],[-10,10,0]]},
-  {"id": "roof", "outer": [[-3,0,5],[3,0,5],[3,4,5],[-3,4,5]]},
-  {"id": "south", "outer": [[-3,0,0],[3,0,0],[3,0,5],[-3,0,5]]},
-  {"id": "east", "outer": [[3,0,0],[3,4,0],[3,4,5],[3,0,5]]},
-  {"id": "north", "outer": [[3,4,0],[-3,4,0],[-3,4,5],[3,4,5]]},
-  {"id": "west", "outer": [[-3,4,0],[-3,0,0],[-3,0,5],[-3,4,5]]},
-  {"id": "wall", "outer": [[-8,-6,0],[-8,-2,0],[-8,-2,2],[-8,-6,2]]})";
-
-const std::string kMarch21 =
-    R"("from": "2026-03-21T06:00", "to": "2026-03-21T18:00", "step_min": 30)";
+using test::kCourtyard;
+using test::kMarch21;
+using test::site_scene;
 
 double relative(double a, double b) {
   const double scale = std::max(std::fabs(a), std::fabs(b));

@@ -26,12 +26,15 @@
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/view/camera.h"
 #include "tests/shadowgen/hand_scenes.h"
+#include "tests/shadowgen/view/cameras.h"
 #include "tests/support/cgal_oracle.h"
 
 namespace shadowgen {
 namespace {
 
 using test::generated;
+using test::looking_down;
+using test::picture_size;
 
 double relative_error(double actual, double expected) {
   return std::abs(actual - expected) / std::max(std::abs(expected), 1e-300);
@@ -45,26 +48,6 @@ double pieces_area(const Picture& picture) {
   double sum = 0.0;
   for (const Piece& piece : picture.pieces) sum += clipper::area(piece.shape);
   return sum;
-}
-
-// An orthographic camera at `eye` looking at `target` below it, world +y up in the
-// picture; pixels_per_unit 0 fits the scene into the picture.
-Camera looking_down(const glm::dvec3& eye, const glm::dvec3& target, double pixels_per_unit) {
-  Camera camera;
-  camera.eye = eye;
-  camera.target = target;
-  camera.up = {0, 1, 0};
-  camera.orthographic = true;
-  camera.pixels_per_unit = pixels_per_unit;
-  return camera;
-}
-
-// Options for a picture of width × height pixels, the rest as default.
-RenderOptions picture_size(int width, int height) {
-  RenderOptions options;
-  options.width = width;
-  options.height = height;
-  return options;
 }
 
 // Every pair of pieces overlaps by no more than `tolerance` square pixels.

@@ -106,6 +106,44 @@ TEST(SvgWriter, AttributesAreEscaped) {
   EXPECT_NE(text.find("data-face=\"x\xEF\xBF\xBDy\xEF\xBF\xBD\xc3\xa9\""), std::string::npos);
 }
 
+TEST(SvgWriter, SunHoursPiecesCarryTheirHoursAndTheLegendWidensThePicture) {
+  Picture picture = two_pieces();
+  for (Piece& piece : picture.pieces) {
+    piece.lights.clear();
+    piece.light_set.clear();
+  }
+  picture.pieces[0].sun_hours = 1.5;
+  picture.pieces[1].sun_hours = 0.0;
+  picture.legend.caption = {"Sun hours: a<b", "4 instants, every 30 min"};
+  picture.legend.entries = {{{0, 0, 0}, "0\u20131 h"}, {{1, 1, 1}, "\u2265 1 h"}};
+  const std::string svg = svg_document(picture);
+  EXPECT_EQ(svg.find("data-lights"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("data-face=\"wall\" data-hours=\"1.5\"/>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("data-hours=\"0\" data-side=\"back\"/>"), std::string::npos) << svg;
+  // A strip of 220 pixels to the right; the legend (16 + 2 × 18 + 2 × 22 + 16 = 112
+  // pixels) is taller than the picture, so the document is too.
+  EXPECT_NE(svg.find("width=\"284\" height=\"112\" viewBox=\"0 0 284 112\""), std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("<rect x=\"0\" y=\"0\" width=\"284\" height=\"112\" fill=\"#ffffff\"/>"),
+            std::string::npos);
+  // After the pieces: the caption, escaped, then the entries, the most hours on top.
+  const std::size_t legend = svg.find("<g font-family=\"sans-serif\"");
+  ASSERT_NE(legend, std::string::npos);
+  EXPECT_GT(legend, svg.rfind("<path "));
+  EXPECT_EQ(svg.substr(legend),
+            "<g font-family=\"sans-serif\" font-size=\"12\" fill=\"#000000\" "
+            "data-legend=\"sun-hours\">\n"
+            "<text x=\"80\" y=\"28\">Sun hours: a&lt;b</text>\n"
+            "<text x=\"80\" y=\"46\">4 instants, every 30 min</text>\n"
+            "<rect x=\"80\" y=\"54\" width=\"28\" height=\"16\" fill=\"#ffffff\" "
+            "stroke=\"#000000\" stroke-width=\"0.5\"/>\n"
+            "<text x=\"116\" y=\"67\">\u2265 1 h</text>\n"
+            "<rect x=\"80\" y=\"76\" width=\"28\" height=\"16\" fill=\"#000000\" "
+            "stroke=\"#000000\" stroke-width=\"0.5\"/>\n"
+            "<text x=\"116\" y=\"89\">0\u20131 h</text>\n"
+            "</g>\n</svg>\n");
+}
+
 TEST(SvgWriter, OrthographicScaleIsRecordedAndFilesAreWholeOrAbsent) {
   Picture picture = two_pieces();
   picture.pixels_per_unit = 37.5;
