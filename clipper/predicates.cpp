@@ -82,28 +82,31 @@ class Expansion {
 // 16 adds: four two_diff halves on each side, multiplied out in pairs.
 using Determinant = Expansion<16>;
 
-Determinant exact_determinant(const Point2& a, const Point2& b, const Point2& c) {
-  // (b - a) x (c - a) = bax * cay - bay * cax, each difference split exactly in two.
-  const Pair bax = two_diff(b.x, a.x);
-  const Pair bay = two_diff(b.y, a.y);
-  const Pair cax = two_diff(c.x, a.x);
-  const Pair cay = two_diff(c.y, a.y);
+// p·q − r·s, each factor a difference split exactly in two.
+Determinant exact_difference_of_products(const Pair& p, const Pair& q, const Pair& r,
+                                         const Pair& s) {
   Determinant e;
-  for (double l : {bax.hi, bax.lo}) {
-    for (double r : {cay.hi, cay.lo}) {
-      const Pair p = two_product(l, r);
-      e.add(p.lo);
-      e.add(p.hi);
+  for (double l : {p.hi, p.lo}) {
+    for (double m : {q.hi, q.lo}) {
+      const Pair product = two_product(l, m);
+      e.add(product.lo);
+      e.add(product.hi);
     }
   }
-  for (double l : {bay.hi, bay.lo}) {
-    for (double r : {cax.hi, cax.lo}) {
-      const Pair p = two_product(-l, r);
-      e.add(p.lo);
-      e.add(p.hi);
+  for (double l : {r.hi, r.lo}) {
+    for (double m : {s.hi, s.lo}) {
+      const Pair product = two_product(-l, m);
+      e.add(product.lo);
+      e.add(product.hi);
     }
   }
   return e;
+}
+
+Determinant exact_determinant(const Point2& a, const Point2& b, const Point2& c) {
+  // (b - a) x (c - a) = bax * cay - bay * cax.
+  return exact_difference_of_products(two_diff(b.x, a.x), two_diff(c.y, a.y), two_diff(b.y, a.y),
+                                      two_diff(c.x, a.x));
 }
 
 // Shewchuk's ccwerrboundA: when |det| exceeds this times the permanent, the rounded
@@ -131,6 +134,23 @@ Orientation orient2d(const Point2& a, const Point2& b, const Point2& c) {
 
 double orient2d_value(const Point2& a, const Point2& b, const Point2& c) {
   return exact_determinant(a, b, c).approximate();
+}
+
+int dot_sign(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  // The same shape as orient2d's determinant (two differences, two products, one sum),
+  // so the same filter bound holds.
+  const double left = (b.x - a.x) * (d.x - c.x);
+  const double right = (b.y - a.y) * (d.y - c.y);
+  const double dot = left + right;
+  const double bound = kOrientBound * (std::fabs(left) + std::fabs(right));
+  if (dot > bound) return 1;
+  if (-dot > bound) return -1;
+  // (b − a)·(d − c) = bax * dcx − (−bay) * dcy.
+  const Pair bay = two_diff(b.y, a.y);
+  const double s = exact_difference_of_products(two_diff(b.x, a.x), two_diff(d.x, c.x),
+                                                {-bay.hi, -bay.lo}, two_diff(d.y, c.y))
+                       .sign();
+  return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
 }
 
 Orientation orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,

@@ -23,6 +23,11 @@ Orientation orient2d(const Point2& a, const Point2& b, const Point2& c);
 // exact and the magnitude has a relative error below 2^-52.
 double orient2d_value(const Point2& a, const Point2& b, const Point2& c);
 
+// Sign of the dot product (b − a)·(d − c): 1 when the two directions are less than a
+// right angle apart, -1 when more, 0 when perpendicular (or either is zero). Exact in
+// the same sense as orient2d.
+int dot_sign(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
+
 // Sign of the determinant | a−d ; b−d ; c−d |: positive when d lies below the plane through
 // a, b, c (which run counter-clockwise seen from above), zero when the four are coplanar.
 // Exact in the same sense as orient2d. Used to tell exactly coplanar faces apart.

@@ -89,11 +89,20 @@ bool ContactFinder::between_piece_and_line(const Point2& v, const Piece& e, cons
                                 : orient2d(s.from, s.to, e.to);
   const Orientation side = orient2d(s.from, s.to, v);
   if (side == Orientation::kCollinear || side != moved) return false;
-  // The line lies on the side of the piece where the segment's ends off it lie.
-  Orientation line = orient2d(e.from, e.to, s.from);
-  if (line == Orientation::kCollinear) line = orient2d(e.from, e.to, s.to);
+  // Beside the piece, the line lies on the side the piece moved away from, as seen
+  // along the line: for a piece running the segment's way, on its side opposite to
+  // `moved`; for one running against it, on that side. Not where the segment's ends lie:
+  // a piece tilted by its move (a hair off the line over a length far shorter than the
+  // segment's) has a line of its own that can cross the segment's between the ends,
+  // putting an end on the far side of the piece; taken from that end, the side was the
+  // wrong one, and vertices beyond the piece were routed in round after round (and
+  // vertices between it and the line were not). A piece square to the line has the line
+  // beside it only where it meets it.
+  const int along = dot_sign(s.from, s.to, e.from, e.to);
+  if (along == 0) return true;
+  const Orientation line = along > 0 ? static_cast<Orientation>(-static_cast<int>(moved)) : moved;
   const Orientation of_v = orient2d(e.from, e.to, v);
-  return line == Orientation::kCollinear || of_v == Orientation::kCollinear || of_v == line;
+  return of_v == Orientation::kCollinear || of_v == line;
 }
 
 // The rounded crossing of two properly crossing pieces routes both segments through

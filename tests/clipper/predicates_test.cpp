@@ -49,6 +49,29 @@ TEST(Orient2d, ValueHasTheExactSignAndIsAccurate) {
   EXPECT_EQ(orient2d(b, a, left), Orientation::kClockwise);
 }
 
+// The same grid against a direction square to the line's: (12, 12) − p against
+// (−12, 12), whose dot product is 12·(p.x − p.y), lost when 12 − p is rounded.
+TEST(DotSign, MatchesExactSignNearARightAngle) {
+  auto scaled = [](double v) { return static_cast<Int128>(std::ldexp(v, 53)); };
+  const Point2 b{12.0, 12.0}, c{0.0, 0.0}, d{-12.0, 12.0};
+  int mismatches = 0, perpendicular = 0;
+  for (int i = 0; i < 256; ++i) {
+    for (int j = 0; j < 256; ++j) {
+      const Point2 a{0.5 + std::ldexp(i, -53), 0.5 + std::ldexp(j, -53)};
+      const Int128 dot = (scaled(b.x) - scaled(a.x)) * (scaled(d.x) - scaled(c.x)) +
+                         (scaled(b.y) - scaled(a.y)) * (scaled(d.y) - scaled(c.y));
+      const int expected = dot > 0 ? 1 : (dot < 0 ? -1 : 0);
+      if (dot_sign(a, b, c, d) != expected) ++mismatches;
+      if (expected == 0) ++perpendicular;
+      // Reversing either direction flips the sign.
+      if (dot_sign(b, a, c, d) != -expected || dot_sign(a, b, d, c) != -expected) ++mismatches;
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(perpendicular, 256);  // exactly the diagonal i == j
+  EXPECT_EQ(dot_sign({0.0, 0.0}, {1.0, 0.0}, {5.0, 5.0}, {5.0, 5.0}), 0);
+}
+
 TEST(OnSegment, ClosedSegmentExactly) {
   const Point2 a{0.1, 0.1}, b{0.3, 0.3};
   EXPECT_TRUE(on_segment(a, b, a));
