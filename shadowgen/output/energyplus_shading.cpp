@@ -17,11 +17,6 @@ namespace {
 
 constexpr std::int64_t kSecondsPerDay = 86'400;
 
-std::string scene_file(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
-  return scene.faces.empty() ? "" : scene.faces.front().source_file;
-}
-
 // The face's id as an EnergyPlus surface name: upper case, as EnergyPlus keeps names.
 std::string surface_name(const Face& face) {
   const std::string& id = face.id;
@@ -84,7 +79,7 @@ void append_fraction(std::string& out, double fraction) {
 
 EnergyPlusShading energyplus_shading(const ShadowedScene& shadowed) {
   detail::require_sun_paths(shadowed, "a shading schedule");
-  const std::string file = scene_file(shadowed);
+  const std::string file = detail::scene_file_of(shadowed);
   if (shadowed.sun_paths.size() > 1) {
     std::string ids;
     for (const SunPathHours& path : shadowed.sun_paths) ids += (ids.empty() ? "" : ", ") + path.id;

@@ -56,6 +56,9 @@ std::vector<IrradiationRow> irradiation_rows(const ShadowedScene& shadowed,
   detail::require_sun_paths(shadowed, "irradiation");
   const Scene& scene = shadowed.scene;
   std::vector<IrradiationRow> rows(scene.faces.size() * shadowed.sun_paths.size());
+  std::vector<std::vector<PartFacing>> facings_per_face;  // the same for every path
+  facings_per_face.reserve(scene.faces.size());
+  for (const Face& face : scene.faces) facings_per_face.push_back(facings_of(face));
   for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
     const SunPathHours& path = shadowed.sun_paths[p];
     const std::vector<double> dni = direct_normal_of(shadowed, path, weather);
@@ -68,7 +71,7 @@ std::vector<IrradiationRow> irradiation_rows(const ShadowedScene& shadowed,
       IrradiationRow& row = rows[f * shadowed.sun_paths.size() + p];
       row.face = f;
       row.path = p;
-      const std::vector<PartFacing> facings = facings_of(scene.faces[f]);
+      const std::vector<PartFacing>& facings = facings_per_face[f];
       for (const PartFacing& facing : facings) row.area += facing.area;
       for (std::size_t k = 0; k < path.instants.size(); ++k) {
         const double energy_per_area = dni[k] * hours_per_instant;

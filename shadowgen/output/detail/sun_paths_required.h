@@ -3,11 +3,15 @@
 // Reports over sun paths (sun hours, irradiation, shading schedules) refuse an input
 // without one in the same words.
 
+#include <string>
 #include <string_view>
 
 #include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen::detail {
+
+// The file messages about a shadowed scene name: its first face's (empty without faces).
+std::string scene_file_of(const ShadowedScene& shadowed);
 
 // InputError naming the scene's file when `shadowed` has no sun path; `what` says what
 // the report would have given ("sun hours").
