@@ -54,6 +54,7 @@ Command add_report_command(CLI::App& app);
 Command add_export_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_sun_command(CLI::App& app);
+Command add_merge_command(CLI::App& app);
 
 // How an input is read and its shadows generated.
 struct ReadingArgs {

@@ -1,5 +1,6 @@
 // `shadowgen generate`: scenes in, shadowed databases out.
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -11,6 +12,7 @@
 
 #include "cli/command.h"
 #include "cli/progress.h"
+#include "shadowgen/model/input_error.h"
 #include "shadowgen/output/database.h"
 
 namespace shadowgen::cli {
@@ -36,7 +38,32 @@ struct GenerateArgs {
   std::string output;
   ReadingArgs reading;
   bool keep_instants = false;  // LoadOptions::instant_polygons
+  std::string instants;        // --instants K/N: LoadOptions::shard
 };
+
+// Upper bound of N in --instants K/N, the database reader's (far more than any scheduler
+// runs at once).
+constexpr std::size_t kMaxShards = 1'000'000;
+
+// "K/N", 1 <= K <= N: shard K - 1 of N. Throws UsageError otherwise.
+ShardPlace parse_shard(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  const auto whole = [](const std::string& digits, std::size_t& out) {
+    if (digits.empty() || digits.size() > 7 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
+      return false;
+    }
+    out = std::stoul(digits);
+    return true;
+  };
+  std::size_t k = 0, n = 0;
+  if (slash == std::string::npos || !whole(text.substr(0, slash), k) ||
+      !whole(text.substr(slash + 1), n) || n < 1 || n > kMaxShards || k < 1 || k > n) {
+    throw UsageError("--instants " + text +
+                     ": expected K/N, shard K of N, 1 <= K <= N <= " + std::to_string(kMaxShards));
+  }
+  return {k - 1, n};
+}
 
 // Two spellings of one file compare equal (weakly_canonical resolves "." and ".." and
 // the links of the part that exists).
@@ -93,6 +120,19 @@ ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std:
                         bool show_progress) {
   LoadOptions options = load_options(args.reading, Accept::kScene, {{"-o", database.string()}});
   options.instant_polygons = args.keep_instants;
+  if (!args.instants.empty()) {
+    options.shard = parse_shard(args.instants);
+    options.on_scene = [&, check = options.on_scene](const Scene& scene) {
+      check(scene);
+      const bool paths = std::any_of(scene.lights.begin(), scene.lights.end(),
+                                     [](const Light& l) { return l.sun && l.sun->step_min > 0; });
+      if (!paths) {
+        throw InputError(args.scenes[index], "",
+                         "--instants shares out the instants of sun paths, and the scene has "
+                         "no sun path (a `sun` light with from, to and step_min)");
+      }
+    };
+  }
   // Ends its line when it goes, so that an error printed afterwards has a line of its own.
   std::optional<ProgressDisplay> progress;
   if (show_progress) {
@@ -115,6 +155,12 @@ ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std:
 }
 
 void run_generate(const GenerateArgs& args) {
+  if (!args.instants.empty()) {
+    parse_shard(args.instants);  // a usage error before any scene is read
+    if (args.keep_instants) {
+      throw UsageError("--instants and --keep-instants: a shard keeps its instants' sums only");
+    }
+  }
   const std::vector<fs::path> paths = database_paths(args.scenes, args.output);
   const bool show_progress = !args.reading.quiet && stderr_is_terminal();
   for (std::size_t i = 0; i < args.scenes.size(); ++i) {
@@ -141,6 +187,12 @@ void add_generate_options(CLI::App& command, GenerateArgs& args) {
   command.add_flag("--keep-instants", args.keep_instants,
                    "keep the lit polygons of every instant of a sun path, not only their sun "
                    "hours and lit areas (export and render draw only lights with polygons)");
+  command
+      .add_option("--instants", args.instants,
+                  "K/N: compute shard K of N of every sun path (its share of the instants; "
+                  "the other lights in shard 1 alone) and write it for shadowgen merge, "
+                  "which joins all N into exactly the database of one run")
+      ->type_name("K/N");
 }
 
 }  // namespace

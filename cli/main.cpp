@@ -84,8 +84,8 @@ int main(int argc, char** argv) {
       "that could not be computed exactly.");
   const shadowgen::cli::Command commands[] = {
       shadowgen::cli::add_generate_command(app), shadowgen::cli::add_report_command(app),
-      shadowgen::cli::add_export_command(app), shadowgen::cli::add_render_command(app),
-      shadowgen::cli::add_sun_command(app)};
+      shadowgen::cli::add_export_command(app),   shadowgen::cli::add_render_command(app),
+      shadowgen::cli::add_sun_command(app),      shadowgen::cli::add_merge_command(app)};
 
   try {
     app.parse(argc, argv);

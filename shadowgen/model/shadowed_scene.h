@@ -5,11 +5,13 @@
 // details attached to parent polygons"). Everything later output needs comes from it.
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "clipper/polygon.h"
 #include "hsr/polygon3.h"
 #include "shadowgen/model/scene.h"
 
@@ -28,6 +30,36 @@ struct SunHoursRegion {
   std::vector<LitPolygon> polygons;  // on their face's parts, like lit detail polygons
 };
 
+// The sums of one face over a run of a path's instants, as FaceSunHours holds them
+// (shadows/sun_hours.h): per part with area, the pieces of the part lit at each count of
+// instants, in the part's exact plane chart (hsr/plane_chart.h), not merged. A shard's
+// database keeps them so that `merge` goes on exactly where the shard stopped.
+struct SunHoursPieces {
+  struct Count {
+    std::size_t count = 0;
+    clipper::PolygonSet2 pieces;
+  };
+  struct Part {
+    std::size_t part = 0;       // in Face::parts
+    std::vector<Count> counts;  // increasing counts, none empty
+  };
+  std::vector<Part> parts;  // increasing parts; none: lit at no instant
+};
+
+// A node of a path's fixed tree of instant blocks (shadows/sun_hours_tree.h): the sums of
+// blocks [first_block, first_block + 2^level).
+struct SunHoursNode {
+  std::size_t first_block = 0;
+  unsigned level = 0;
+  SunHoursPieces sums;
+};
+
+// Shard `index` of `count` of every sun path (generate --instants K/N, K = index + 1):
+// which instants are its own is fixed by the tree (shadows/sun_hours_tree.h).
+struct ShardPlace {
+  std::size_t index = 0, count = 1;
+};
+
 // A sun path summed over its instants (docs/scene-format.md, "Sun hours"): the instants
 // are lights of the scene (Light::sun), but only their lit areas are kept per face, not
 // their lit polygons, so a path of thousands of instants costs what its sum costs.
@@ -44,6 +76,11 @@ struct SunPathHours {
   std::vector<std::vector<std::vector<double>>> part_lit_area;
   // [face]: sun-hours regions in increasing hours (0 included), tiling the face.
   std::vector<std::vector<SunHoursRegion>> regions;
+  // In a shard (ShadowedScene::shard) only: its own instants are [shard_first,
+  // shard_last), the only ones lit_area and part_lit_area hold; its sums are the tree's
+  // nodes over its blocks, nodes[face] in increasing blocks, and regions is empty.
+  std::size_t shard_first = 0, shard_last = 0;
+  std::vector<std::vector<SunHoursNode>> nodes;
 };
 
 struct ShadowedScene {
@@ -53,6 +90,9 @@ struct ShadowedScene {
   // one part do not overlap.
   std::vector<std::vector<std::vector<LitPolygon>>> lit;
   std::vector<SunPathHours> sun_paths;
+  // Set in a shard of a sun-path run, which only `merge` reads: lights that are not
+  // instants of a path are lit in shard 0 alone.
+  std::optional<ShardPlace> shard;
 };
 
 // The sun path whose id is `id`. Throws InputError naming `file` where there is none,

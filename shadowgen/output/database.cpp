@@ -40,6 +40,23 @@ class WriteCheck {
     if (loop.size() < 3) fail("a loop has fewer than three vertices");
     for (const glm::dvec3& p : loop) finite(p, "a vertex coordinate");
   }
+  void loop(const clipper::Loop2& loop) const {
+    if (loop.size() < 3) fail("a loop has fewer than three vertices");
+    for (const clipper::Point2& p : loop) {
+      finite(p.x, "a chart coordinate");
+      finite(p.y, "a chart coordinate");
+    }
+  }
+  void pieces(const SunHoursPieces& sums) const {
+    for (const SunHoursPieces::Part& part : sums.parts) {
+      for (const SunHoursPieces::Count& count : part.counts) {
+        for (const clipper::PolygonWithHoles2& piece : count.pieces) {
+          loop(piece.outer);
+          for (const clipper::Loop2& hole : piece.holes) loop(hole);
+        }
+      }
+    }
+  }
   void polygons(std::span<const Polygon3> polygons) const {
     for (const Polygon3& polygon : polygons) {
       loop(polygon.outer);
@@ -86,8 +103,17 @@ void check_writable(const ShadowedScene& shadowed) {
   }
   for (const SunPathHours& path : shadowed.sun_paths) {
     const WriteCheck check("sun path '" + path.id + "'");
-    if (path.lit_area.size() != scene.faces.size() || path.regions.size() != scene.faces.size()) {
+    const std::vector<std::vector<SunHoursRegion>>& regions = path.regions;
+    const bool sums_shaped = shadowed.shard
+                                 ? path.nodes.size() == scene.faces.size() && regions.empty()
+                                 : regions.size() == scene.faces.size();
+    if (path.lit_area.size() != scene.faces.size() || !sums_shaped) {
       check.fail("sums not shaped [face]");
+    }
+    const std::size_t own =
+        shadowed.shard ? path.shard_last - path.shard_first : path.instants.size();
+    if (path.shard_first > path.shard_last || path.shard_last > path.instants.size()) {
+      check.fail("a shard's instants beyond the path's");
     }
     for (const std::size_t l : path.instants) {
       if (l >= scene.lights.size() || !scene.lights[l].sun ||
@@ -96,14 +122,18 @@ void check_writable(const ShadowedScene& shadowed) {
       }
     }
     for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-      if (path.lit_area[f].size() != path.instants.size()) check.fail("lit areas not per instant");
+      if (path.lit_area[f].size() != own) check.fail("lit areas not per instant");
       for (const double a : path.lit_area[f]) check.finite(a, "a lit area");
       const std::size_t parts = scene.faces[f].parts.size();
       const std::vector<std::vector<double>>& on_parts = path.part_lit_area.at(f);
       if (on_parts.size() != (parts > 1 ? parts : 0)) check.fail("part lit areas not per part");
       for (const std::vector<double>& areas : on_parts) {
-        if (areas.size() != path.instants.size()) check.fail("part lit areas not per instant");
+        if (areas.size() != own) check.fail("part lit areas not per instant");
         for (const double a : areas) check.finite(a, "a part's lit area");
+      }
+      if (shadowed.shard) {
+        for (const SunHoursNode& node : path.nodes[f]) check.pieces(node.sums);
+        continue;
       }
       for (const SunHoursRegion& region : path.regions[f]) {
         check.finite(region.hours, "sun hours");
@@ -202,6 +232,42 @@ void write_lit_polygons(JsonWriter& out, std::span<const LitPolygon> lit, bool w
   out.end_array();
 }
 
+void write_loop(JsonWriter& out, const clipper::Loop2& loop) {
+  out.begin_array();
+  for (const clipper::Point2& p : loop) out.begin_array().value(p.x).value(p.y).end_array();
+  out.end_array();
+}
+
+// "nodes": [{"block": b, "level": l, "parts": [{"part": i, "counts": [{"count": c,
+// "pieces": [{"outer": [[x, y], ...], "holes": [...]}]}]}]}], the pieces in their part's
+// chart (SunHoursPieces).
+void write_nodes(JsonWriter& out, std::span<const SunHoursNode> nodes) {
+  out.key("nodes").begin_array(Layout::kLines);
+  for (const SunHoursNode& node : nodes) {
+    out.begin_object(Layout::kLines).key("block").value(std::uint64_t{node.first_block});
+    out.key("level").value(std::uint64_t{node.level}).key("parts").begin_array(Layout::kLines);
+    for (const SunHoursPieces::Part& part : node.sums.parts) {
+      out.begin_object(Layout::kLines).key("part").value(std::uint64_t{part.part});
+      out.key("counts").begin_array(Layout::kLines);
+      for (const SunHoursPieces::Count& count : part.counts) {
+        out.begin_object(Layout::kLines).key("count").value(std::uint64_t{count.count});
+        out.key("pieces").begin_array(Layout::kLines);
+        for (const clipper::PolygonWithHoles2& piece : count.pieces) {
+          out.begin_object().key("outer");
+          write_loop(out, piece.outer);
+          out.key("holes").begin_array();
+          for (const clipper::Loop2& hole : piece.holes) write_loop(out, hole);
+          out.end_array().end_object();
+        }
+        out.end_array().end_object();
+      }
+      out.end_array().end_object();
+    }
+    out.end_array().end_object();
+  }
+  out.end_array();
+}
+
 // "sun_hours": {"path": {"lit_area": [...], "part_lit_area": [[...], ...] (on a face of
 // several parts), "regions": [{"hours": h, "polygons": [...]}]}}
 void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPathHours>& paths,
@@ -219,6 +285,11 @@ void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPat
         out.end_array();
       }
       out.end_array();
+    }
+    if (!path.nodes.empty()) {
+      write_nodes(out, path.nodes[face]);
+      out.end_object();
+      continue;
     }
     out.key("regions").begin_array(Layout::kLines);
     for (const SunHoursRegion& region : path.regions[face]) {
@@ -259,6 +330,10 @@ std::string database_json(const ShadowedScene& shadowed) {
   const Scene& scene = shadowed.scene;
   JsonWriter out;
   out.begin_object(Layout::kLines).key("format").value(kShadowedFormat);
+  if (shadowed.shard) {
+    out.key("shard").begin_object().key("index").value(std::uint64_t{shadowed.shard->index + 1});
+    out.key("count").value(std::uint64_t{shadowed.shard->count}).end_object();
+  }
   out.key("lights").begin_array(Layout::kLines);
   for (const Light& light : scene.lights) write_light(out, light);
   out.end_array();

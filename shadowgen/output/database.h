@@ -48,6 +48,15 @@
 //   LIT = POLYGON, with "part":k after "holes" on a face of several parts: the index of
 //         the part whose plane it lies in (without the key, the nearest part's plane)
 //
+// A shard of a sun-path run (generate --instants K/N; ShadowedScene::shard) has
+// "shard":{"index":K,"count":N} after "format", 1 <= K <= N. Its lit areas hold its own
+// instants alone (shadows/sun_hours_tree.h says which), and its sums are the nodes of the
+// path's tree it made, in place of "regions":
+//           "nodes": [{"block":b,"level":l,"parts":[{"part":i,"counts":[
+//                       {"count":c,"pieces":[{"outer":[[x,y],...],"holes":[...]}]}]}]}]
+// the pieces in their part's exact plane chart (SunHoursPieces), increasing blocks. The
+// lights that are no instant of a path are lit in shard 1 alone. Only `merge` reads it.
+//
 // All coordinates are the scene's, in 3D; a lit polygon lies in its face's plane and the
 // lit polygons of one (face, light) cover exactly its lit region. Every loop has at least
 // three vertices. Numbers are written with a '.' or an exponent ("28.0", "-0.0", "1e-300");

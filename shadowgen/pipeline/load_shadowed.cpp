@@ -40,6 +40,7 @@ ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
   GenerateOptions generate;
   generate.threads = options.threads;
   generate.keep_instant_polygons = options.instant_polygons;
+  generate.shard = options.shard;
   generate.on_light_done = options.on_light_done;
   try {
     return generate_shadows(scene, generate).shadowed;
@@ -54,6 +55,14 @@ ShadowedScene database(const Document& document, const ReadOptions& read,
   std::vector<std::string> warnings;
   ShadowedScene shadowed = parse_database(document.text, document.path, read, warnings);
   pass_on(warnings, options);
+  if (shadowed.shard && options.accept != Accept::kShard) {
+    throw InputError(document.path.string(), "",
+                     "is shard " + std::to_string(shadowed.shard->index + 1) + " of " +
+                         std::to_string(shadowed.shard->count) +
+                         " of a sun-path run (generate --instants K/N), not a whole shadowed "
+                         "database: join every shard with shadowgen merge first");
+  }
+  if (options.accept == Accept::kShard) return shadowed;  // merge takes it as it is
   keep_lights(shadowed, options.lights, document.path.string());
   if (options.instant_polygons && options.on_warning) {
     for (const std::string& path : drop_summed_instants(shadowed, document.path.string())) {
@@ -68,6 +77,12 @@ ShadowedScene database(const Document& document, const ReadOptions& read,
 }
 
 [[noreturn]] void refuse(const Document& document, const LoadOptions& options) {
+  if (options.accept == Accept::kShard) {
+    throw InputError(document.path.string(), "",
+                     "\"format\" is \"" + document.format +
+                         "\", expected a shard of a sun-path run (\"" +
+                         std::string(kShadowedFormat) + "\" written by generate --instants K/N)");
+  }
   if (options.accept == Accept::kDatabase && document.format == kSceneFormat) {
     throw InputError(document.path.string(), "",
                      "is a scene, not a shadowed database (shadowgen generate makes one)");
@@ -89,7 +104,8 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
 
   const Document document = read_document(path);
   if (document.format == kShadowedFormat) return database(document, read, options);
-  if (document.format != kSceneFormat || options.accept == Accept::kDatabase) {
+  if (document.format != kSceneFormat || options.accept == Accept::kDatabase ||
+      options.accept == Accept::kShard) {
     refuse(document, options);
   }
   return generated(parse_scene(document.text, document.path, read), path, options);

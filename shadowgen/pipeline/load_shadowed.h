@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ enum class Accept {
   kSceneOrDatabase,  // a scene is generated, a database read as it is (report, export)
   kScene,            // a scene only, read as read_scene reads it (generate)
   kDatabase,         // a shadowed database only; a scene is refused, saying so (render)
+  kShard,            // a shard of a sun-path run only (merge)
 };
 
 struct LoadOptions {
@@ -29,6 +31,9 @@ struct LoadOptions {
   bool strict = false;   // ReadOptions::strict, for a scene and a database alike
   bool verbose = false;  // ReadOptions::verbose
   unsigned threads = 0;  // GenerateOptions::threads
+  // GenerateOptions::shard: a scene's run cut into shards (generate --instants K/N). A
+  // shard database is refused but where `accept` is kShard.
+  std::optional<ShardPlace> shard;
   // Whether the caller draws every light's lit polygons (export, render): a scene's sun
   // paths keep their instants' polygons (GenerateOptions::keep_instant_polygons); a
   // database's sun paths that kept only lit areas are dropped, with a warning.

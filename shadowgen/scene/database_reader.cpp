@@ -18,11 +18,15 @@
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/instant_blocks.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/sun/civil_time.h"
 
 namespace shadowgen {
 namespace {
+
+// Shards a run may be cut into: far more than any scheduler runs at once.
+constexpr std::size_t kMaxShards = 1'000'000;
 
 class DatabaseParser {
  public:
@@ -43,6 +47,9 @@ class DatabaseParser {
                   std::string(kShadowedFormat) + "'");
     }
     ShadowedScene shadowed;
+    if (const std::optional<JsonValue> shard = top.find("shard")) {
+      shadowed.shard = read_shard(*shard);
+    }
     const JsonArray lights = top.get("lights").array();
     detail::IdRegistry light_ids;
     for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -70,6 +77,20 @@ class DatabaseParser {
   }
 
  private:
+  // "shard": {"index": K, "count": N}, 1 <= K <= N.
+  static ShardPlace read_shard(const JsonValue& value) {
+    JsonObject entry = value.object();
+    const JsonValue index = entry.get("index"), count = entry.get("count");
+    if (count.index() < 1 || count.index() > kMaxShards) {
+      count.fail("expected a number of shards from 1 to " + std::to_string(kMaxShards));
+    }
+    if (index.index() < 1 || index.index() > count.index()) {
+      index.fail("expected a shard from 1 to the count, " + std::to_string(count.index()));
+    }
+    entry.finish();
+    return {index.index() - 1, count.index()};
+  }
+
   // A sun path's "from" and "to", in seconds on the path's clock.
   static std::pair<std::int64_t, std::int64_t> read_span(JsonObject& entry, SunPathHours& path) {
     std::int64_t seconds[2] = {0, 0};
@@ -124,17 +145,25 @@ class DatabaseParser {
             "their sun's entry");
       }
       entry.finish();
+      if (shadowed.shard) {
+        const IndexRun own = shard_instants(path.instants.size(), *shadowed.shard);
+        path.shard_first = own.first;
+        path.shard_last = own.last;
+      }
       path_values_.emplace_back();
       shadowed.sun_paths.push_back(std::move(path));
     }
   }
 
-  // One lit area per instant of `path`, none negative.
-  static std::vector<double> read_instant_areas(const JsonValue& value, const SunPathHours& path) {
+  // One lit area per instant of `path` (in a shard, per instant of its own), none negative.
+  static std::vector<double> read_instant_areas(const JsonValue& value, const SunPathHours& path,
+                                                bool shard) {
     const JsonArray areas = value.array();
-    if (areas.size() != path.instants.size()) {
-      value.fail("expected one lit area per instant of the path (" +
-                 std::to_string(path.instants.size()) + "), found " + std::to_string(areas.size()));
+    const std::size_t expected = shard ? path.shard_last - path.shard_first : path.instants.size();
+    if (areas.size() != expected) {
+      value.fail("expected one lit area per instant of the " +
+                 std::string(shard ? "shard's part of the " : "") + "path (" +
+                 std::to_string(expected) + "), found " + std::to_string(areas.size()));
     }
     std::vector<double> out;
     out.reserve(areas.size());
@@ -147,7 +176,8 @@ class DatabaseParser {
 
   // sun_hours.<path>.part_lit_area on a face of several parts: per part, one lit area per
   // instant.
-  static void read_part_lit_areas(JsonObject& sum, const Face& face, SunPathHours& path) {
+  static void read_part_lit_areas(JsonObject& sum, const Face& face, SunPathHours& path,
+                                  bool shard) {
     std::vector<std::vector<double>>& on_parts = path.part_lit_area.emplace_back();
     if (face.parts.size() < 2) return;
     const JsonValue parts_value = sum.get("part_lit_area");
@@ -158,7 +188,7 @@ class DatabaseParser {
                        std::to_string(parts.size()));
     }
     for (std::size_t i = 0; i < parts.size(); ++i) {
-      on_parts.push_back(read_instant_areas(parts.at(i), path));
+      on_parts.push_back(read_instant_areas(parts.at(i), path, shard));
     }
   }
 
@@ -169,8 +199,14 @@ class DatabaseParser {
     for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
       SunPathHours& path = shadowed.sun_paths[p];
       JsonObject sum = sums.get(path.id).object();
-      path.lit_area.push_back(read_instant_areas(sum.get("lit_area"), path));
-      read_part_lit_areas(sum, face, path);
+      const bool shard = shadowed.shard.has_value();
+      path.lit_area.push_back(read_instant_areas(sum.get("lit_area"), path, shard));
+      read_part_lit_areas(sum, face, path, shard);
+      if (shard) {
+        path.nodes.push_back(read_nodes(sum.get("nodes"), path, *shadowed.shard));
+        sum.finish();
+        continue;
+      }
       const JsonValue regions_value = sum.get("regions");
       const JsonArray regions = regions_value.array();
       std::vector<SunHoursRegion>& out = path.regions.emplace_back();
@@ -193,6 +229,78 @@ class DatabaseParser {
       path_values_[p].push_back(sum.value());
     }
     sums.finish();
+  }
+
+  // A shard's "nodes" on one face: nodes of the path's tree covering the shard's blocks,
+  // in order (model/instant_blocks.h); their pieces are checked against the face where
+  // they are joined (FaceSunHours).
+  static std::vector<SunHoursNode> read_nodes(const JsonValue& value, const SunPathHours& path,
+                                              const ShardPlace& shard) {
+    const IndexRun blocks =
+        shard_blocks(block_count(path.instants.size()), shard.index, shard.count);
+    const JsonArray nodes = value.array();
+    std::vector<SunHoursNode> out;
+    std::size_t next = blocks.first;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      JsonObject node = nodes.at(i).object();
+      const JsonValue block = node.get("block"), level = node.get("level");
+      const std::size_t span = level.index() < 32 ? std::size_t{1} << level.index() : 0;
+      if (span == 0 || block.index() != next || block.index() % span != 0 ||
+          span > blocks.last - next) {
+        node.value().fail("expected the tree's node that starts at block " + std::to_string(next) +
+                          " of the shard's blocks " + std::to_string(blocks.first) + " to " +
+                          std::to_string(blocks.last));
+      }
+      next += span;
+      SunHoursNode& read = out.emplace_back();
+      read.first_block = block.index();
+      read.level = static_cast<unsigned>(level.index());
+      const JsonArray parts = node.get("parts").array();
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        JsonObject part = parts.at(k).object();
+        SunHoursPieces::Part& p = read.sums.parts.emplace_back();
+        p.part = part.get("part").index();
+        const JsonArray counts = part.get("counts").array();
+        for (std::size_t c = 0; c < counts.size(); ++c) {
+          JsonObject count = counts.at(c).object();
+          SunHoursPieces::Count& n = p.counts.emplace_back();
+          n.count = count.get("count").index();
+          const JsonArray pieces = count.get("pieces").array();
+          for (std::size_t q = 0; q < pieces.size(); ++q) {
+            JsonObject piece = pieces.at(q).object();
+            clipper::PolygonWithHoles2& polygon = n.pieces.emplace_back();
+            polygon.outer = read_chart_loop(piece.get("outer"));
+            const JsonArray holes = piece.get("holes").array();
+            for (std::size_t h = 0; h < holes.size(); ++h) {
+              polygon.holes.push_back(read_chart_loop(holes.at(h)));
+            }
+            piece.finish();
+          }
+          count.finish();
+        }
+        part.finish();
+      }
+      node.finish();
+    }
+    if (next != blocks.last) {
+      value.fail("the nodes end at block " + std::to_string(next) + ", the shard's blocks at " +
+                 std::to_string(blocks.last));
+    }
+    return out;
+  }
+
+  // [[x, y], ...]: a loop in a part's chart, three points at least.
+  static clipper::Loop2 read_chart_loop(const JsonValue& value) {
+    const JsonArray points = value.array();
+    if (points.size() < 3) value.fail("a loop needs at least three points");
+    clipper::Loop2 loop;
+    loop.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const JsonArray xy = points.at(i).array();
+      if (xy.size() != 2) points.at(i).fail("expected a point [x, y]");
+      loop.push_back({xy.at(0).number(), xy.at(1).number()});
+    }
+    return loop;
   }
 
   void read_face(const JsonValue& value, ShadowedScene& shadowed) {
@@ -315,6 +423,7 @@ class DatabaseParser {
   // area_tolerance; times the path's hours for the second sum, each instant's lit
   // boundary lying along them), and no instant's lit area exceeds the face's by more.
   void check_sun_hours(const ShadowedScene& shadowed) const {
+    if (shadowed.shard) return;  // no regions yet: merge checks the nodes as it joins them
     const std::size_t faces = shadowed.scene.faces.size();
     for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
       const SunPathHours& path = shadowed.sun_paths[p];

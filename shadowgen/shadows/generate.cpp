@@ -9,6 +9,7 @@
 #include <mutex>
 #include <new>
 #include <optional>
+#include <set>
 
 #include "clipper/clip.h"
 #include "detail/face_parts.h"
@@ -21,6 +22,7 @@
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/shadows/light_views.h"
 #include "shadowgen/shadows/sun_hours.h"
+#include "shadowgen/shadows/sun_hours_tree.h"
 
 namespace shadowgen {
 namespace {
@@ -79,81 +81,126 @@ std::string GenerationError::format(const std::string& file, const std::string& 
 
 namespace {
 
-// Instants generated before they are summed: few enough that a path's lit polygons never
-// all sit in memory, enough to keep the threads busy. A fixed number, so that the sums
-// are made in one order whatever the thread count.
-constexpr std::size_t kInstantsPerBatch = 16;
+// Lights generated before their instants are summed: few enough that a path's lit
+// polygons never all sit in memory, enough to keep the threads busy. The sums are made in
+// one order whatever the thread count.
+constexpr std::size_t kLightsPerBatch = 16;
 
 // Where each light stands in the scene's sun paths: (path, k) for instant k of a path.
 struct PathPlace {
   std::size_t path = 0, instant = 0;
 };
 
-// Sums sun paths as their instants come, face by face.
+// Sums sun paths as their instants come, face by face: each block of instants
+// (sun_hours_tree.h) added instant by instant, the blocks joined in the path's tree.
+// With a shard, only its own instants are summed, and its nodes are what it keeps.
 class PathSums {
  public:
-  PathSums(const Scene& scene, std::vector<SunPathHours>& paths, bool keep_polygons)
-      : scene_(scene), paths_(paths), place_(scene.lights.size()) {
-    hours_.resize(paths.size());
+  PathSums(const Scene& scene, std::vector<SunPathHours>& paths, bool keep_polygons,
+           const std::optional<ShardPlace>& shard)
+      : scene_(scene), paths_(paths), shard_(shard), place_(scene.lights.size()) {
+    const std::size_t faces = scene.faces.size();
+    state_.resize(paths.size());
     for (std::size_t p = 0; p < paths.size(); ++p) {
-      paths[p].lit_polygons_kept = keep_polygons;
-      const std::size_t instants = paths[p].instants.size();
-      paths[p].lit_area.assign(scene.faces.size(), std::vector<double>(instants));
-      paths[p].part_lit_area.assign(scene.faces.size(), {});
-      for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+      SunPathHours& path = paths[p];
+      path.lit_polygons_kept = keep_polygons;
+      const std::size_t instants = path.instants.size();
+      const IndexRun own = shard ? shard_instants(instants, *shard) : IndexRun{0, instants};
+      if (shard) {
+        path.shard_first = own.first;
+        path.shard_last = own.last;
+      }
+      const std::size_t count = own.last - own.first;
+      path.lit_area.assign(faces, std::vector<double>(count));
+      path.part_lit_area.assign(faces, {});
+      for (std::size_t f = 0; f < faces; ++f) {
         const std::size_t face_parts = scene.faces[f].parts.size();
-        if (face_parts > 1) {
-          paths[p].part_lit_area[f].assign(face_parts, std::vector<double>(instants));
-        }
+        if (face_parts > 1) path.part_lit_area[f].assign(face_parts, std::vector<double>(count));
       }
-      hours_[p].resize(scene.faces.size());
-      for (std::size_t k = 0; k < paths[p].instants.size(); ++k) {
-        place_[paths[p].instants[k]] = PathPlace{p, k};
+      state_[p].first = own.first;
+      state_[p].last = own.last;
+      state_[p].block.resize(faces);
+      state_[p].nodes.resize(faces);
+      for (std::size_t k = own.first; k < own.last; ++k) {
+        place_[path.instants[k]] = PathPlace{p, k};
       }
+      for (std::size_t k = 0; k < instants; ++k) in_any_path_.insert(path.instants[k]);
     }
   }
 
-  bool in_path(std::size_t light) const { return place_[light].has_value(); }
+  // Whether light `light` is an instant of some path (this shard's or not).
+  bool in_path(std::size_t light) const { return in_any_path_.count(light) > 0; }
+  // Whether light `light` is an instant this run sums.
+  bool summed_here(std::size_t light) const { return place_[light].has_value(); }
 
-  // Adds lights [first, last)'s lit polygons, lit[l - first][face], to their paths, in
-  // light order, each face on its own.
-  void add(std::size_t first, std::size_t last,
+  // Adds the lit polygons of lights `batch`, lit[i][face] for light batch[i], to their
+  // paths, in light order, each face on its own.
+  void add(const std::vector<std::size_t>& batch,
            const std::vector<std::vector<std::vector<LitPolygon>>>& lit) {
     hsr::for_each_in_parallel(scene_.faces.size(), [&](std::size_t f) {
-      for (std::size_t l = first; l < last; ++l) {
+      for (std::size_t i = 0; i < batch.size(); ++i) {
+        const std::size_t l = batch[i];
         if (!place_[l]) continue;
         const std::size_t p = place_[l]->path, k = place_[l]->instant;
-        const std::vector<LitPolygon>& polygons = lit[l - first][f];
-        paths_[p].lit_area[f][k] = lit_area(polygons);
+        PathState& state = state_[p];
+        const std::vector<LitPolygon>& polygons = lit[i][f];
+        const std::size_t own = k - state.first;
+        paths_[p].lit_area[f][own] = lit_area(polygons);
         if (!paths_[p].part_lit_area[f].empty()) {
           for (const LitPolygon& lit_polygon : polygons) {
-            paths_[p].part_lit_area[f].at(lit_polygon.part)[k] += hsr::area(lit_polygon.polygon);
+            paths_[p].part_lit_area[f].at(lit_polygon.part)[own] += hsr::area(lit_polygon.polygon);
           }
         }
-        if (polygons.empty()) continue;
         named(f, p, [&] {
-          std::optional<FaceSunHours>& hours = hours_[p][f];
-          if (!hours) hours.emplace(scene_.faces[f]);
-          hours->add(polygons);
+          std::optional<FaceSunHours>& block = state.block[f];
+          if (!polygons.empty()) {
+            if (!block) block.emplace(scene_.faces[f]);
+            block->add(polygons);
+          }
+          if ((k + 1) % kInstantsPerBlock == 0 || k + 1 == state.last) {
+            state.nodes[f].push(k / kInstantsPerBlock, std::move(block));
+            block.reset();
+          }
         });
       }
     });
   }
 
-  // Every path's regions, once all its instants are added.
+  // Every path's regions (or, in a shard, its nodes), once all its instants are added.
   void finish() {
     for (std::size_t p = 0; p < paths_.size(); ++p) {
-      paths_[p].regions.resize(scene_.faces.size());
-      hsr::for_each_in_parallel(scene_.faces.size(), [&](std::size_t f) {
-        std::optional<FaceSunHours>& hours = hours_[p][f];
+      SunPathHours& path = paths_[p];
+      const std::size_t faces = scene_.faces.size();
+      if (shard_) {
+        path.nodes.resize(faces);
+      } else {
+        path.regions.resize(faces);
+      }
+      hsr::for_each_in_parallel(faces, [&](std::size_t f) {
+        std::vector<SumsNode> nodes = state_[p].nodes[f].take();
+        if (shard_) {
+          for (SumsNode& node : nodes) {
+            path.nodes[f].push_back(
+                {node.first_block, node.level, node.sums ? node.sums->pieces() : SunHoursPieces{}});
+          }
+          return;
+        }
+        std::optional<FaceSunHours> hours;
+        named(f, p,
+              [&] { hours = join_nodes(std::move(nodes), block_count(path.instants.size())); });
         if (!hours) hours.emplace(scene_.faces[f]);  // lit at no instant
-        paths_[p].regions[f] = hours->regions(paths_[p].step_min);
-        hours.reset();
+        path.regions[f] = hours->regions(path.step_min);
       });
     }
   }
 
  private:
+  struct PathState {
+    std::size_t first = 0, last = 0;                 // the instants summed here
+    std::vector<std::optional<FaceSunHours>> block;  // [face]: the block being summed
+    std::vector<SunHoursNodes> nodes;                // [face]
+  };
+
   // Work on face f's sums of path p, a failure named by the face and the path.
   template <class Work>
   void named(std::size_t f, std::size_t p, Work&& work) const {
@@ -167,8 +214,10 @@ class PathSums {
 
   const Scene& scene_;
   std::vector<SunPathHours>& paths_;
+  std::optional<ShardPlace> shard_;
   std::vector<std::optional<PathPlace>> place_;
-  std::vector<std::vector<std::optional<FaceSunHours>>> hours_;  // [path][face]
+  std::set<std::size_t> in_any_path_;
+  std::vector<PathState> state_;  // [path]
 };
 
 }  // namespace
@@ -176,12 +225,24 @@ class PathSums {
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options) {
   GenerateResult result;
   result.shadowed.scene = scene;
+  result.shadowed.shard = options.shard;
   const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
   result.shadowed.lit.assign(faces, std::vector<std::vector<LitPolygon>>(lights));
   result.stats.resize(lights);
   result.shadowed.sun_paths = sun_paths_of(scene);
-  PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons);
-  if (lights == 0) return result;
+  PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons, options.shard);
+  // The lights this run works out: in a shard, its own instants, and the lights that are
+  // no instant in shard 0 alone.
+  std::vector<std::size_t> todo;
+  for (std::size_t l = 0; l < lights; ++l) {
+    const bool wanted =
+        sums.in_path(l) ? sums.summed_here(l) : !options.shard || options.shard->index == 0;
+    if (wanted) todo.push_back(l);
+  }
+  if (todo.empty()) {
+    sums.finish();
+    return result;
+  }
 
   const detail::FaceParts parts = detail::flatten(scene);
   std::mutex report_mutex;
@@ -191,14 +252,16 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
   // go in batches, each summed before the next starts.
   const int threads =
       options.threads ? static_cast<int>(options.threads) : tbb::info::default_concurrency();
-  const std::size_t batch = result.shadowed.sun_paths.empty() ? lights : kInstantsPerBatch;
+  const std::size_t batch_size = result.shadowed.sun_paths.empty() ? todo.size() : kLightsPerBatch;
   tbb::task_arena arena(threads);
   arena.execute([&] {
-    for (std::size_t first = 0; first < lights; first += batch) {
-      const std::size_t last = std::min(lights, first + batch);
-      std::vector<std::vector<std::vector<LitPolygon>>> per_light(last - first);
-      hsr::for_each_in_parallel(last - first, [&](std::size_t i) {
-        const std::size_t l = first + i;
+    for (std::size_t first = 0; first < todo.size(); first += batch_size) {
+      const std::vector<std::size_t> batch(
+          todo.begin() + static_cast<std::ptrdiff_t>(first),
+          todo.begin() + static_cast<std::ptrdiff_t>(std::min(todo.size(), first + batch_size)));
+      std::vector<std::vector<std::vector<LitPolygon>>> per_light(batch.size());
+      hsr::for_each_in_parallel(batch.size(), [&](std::size_t i) {
+        const std::size_t l = batch[i];
         const auto start = std::chrono::steady_clock::now();
         per_light[i] = light_one_named(scene, parts, l, options, result.stats[l]);
         result.stats[l].seconds =
@@ -208,12 +271,12 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
           options.on_light_done(l, result.stats[l]);
         }
       });
-      sums.add(first, last, per_light);
-      for (std::size_t l = first; l < last; ++l) {
+      sums.add(batch, per_light);
+      for (std::size_t i = 0; i < batch.size(); ++i) {
+        const std::size_t l = batch[i];
         if (sums.in_path(l) && !options.keep_instant_polygons) continue;
-        for (std::size_t f = 0; f < faces; ++f) {
-          result.shadowed.lit[f][l] = std::move(per_light[l - first][f]);
-        }
+        for (std::size_t f = 0; f < faces; ++f)
+          result.shadowed.lit[f][l] = std::move(per_light[i][f]);
       }
     }
     sums.finish();

@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -59,6 +60,11 @@ struct GenerateOptions {
   // instants' lit polygons are then dropped, only their lit areas kept, unless this is
   // set: then each instant keeps its lit polygons as any light does.
   bool keep_instant_polygons = false;
+  // Only shard `index` of `count` of every sun path (ShadowedScene::shard; sun_hours_tree.h
+  // says which instants are its own): the paths keep their tree nodes, not regions, and
+  // the lights that are no instant are lit in shard 0 alone. Not with
+  // keep_instant_polygons.
+  std::optional<ShardPlace> shard;
   // Called after each light is done (from the worker that finished it); for progress.
   std::function<void(std::size_t light, const LightStats&)> on_light_done;
 };

@@ -1,9 +1,11 @@
 #include "shadowgen/shadows/sun_hours.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/vec3.hpp>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -69,6 +71,31 @@ bool overlaps_any(const clipper::Box2& box, const std::vector<clipper::Box2>& bo
                      [&box](const clipper::Box2& b) { return b.overlaps(box); });
 }
 
+// Appends the parts of `pieces` outside a region of the chart to `outside`, those inside
+// to `inside`. The region is `clips` (boxes `clip_boxes`), `outside_boxes` bound the rest
+// of the part: a piece whose box meets no clip's box is outside whole, one whose box meets
+// none of the rest's inside whole, and only the others are clipped (all in one clip).
+void split_pieces(clipper::PolygonSet2 pieces, const clipper::PolygonSet2& clips,
+                  const std::vector<clipper::Box2>& clip_boxes,
+                  const std::vector<clipper::Box2>& outside_boxes, clipper::PolygonSet2& outside,
+                  clipper::PolygonSet2& inside) {
+  clipper::PolygonSet2 split;
+  for (clipper::PolygonWithHoles2& piece : pieces) {
+    const clipper::Box2 box = clipper::box_of(piece);
+    if (!overlaps_any(box, clip_boxes)) {
+      outside.push_back(std::move(piece));
+    } else if (!overlaps_any(box, outside_boxes)) {
+      inside.push_back(std::move(piece));
+    } else {
+      split.push_back(std::move(piece));
+    }
+  }
+  if (split.empty()) return;
+  clipper::ClipResult r = clipper::clip(split, clips);
+  for (auto& p : r.outside) outside.push_back(std::move(p));
+  for (auto& p : r.inside) inside.push_back(std::move(p));
+}
+
 }  // namespace
 
 void FaceSunHours::add(std::span<const LitPolygon> lit) {
@@ -85,48 +112,129 @@ void FaceSunHours::add(std::span<const LitPolygon> lit) {
     clipper::PolygonSet2 clips;
     for (const hsr::Polygon3* q : on_part) clips.push_back(part.chart.flatten(*q));
     // The part in shadow, so that pieces wholly lit are known by their boxes alone.
-    const clipper::PolygonSet2 shadow = clipper::difference(part.whole, clips);
-    const std::vector<clipper::Box2> lit_boxes = boxes_of(clips);
-    const std::vector<clipper::Box2> shadow_boxes = boxes_of(shadow);
+    split_one_up(part, clips, boxes_of(clipper::difference(part.whole, clips)));
+  }
+}
 
-    // A piece that no lit polygon's box overlaps stays; one that no shadowed polygon's box
-    // overlaps goes one up; the others, along the lit region's boundary, are split with
-    // one clip per count. Over a sun path most pieces are far from an instant's shadow
-    // edges, so the work per instant follows those edges, not the pieces.
-    std::vector<CountPieces> next;
-    const auto to = [&next](std::size_t count) -> clipper::PolygonSet2& {
-      if (next.empty() || next.back().count != count) next.push_back({count, {}});
-      return next.back().pieces;
-    };
-    clipper::PolygonSet2 carried;  // pieces of the count below that went one up
-    for (std::size_t i = 0; i < part.by_count.size(); ++i) {
-      CountPieces& c = part.by_count[i];
-      clipper::PolygonSet2 stay = std::move(carried), up, split;
-      carried.clear();
-      for (clipper::PolygonWithHoles2& piece : c.pieces) {
-        const clipper::Box2 box = clipper::box_of(piece);
-        if (!overlaps_any(box, lit_boxes)) {
-          stay.push_back(std::move(piece));
-        } else if (!overlaps_any(box, shadow_boxes)) {
-          up.push_back(std::move(piece));
-        } else {
-          split.push_back(std::move(piece));
-        }
+void FaceSunHours::split_one_up(Part& part, const clipper::PolygonSet2& clips,
+                                const std::vector<clipper::Box2>& outside_boxes) {
+  const std::vector<clipper::Box2> clip_boxes = boxes_of(clips);
+  // A piece that no lit polygon's box overlaps stays; one that no shadowed polygon's box
+  // overlaps goes one up; the others, along the lit region's boundary, are split with
+  // one clip per count. Over a sun path most pieces are far from an instant's shadow
+  // edges, so the work per instant follows those edges, not the pieces.
+  std::vector<CountPieces> next;
+  const auto to = [&next](std::size_t count) -> clipper::PolygonSet2& {
+    if (next.empty() || next.back().count != count) next.push_back({count, {}});
+    return next.back().pieces;
+  };
+  clipper::PolygonSet2 carried;  // pieces of the count below that went one up
+  for (std::size_t i = 0; i < part.by_count.size(); ++i) {
+    CountPieces& c = part.by_count[i];
+    clipper::PolygonSet2 stay = std::move(carried), up;
+    carried.clear();
+    split_pieces(std::move(c.pieces), clips, clip_boxes, outside_boxes, stay, up);
+    if (!stay.empty()) to(c.count) = std::move(stay);
+    const bool gap = i + 1 == part.by_count.size() || part.by_count[i + 1].count != c.count + 1;
+    if (gap && !up.empty()) {
+      to(c.count + 1) = std::move(up);
+    } else {
+      carried = std::move(up);  // joins the next count's pieces that stay
+    }
+  }
+  part.by_count = std::move(next);
+}
+
+void FaceSunHours::absorb(const FaceSunHours& later) {
+  auto other = later.parts_.begin();
+  for (Part& part : parts_) {
+    while (other != later.parts_.end() && other->index < part.index) ++other;
+    if (other == later.parts_.end()) break;
+    if (other->index != part.index) continue;  // lit at none of later's instants
+    const std::vector<CountPieces>& classes = other->by_count;
+    // later's counts tile the part. Each piece here takes the count of the one it lies in:
+    // one count after another, the pieces inside its region are split off and go up by it;
+    // the pieces left over after all but one (the count 0, or else the highest) take that
+    // one, slivers that rounding left between the regions included.
+    std::size_t rest = classes.size() - 1;
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+      if (classes[i].count == 0) rest = i;
+    }
+    std::vector<CountPieces> left = std::move(part.by_count), done;
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+      if (i == rest) continue;
+      std::vector<clipper::Box2> region_boxes = boxes_of(classes[i].pieces), outside_boxes;
+      for (std::size_t j = 0; j < classes.size(); ++j) {
+        if (j == i) continue;
+        const std::vector<clipper::Box2> boxes = boxes_of(classes[j].pieces);
+        outside_boxes.insert(outside_boxes.end(), boxes.begin(), boxes.end());
       }
-      if (!split.empty()) {
-        clipper::ClipResult r = clipper::clip(split, clips);
-        for (auto& p : r.outside) stay.push_back(std::move(p));
-        for (auto& p : r.inside) up.push_back(std::move(p));
-      }
-      if (!stay.empty()) to(c.count) = std::move(stay);
-      const bool gap = i + 1 == part.by_count.size() || part.by_count[i + 1].count != c.count + 1;
-      if (gap && !up.empty()) {
-        to(c.count + 1) = std::move(up);
-      } else {
-        carried = std::move(up);  // joins the next count's pieces that stay
+      for (CountPieces& c : left) {
+        clipper::PolygonSet2 stay, in;
+        split_pieces(std::move(c.pieces), classes[i].pieces, region_boxes, outside_boxes, stay, in);
+        if (!in.empty()) done.push_back({c.count + classes[i].count, std::move(in)});
+        c.pieces = std::move(stay);
       }
     }
-    part.by_count = std::move(next);
+    for (CountPieces& c : left) {
+      if (!c.pieces.empty()) done.push_back({c.count + classes[rest].count, std::move(c.pieces)});
+    }
+    // Back to one entry per count, in increasing counts; pieces in the order they came.
+    std::stable_sort(done.begin(), done.end(),
+                     [](const CountPieces& a, const CountPieces& b) { return a.count < b.count; });
+    for (CountPieces& c : done) {
+      if (!part.by_count.empty() && part.by_count.back().count == c.count) {
+        clipper::PolygonSet2& pieces = part.by_count.back().pieces;
+        for (auto& p : c.pieces) pieces.push_back(std::move(p));
+      } else {
+        part.by_count.push_back(std::move(c));
+      }
+    }
+  }
+}
+
+SunHoursPieces FaceSunHours::pieces() const {
+  SunHoursPieces result;
+  for (const Part& part : parts_) {
+    SunHoursPieces::Part out{part.index, {}};
+    for (const CountPieces& c : part.by_count) out.counts.push_back({c.count, c.pieces});
+    result.parts.push_back(std::move(out));
+  }
+  return result;
+}
+
+FaceSunHours::FaceSunHours(const Face& face, const SunHoursPieces& pieces) : FaceSunHours(face) {
+  const auto fail = [&face](const std::string& what) {
+    throw std::invalid_argument("face '" + face.id + "': sun-hours pieces: " + what);
+  };
+  if (pieces.parts.size() != parts_.size()) {
+    fail(std::to_string(pieces.parts.size()) + " parts, the face has " +
+         std::to_string(parts_.size()) + " with area");
+  }
+  for (std::size_t k = 0; k < parts_.size(); ++k) {
+    const SunHoursPieces::Part& given = pieces.parts[k];
+    if (given.part != parts_[k].index) {
+      fail("part " + std::to_string(given.part) + " where part " + std::to_string(parts_[k].index) +
+           " was expected");
+    }
+    if (given.counts.empty()) fail("part " + std::to_string(given.part) + " has no pieces");
+    std::vector<CountPieces> by_count;
+    for (const SunHoursPieces::Count& c : given.counts) {
+      if (!by_count.empty() && c.count <= by_count.back().count) fail("counts not increasing");
+      if (c.pieces.empty()) fail("a count with no pieces");
+      for (const clipper::PolygonWithHoles2& piece : c.pieces) {
+        const auto check = [&fail](const clipper::Loop2& loop) {
+          if (loop.size() < 3) fail("a loop of fewer than three vertices");
+          for (const clipper::Point2& p : loop) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail("a coordinate not finite");
+          }
+        };
+        check(piece.outer);
+        for (const clipper::Loop2& hole : piece.holes) check(hole);
+      }
+      by_count.push_back({c.count, c.pieces});
+    }
+    parts_[k].by_count = std::move(by_count);
   }
 }
 

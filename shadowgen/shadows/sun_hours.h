@@ -22,11 +22,14 @@
 //
 // The instants must be added in one order (the path's) for the same regions bit for bit:
 // the pieces are the same sets whatever the order, but their rounded crossings are not.
+// A path's instants are summed in blocks, and the blocks' sums joined (absorb) in a fixed
+// tree (sun_hours_tree.h), so that shards of a path join into the very same sums.
 
 #include <cstddef>
 #include <span>
 #include <vector>
 
+#include "clipper/box.h"
 #include "clipper/polygon.h"
 #include "hsr/plane_chart.h"
 #include "shadowgen/model/scene.h"
@@ -40,9 +43,22 @@ class FaceSunHours {
   // The face lit at no instant yet. Parts without area get no regions.
   explicit FaceSunHours(const Face& face);
 
+  // The sums `pieces` hold (pieces() of a FaceSunHours of the same face). Throws
+  // std::invalid_argument where they do not fit the face: parts it does not have or that
+  // have no area, counts not increasing, loops of fewer than three vertices or with
+  // coordinates that are not finite.
+  FaceSunHours(const Face& face, const SunHoursPieces& pieces);
+
   // Counts one more instant: lit polygons of the face at it, each on the part it names.
   // Throws clipper::SnapRoundingError where a clip's snapping does not settle.
   void add(std::span<const LitPolygon> lit);
+
+  // Counts the instants `later` counted (sums of the same face over other instants): each
+  // piece goes up by the count of the piece of `later` it lies in. Throws as add() does.
+  void absorb(const FaceSunHours& later);
+
+  // The sums as they stand, for a shard's database.
+  SunHoursPieces pieces() const;
 
   // The regions with hours = count × step_min / 60, in increasing hours, none empty.
   std::vector<SunHoursRegion> regions(int step_min) const;
@@ -59,6 +75,11 @@ class FaceSunHours {
     clipper::PolygonSet2 whole;         // the part in its chart
     std::vector<CountPieces> by_count;  // increasing counts, none empty; not merged
   };
+
+  // Splits `part`'s pieces by a region of its chart (`clips`): pieces inside go one up.
+  // `outside_boxes` bound the rest of the part, the region's complement.
+  static void split_one_up(Part& part, const clipper::PolygonSet2& clips,
+                           const std::vector<clipper::Box2>& outside_boxes);
 
   std::vector<Part> parts_;
 };

@@ -1,0 +1,27 @@
+#pragma once
+
+// Joining the shards of a sun-path run (generate --instants K/N) into the shadowed database
+// one run of the whole scene makes, byte for byte once written: the lights that are no
+// instant come from shard 1, each path's lit areas are the shards' in order, and its sums
+// are the shards' tree nodes joined as one run joins them (shadows/sun_hours_tree.h).
+
+#include <string>
+#include <vector>
+
+#include "shadowgen/model/shadowed_scene.h"
+
+namespace shadowgen {
+
+struct ShardFile {
+  std::string file;        // names it in messages
+  ShadowedScene shadowed;  // as read: ShadowedScene::shard set
+};
+
+// Throws InputError naming the file (and the face, where one is to blame) where the
+// shards are not every shard of one run once: a database that is no shard, shards of
+// another count or another scene (faces, lights, views, sun paths), a shard missing or
+// given twice, or sums that do not fit their face. Throws GenerationError (no file) where
+// joining a face's sums does not settle, as generate would.
+ShadowedScene merge_shards(std::vector<ShardFile> shards);
+
+}  // namespace shadowgen
