@@ -13,7 +13,7 @@ This script writes the seeds it can make on its own, named <kind>-<what>:
     under the clip and a sun straight above, shadows asked for;
   - small meshes of every format, well formed or not (ASCII and binary STL and PLY);
   - databases: a few written here, and, with --shadowgen BIN, the database BIN generates
-    from examples/scenes/courtyard.json.
+    from examples/scenes/courtyard.json and shards 1 of 1 and 2 of 2 of a small sun path.
 The seeds named <kind>-test-* and <kind>-cli-* hold the malformed inputs of the tables in
 tests/shadowgen/scene/scene_reader_test.cpp and tests/cli/malformed_cli_test.cpp (each
 scene with the mesh file it names attached); they were dumped from those tables once and
@@ -355,6 +355,31 @@ def database_from_cli(shadowgen):
         return seed(DATABASE, target.read_bytes())
 
 
+# A post on a patio at Greenwich, 21 March 10:00 to 14:00 every 10 minutes (25 instants,
+# two blocks of the path's tree): small enough that its shards stay seeds of a few KiB.
+SHARD_SCENE = """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "patio", "outer": [[0,0,0],[4,0,0],[4,4,0],[0,4,0]]},
+              {"id": "post", "outer": [[1,2,0],[2,2,0],[2,2,2],[1,2,2]]}],
+ "site": {"latitude_deg": 51.4779, "longitude_deg": -0.0015, "utc_offset_h": 0},
+ "lights": [{"id": "noon", "type": "sun", "from": "2026-03-21T10:00", "to": "2026-03-21T14:00",
+             "step_min": 10}]}
+"""
+
+
+def shards_from_cli(shadowgen):
+    out = {}
+    with tempfile.TemporaryDirectory() as work:
+        scene = pathlib.Path(work) / "patio.json"
+        scene.write_text(SHARD_SCENE)
+        for share in ("1/1", "2/2"):
+            target = pathlib.Path(work) / "shard.json"
+            subprocess.run([str(pathlib.Path(shadowgen).resolve()), "generate", str(scene),
+                            "-o", str(target), "--instants", share, "--quiet"], check=True)
+            name = "database-shard-" + share.replace("/", "-of-")
+            out[name] = seed(DATABASE, target.read_bytes())
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--check", action="store_true")
@@ -369,6 +394,7 @@ def main():
         return 1 if stale else 0
     if args.shadowgen:
         wanted["database-example-courtyard"] = database_from_cli(args.shadowgen)
+        wanted.update(shards_from_cli(args.shadowgen))
     CORPUS.mkdir(parents=True, exist_ok=True)
     for name, data in wanted.items():
         (CORPUS / name).write_bytes(data)

@@ -35,6 +35,11 @@
 //                       numbers are all finite, report_csv() and report_table() hold no
 //                       "inf" or "nan" token (not checked when an id holds one), and none
 //                       throws anything but an InputError;
+//   merge               a database that is shard 1 of 1 (generate --instants 1/1) merges
+//                       alone (merge_shards) or throws InputError or GenerationError;
+//                       what it makes goes through database-json, database-roundtrip
+//                       and report (reports are not asked of a shard: they take whole
+//                       databases);
 //   generate            when the header asks for it, for a tiny scene (kTinyFaces faces,
 //                       kTinyLights lights, kTinyVertices vertices at most),
 //                       generate_shadows() throws nothing and its lit details are finite;
@@ -67,6 +72,7 @@
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/output/database.h"
 #include "shadowgen/output/report.h"
+#include "shadowgen/pipeline/merge_shards.h"
 #include "shadowgen/scene/database_reader.h"
 #include "shadowgen/scene/scene_reader.h"
 #include "shadowgen/shadows/generate.h"
@@ -509,7 +515,30 @@ class ReaderCase {
         }
       }
     }
+    // Reports take a whole database: load_shadowed refuses a shard before any report.
+    if (shadowed.shard) {
+      if (enabled("merge", kind_)) check_merge(shadowed, what);
+      return;
+    }
     if (enabled("report", kind_)) check_report(shadowed, what);
+  }
+
+  // A shard 1 of 1 is a whole run's shards: merge_shards joins it or refuses it with an
+  // InputError (or, where joining does not settle, a GenerationError), and what it makes
+  // goes through the other invariants.
+  void check_merge(const ShadowedScene& shadowed, const std::string& what) {
+    if (shadowed.shard->count != 1) return;
+    ShadowedScene merged;
+    try {
+      merged = merge_shards({{"shard.json", shadowed}});
+    } catch (const InputError&) {
+      return;
+    } catch (const GenerationError&) {
+      return;
+    } catch (const std::exception& e) {
+      violation("merge", "merge_shards(" + what + ") threw a non-InputError: " + e.what());
+    }
+    check_outputs(merged, "the merge of " + what);
   }
 
   void check_report(const ShadowedScene& shadowed, const std::string& what) {

@@ -1,0 +1,162 @@
+// End-to-end tests of sun paths cut into shards: `generate --instants K/N` writes shard K
+// of N, `merge` joins the N shards into the very file one `generate` writes; the other
+// commands refuse a shard, and every way of getting the shards wrong exits with one
+// message and leaves no file.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_harness.h"
+
+namespace shadowgen::test {
+namespace {
+
+// A yard north of a 4 m wall at Greenwich over 21 March 2026 every 10 minutes (72
+// instants with the sun up: 5 blocks of 16), and a lamp that is no instant of it.
+const std::string kYard = R"({
+  "format": "shadowgen-scene/1",
+  "polygons": [
+    {"id": "yard", "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
+    {"id": "wall", "outer": [[0,-0.5,0],[10,-0.5,0],[10,-0.5,4],[0,-0.5,4]]},
+    {"id": "post", "outer": [[4,4,0],[5,4,0],[5,4,2],[4,4,2]]}
+  ],
+  "site": {"latitude_deg": 51.4779, "longitude_deg": -0.0015, "utc_offset_h": 0},
+  "lights": [{"id": "march21", "type": "sun", "from": "2026-03-21T00:00",
+              "to": "2026-03-21T23:59", "step_min": 10},
+             {"id": "lamp", "type": "point", "position": [5, 8, 3]}]
+})";
+
+class ShardCli : public CliFolderTest<> {
+ protected:
+  ShardCli() : CliFolderTest("shadowgen-shard") {}
+
+  // Writes shard k of n of `scene` to dir_/shard-k.json; its path.
+  fs::path shard(const fs::path& scene, int k, int n, const std::string& threads = "1") {
+    const fs::path out = dir_ / ("shard-" + std::to_string(k) + ".json");
+    const Outcome o = run({"generate", scene.string(), "-o", out.string(), "--instants",
+                           std::to_string(k) + "/" + std::to_string(n), "--threads", threads});
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(o.err, "");
+    return out;
+  }
+};
+
+TEST_F(ShardCli, MergedShardsAreTheFileOneGenerateWrites) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path whole = dir_ / "whole.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", whole.string()}).code, 0);
+  for (const int n : {2, 3, 6}) {  // 6 shards of 5 blocks: one holds no instant
+    std::vector<std::string> args = {"merge"};
+    for (int k = n; k >= 1; --k) {
+      args.push_back(shard(scene, k, n, k % 2 == 0 ? "2" : "1").string());
+    }
+    const fs::path merged = dir_ / "merged.json";
+    args.insert(args.end(), {"-o", merged.string()});
+    const Outcome o = run(args);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(o.err, "");
+    EXPECT_EQ(contents(merged), contents(whole)) << n << " shards";
+    // And the report of the merged file is the report of the scene.
+    EXPECT_EQ(run({"report", merged.string(), "--format", "sun-hours"}).out,
+              run({"report", scene.string(), "--format", "sun-hours"}).out);
+  }
+}
+
+TEST_F(ShardCli, ABadShareIsAUsageError) {
+  const fs::path scene = write("yard.json", kYard);
+  for (const char* share : {"0/3", "4/3", "1/0", "3", "a/b", "1/2/3", "-1/2", "1/2000000"}) {
+    const Outcome o =
+        run({"generate", scene.string(), "-o", (dir_ / "s.json").string(), "--instants", share});
+    EXPECT_EQ(o.code, 2) << share;
+    EXPECT_NE(o.err.find("--instants " + std::string(share) +
+                         ": expected K/N, shard K of N, 1 <= K <= N <= 1000000"),
+              std::string::npos)
+        << o.err;
+  }
+  const Outcome kept = run({"generate", scene.string(), "-o", (dir_ / "s.json").string(),
+                            "--instants", "1/2", "--keep-instants"});
+  EXPECT_EQ(kept.code, 2);
+  EXPECT_EQ(files(), std::vector<std::string>{"yard.json"});
+}
+
+TEST_F(ShardCli, ASceneWithoutASunPathHasNothingToShare) {
+  const fs::path scene = write("lamp.json", R"({"format": "shadowgen-scene/1",
+      "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+      "lights": [{"id": "lamp", "type": "point", "position": [0, 0, 3]}]})");
+  const Outcome o =
+      run({"generate", scene.string(), "-o", (dir_ / "s.json").string(), "--instants", "1/2"});
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.err, "shadowgen: " + scene.string() +
+                       ": --instants shares out the instants of sun paths, and the scene has no "
+                       "sun path (a `sun` light with from, to and step_min)\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"lamp.json"});
+}
+
+TEST_F(ShardCli, OnlyMergeReadsAShard) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path one = shard(scene, 1, 2);
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{"report", one.string()},
+        {"report", one.string(), "--format", "sun-hours"},
+        {"export", one.string(), "--obj", (dir_ / "x.obj").string()},
+        {"render", one.string(), "--eye", "5,-20,10", "--target", "5,5,0", "--svg",
+         (dir_ / "x.svg").string()}}) {
+    const Outcome o = run(command);
+    EXPECT_EQ(o.code, 1) << command[0];
+    EXPECT_EQ(o.err, "shadowgen: " + one.string() +
+                         ": is shard 1 of 2 of a sun-path run (generate --instants K/N), not a "
+                         "whole shadowed database: join every shard with shadowgen merge first\n")
+        << command[0];
+  }
+  EXPECT_EQ(files(), std::vector<std::string>({"shard-1.json", "yard.json"}));
+}
+
+TEST_F(ShardCli, MergeRefusesShardsThatAreNotOneWholeRun) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path one = shard(scene, 1, 3), two = shard(scene, 2, 3), three = shard(scene, 3, 3);
+  const fs::path out = dir_ / "merged.json";
+
+  const Outcome missing = run({"merge", one.string(), three.string(), "-o", out.string()});
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_EQ(missing.err, "shadowgen: " + one.string() +
+                             ": shards 2 of 3 are missing: merge needs every shard of the run\n");
+
+  const Outcome twice =
+      run({"merge", one.string(), two.string(), two.string(), three.string(), "-o", out.string()});
+  EXPECT_EQ(twice.code, 1);
+  EXPECT_EQ(twice.err,
+            "shadowgen: " + two.string() + ": is shard 2 of 3, as " + two.string() + " is\n");
+
+  const Outcome scene_given = run({"merge", scene.string(), one.string(), "-o", out.string()});
+  EXPECT_EQ(scene_given.code, 1);
+  EXPECT_NE(scene_given.err.find("shadowgen: " + scene.string() + ": \"format\" is "),
+            std::string::npos)
+      << scene_given.err;
+
+  const Outcome onto_input =
+      run({"merge", one.string(), two.string(), three.string(), "-o", three.string()});
+  EXPECT_EQ(onto_input.code, 2);
+
+  // A shard whose first node does not start its run of blocks (blocks 1 and 2 of 0 to 4).
+  std::string text = contents(two);
+  const std::string key = "\"block\": 1,";
+  ASSERT_NE(text.find(key), std::string::npos);
+  text.replace(text.find(key), key.size(), "\"block\": 2,");
+  write("shard-2.json", text);
+  const Outcome moved =
+      run({"merge", one.string(), two.string(), three.string(), "-o", out.string()});
+  EXPECT_EQ(moved.code, 1);
+  EXPECT_NE(moved.err.find("shadowgen: " + two.string() + ": face 'yard': "), std::string::npos)
+      << moved.err;
+  EXPECT_NE(moved.err.find("expected the tree's node that starts at block 1 of the shard's "
+                           "blocks 1 to 3"),
+            std::string::npos)
+      << moved.err;
+  EXPECT_EQ(files(), std::vector<std::string>(
+                         {"shard-1.json", "shard-2.json", "shard-3.json", "yard.json"}));
+}
+
+}  // namespace
+}  // namespace shadowgen::test
