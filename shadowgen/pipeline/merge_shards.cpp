@@ -10,6 +10,7 @@
 #include "hsr/parallel.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/database.h"
+#include "shadowgen/scene/database_reader.h"
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/shadows/sun_hours.h"
 #include "shadowgen/shadows/sun_hours_tree.h"
@@ -150,6 +151,15 @@ ShadowedScene merge_shards(std::vector<ShardFile> given) {
     for (std::optional<InputError>& error : bad) {
       if (error) throw *error;
     }
+  }
+  // The joined sums get the checks any database read gets (regions on their faces, tiling
+  // them, agreeing with the lit areas): a shard edited by hand fails them here, before a
+  // file is written, not in whichever command reads the file next.
+  try {
+    parse_database(database_json(merged), shards.front().file);
+  } catch (const InputError& e) {
+    throw InputError(shards.front().file, e.face_id(),
+                     "the shards joined do not make a valid database: " + e.problem());
   }
   return merged;
 }

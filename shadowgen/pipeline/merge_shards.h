@@ -20,7 +20,8 @@ struct ShardFile {
 // Throws InputError naming the file (and the face, where one is to blame) where the
 // shards are not every shard of one run once: a database that is no shard, shards of
 // another count or another scene (faces, lights, views, sun paths), a shard missing or
-// given twice, or sums that do not fit their face. Throws GenerationError (no file) where
+// given twice, sums that do not fit their face, or a result that fails the checks of
+// a database read (shadowgen/scene/database_reader.h). Throws GenerationError (no file) where
 // joining a face's sums does not settle, as generate would.
 ShadowedScene merge_shards(std::vector<ShardFile> shards);
 

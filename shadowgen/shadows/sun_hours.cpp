@@ -14,6 +14,7 @@
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
 #include "hsr/area.h"
+#include "hsr/spatial_grid.h"
 
 namespace shadowgen {
 
@@ -152,40 +153,77 @@ void FaceSunHours::absorb(const FaceSunHours& later) {
     if (other == later.parts_.end()) break;
     if (other->index != part.index) continue;  // lit at none of later's instants
     const std::vector<CountPieces>& classes = other->by_count;
-    // later's counts tile the part. Each piece here takes the count of the one it lies in:
-    // one count after another, the pieces inside its region are split off and go up by it;
-    // the pieces left over after all but one (the count 0, or else the highest) take that
-    // one, slivers that rounding left between the regions included.
-    std::size_t rest = classes.size() - 1;
-    for (std::size_t i = 0; i < classes.size(); ++i) {
-      if (classes[i].count == 0) rest = i;
+    if (classes.size() == 1) {  // one count over the whole part: every piece goes up by it
+      for (CountPieces& c : part.by_count) c.count += classes[0].count;
+      continue;
     }
-    std::vector<CountPieces> left = std::move(part.by_count), done;
+    // later's pieces tile the part, each with its count. A piece here whose box meets the
+    // boxes of later's pieces of one count alone lies in that count's region (every point
+    // of it is in some piece of later's, whose box holds the point); the others are split
+    // by the few pieces of later's that their boxes meet, one count after another, and
+    // what is left takes the last count (the count 0 where it is one of them), slivers
+    // that rounding left between later's pieces included.
+    struct Later {
+      const clipper::PolygonWithHoles2* piece;
+      std::size_t count_index;
+      clipper::Box2 box;
+    };
+    std::vector<Later> pieces;
+    clipper::Box2 extent;
     for (std::size_t i = 0; i < classes.size(); ++i) {
-      if (i == rest) continue;
-      std::vector<clipper::Box2> region_boxes = boxes_of(classes[i].pieces), outside_boxes;
-      for (std::size_t j = 0; j < classes.size(); ++j) {
-        if (j == i) continue;
-        const std::vector<clipper::Box2> boxes = boxes_of(classes[j].pieces);
-        outside_boxes.insert(outside_boxes.end(), boxes.begin(), boxes.end());
-      }
-      for (CountPieces& c : left) {
-        clipper::PolygonSet2 stay, in;
-        split_pieces(std::move(c.pieces), classes[i].pieces, region_boxes, outside_boxes, stay, in);
-        if (!in.empty()) done.push_back({c.count + classes[i].count, std::move(in)});
-        c.pieces = std::move(stay);
+      for (const clipper::PolygonWithHoles2& piece : classes[i].pieces) {
+        pieces.push_back({&piece, i, clipper::box_of(piece)});
+        extent.add(pieces.back().box);
       }
     }
-    for (CountPieces& c : left) {
-      if (!c.pieces.empty()) done.push_back({c.count + classes[rest].count, std::move(c.pieces)});
+    hsr::SpatialGrid grid(extent, pieces.size());
+    for (std::size_t k = 0; k < pieces.size(); ++k) grid.insert(k, pieces[k].box);
+
+    std::vector<CountPieces> done;  // one entry per piece or run of pieces, counts unsorted
+    const auto put = [&done](std::size_t count, clipper::PolygonWithHoles2 piece) {
+      if (done.empty() || done.back().count != count) done.push_back({count, {}});
+      done.back().pieces.push_back(std::move(piece));
+    };
+    std::vector<std::size_t> near;
+    for (CountPieces& c : part.by_count) {
+      for (clipper::PolygonWithHoles2& piece : c.pieces) {
+        const clipper::Box2 box = clipper::box_of(piece);
+        near.clear();
+        grid.query(box, near);
+        std::erase_if(near, [&](std::size_t k) { return !pieces[k].box.overlaps(box); });
+        std::sort(near.begin(), near.end());  // by count, then as later holds them
+        if (near.empty() || pieces[near.front()].count_index == pieces[near.back()].count_index) {
+          // One count around it (none: a sliver beside later's pieces, which counts none).
+          put(c.count + (near.empty() ? 0 : classes[pieces[near.front()].count_index].count),
+              std::move(piece));
+          continue;
+        }
+        const std::size_t lowest = pieces[near.front()].count_index;
+        const std::size_t rest =
+            classes[lowest].count == 0 ? lowest : pieces[near.back()].count_index;
+        clipper::PolygonSet2 left = {std::move(piece)};
+        for (std::size_t from = 0; from < near.size() && !left.empty();) {
+          const std::size_t count_index = pieces[near[from]].count_index;
+          clipper::PolygonSet2 region;
+          for (; from < near.size() && pieces[near[from]].count_index == count_index; ++from) {
+            region.push_back(*pieces[near[from]].piece);
+          }
+          if (count_index == rest) continue;
+          clipper::ClipResult r = clipper::clip(left, region);
+          for (auto& p : r.inside) put(c.count + classes[count_index].count, std::move(p));
+          left = std::move(r.outside);
+        }
+        for (auto& p : left) put(c.count + classes[rest].count, std::move(p));
+      }
     }
     // Back to one entry per count, in increasing counts; pieces in the order they came.
     std::stable_sort(done.begin(), done.end(),
                      [](const CountPieces& a, const CountPieces& b) { return a.count < b.count; });
+    part.by_count.clear();
     for (CountPieces& c : done) {
       if (!part.by_count.empty() && part.by_count.back().count == c.count) {
-        clipper::PolygonSet2& pieces = part.by_count.back().pieces;
-        for (auto& p : c.pieces) pieces.push_back(std::move(p));
+        clipper::PolygonSet2& out = part.by_count.back().pieces;
+        for (auto& p : c.pieces) out.push_back(std::move(p));
       } else {
         part.by_count.push_back(std::move(c));
       }

@@ -64,6 +64,29 @@ TEST_F(ShardCli, MergedShardsAreTheFileOneGenerateWrites) {
   }
 }
 
+// examples/shards/run-local.sh: the shards as processes, the merge, and with CHECK=1 the
+// comparison with one plain generate, which it exits non-zero on.
+TEST_F(ShardCli, TheLocalShardScriptMergesIntoTheFileOfOneRun) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path merged = dir_ / "merged.json", whole = dir_ / "whole.json";
+  const int code = shell("cd " + quoted(dir_.string()) +
+                         " && SHADOWGEN=" + quoted(SHADOWGEN_EXECUTABLE) + " CHECK=1 JOBS=2 bash " +
+                         quoted(std::string(SHADOWGEN_EXAMPLES_DIR) + "/shards/run-local.sh") +
+                         " yard.json 4 merged.json >run/out 2>run/err");
+  ASSERT_EQ(code, 0) << contents(dir_ / "run" / "err");
+  const std::string said = contents(dir_ / "run" / "out") + contents(dir_ / "run" / "err");
+  EXPECT_NE(said.find("is byte for byte the database of one plain generate"), std::string::npos)
+      << said;
+  // The same as a run of this test's own, the scene named by another path but for that.
+  ASSERT_EQ(run({"generate", scene.string(), "-o", whole.string()}).code, 0);
+  std::string expected = contents(whole);
+  for (std::size_t at; (at = expected.find(scene.string())) != std::string::npos;) {
+    expected.replace(at, scene.string().size(), "yard.json");
+  }
+  EXPECT_EQ(contents(merged), expected);
+  EXPECT_EQ(files(), std::vector<std::string>({"merged.json", "whole.json", "yard.json"}));
+}
+
 TEST_F(ShardCli, ABadShareIsAUsageError) {
   const fs::path scene = write("yard.json", kYard);
   for (const char* share : {"0/3", "4/3", "1/0", "3", "a/b", "1/2/3", "-1/2", "1/2000000"}) {

@@ -130,6 +130,23 @@ TEST(MergeShards, RefusesAnythingButEveryShardOfOneRunOnce) {
   EXPECT_NE(message.find("shard2.json: face 'ground': sun path 'day': "), std::string::npos)
       << message;
   EXPECT_NE(message.find("part 5 where part 0 was expected"), std::string::npos) << message;
+
+  // Sums of the right form whose pieces lie off their face: the joined regions fail the
+  // checks of a database read.
+  std::vector<ShardFile> moved_off = files;
+  bool moved_one = false;
+  for (SunHoursNode& node : moved_off[1].shadowed.sun_paths[0].nodes[0]) {
+    if (node.sums.parts.empty()) continue;
+    for (clipper::Point2& p : node.sums.parts[0].counts.back().pieces[0].outer) p.x += 100.0;
+    moved_one = true;
+    break;
+  }
+  ASSERT_TRUE(moved_one);
+  const std::string off = merge_error(moved_off);
+  EXPECT_NE(off.find("shard1.json: face 'ground': the shards joined do not make a valid "
+                     "database: "),
+            std::string::npos)
+      << off;
 }
 
 }  // namespace

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+#SBATCH --job-name=shadowgen-merge
+#SBATCH --cpus-per-task=4
+#SBATCH --mem=16G
+#SBATCH --time=01:00:00
+#SBATCH --output=shadowgen-merge-%j.log
+#
+# Joins the shards that slurm.sh wrote into the shadowed database of the whole run:
+#
+#   shadowgen merge OUT/shard-1.json ... OUT/shard-SHARDS.json -o DATABASE
+#
+# Submit it to start when every task of the shards' array has succeeded (submit-slurm.sh
+# does both):
+#
+#   sbatch --dependency=afterok:JOBID examples/shards/slurm-merge.sh
+#
+# with JOBID the array's job id. merge refuses, naming the file, shards missing or given
+# twice, shards of another count or another scene, and a whole database among them.
+#
+# Environment (as for slurm.sh):
+#   SCENE      the scene (default: scene.json): only its name is used here
+#   SHARDS     N, the number of shards (default: 8)
+#   OUT        the folder of the shard files (default: shards)
+#   DATABASE   the database to write (default: NAME.shadowed.json for the scene NAME.json,
+#              in the folder sbatch was run in)
+#   SHADOWGEN  the shadowgen command (default: shadowgen)
+set -euo pipefail
+
+scene=${SCENE:-scene.json}
+shards=${SHARDS:-8}
+out=${OUT:-shards}
+name=$(basename -- "$scene")
+database=${DATABASE:-${name%.json}.shadowed.json}
+shadowgen=${SHADOWGEN:-shadowgen}
+
+files=()
+for ((k = 1; k <= shards; k++)); do
+  files+=("$out/shard-$k.json")
+done
+
+echo "merging $shards shards from $out into $database, --threads ${SLURM_CPUS_PER_TASK:-1}"
+"$shadowgen" merge "${files[@]}" -o "$database" --threads "${SLURM_CPUS_PER_TASK:-1}"
