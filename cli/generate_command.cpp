@@ -39,6 +39,7 @@ struct GenerateArgs {
   ReadingArgs reading;
   bool keep_instants = false;  // LoadOptions::instant_polygons
   std::string instants;        // --instants K/N: LoadOptions::shard
+  bool areas_only = false;     // --areas-only: not LoadOptions::sun_hours_regions
 };
 
 // Upper bound of N in --instants K/N, the database reader's (far more than any scheduler
@@ -120,6 +121,7 @@ ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std:
                         bool show_progress) {
   LoadOptions options = load_options(args.reading, Accept::kScene, {{"-o", database.string()}});
   options.instant_polygons = args.keep_instants;
+  options.sun_hours_regions = !args.areas_only;
   if (!args.instants.empty()) {
     options.shard = parse_shard(args.instants);
     options.on_scene = [&, check = options.on_scene](const Scene& scene) {
@@ -193,6 +195,11 @@ void add_generate_options(CLI::App& command, GenerateArgs& args) {
                   "the other lights in shard 1 alone) and write it for shadowgen merge, "
                   "which joins all N into exactly the database of one run")
       ->type_name("K/N");
+  command.add_flag("--areas-only", args.areas_only,
+                   "sum sun paths into each instant's lit area per face alone, without sun-hours "
+                   "regions: what the EnergyPlus schedule and irradiation reports need, in time "
+                   "linear in the instants (the regions of a long path can grow with the square "
+                   "of its instants); sun-hours reports, maps and band exports refuse it");
 }
 
 }  // namespace

@@ -72,8 +72,10 @@ void run_report(const ReportArgs& args) {
   }
   std::vector<OutputFile> outputs;
   if (!args.output.empty()) outputs.push_back({"-o", args.output});
-  const ShadowedScene shadowed = load_shadowed(
-      args.input, load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs)));
+  LoadOptions options = load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs));
+  // From a scene, a sun path's regions are made only for the report that reads them.
+  options.sun_hours_regions = args.format == "sun-hours";
+  const ShadowedScene shadowed = load_shadowed(args.input, options);
   const std::string report = report_text(shadowed, args);
   if (args.output.empty()) {
     std::cout << report << std::flush;

@@ -23,6 +23,20 @@ const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_vi
                        : "has no sun path '" + one_line(id) + "' (its sun paths: " + known + ")");
 }
 
+void require_regions(const SunPathHours& path, const std::string& file, std::string_view what) {
+  if (path.regions_kept) return;
+  throw InputError(file, "",
+                   "sun path '" + one_line(path.id) +
+                       "' was summed into lit areas alone (generate --areas-only), without the "
+                       "sun-hours regions " +
+                       std::string(what) + " needs: generate without --areas-only");
+}
+
+std::string scene_file_of(const ShadowedScene& shadowed) {
+  const Scene& scene = shadowed.scene;
+  return scene.faces.empty() ? "" : scene.faces.front().source_file;
+}
+
 double lit_area(std::span<const LitPolygon> lit) {
   double sum = 0.0;
   for (const LitPolygon& p : lit) sum += hsr::area(p.polygon);

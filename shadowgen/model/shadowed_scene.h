@@ -67,8 +67,11 @@ struct SunPathHours {
   std::string id;        // the `sun` entry's id
   int step_min = 0;      // the minutes each instant stands for
   std::string from, to;  // the entry's span, local standard time (sun/civil_time.h civil_text)
-  std::vector<std::size_t> instants;          // indices into scene.lights, in time order
-  bool lit_polygons_kept = false;             // whether `lit` holds the instants' polygons too
+  std::vector<std::size_t> instants;  // indices into scene.lights, in time order
+  bool lit_polygons_kept = false;     // whether `lit` holds the instants' polygons too
+  // Whether the path's sun-hours regions were made (generate --areas-only sums the lit
+  // areas alone, which EnergyPlus schedules and irradiation need: its regions are empty).
+  bool regions_kept = true;
   std::vector<std::vector<double>> lit_area;  // [face][k]: lit area at instant k
   // [face][part][k]: the lit area on each part at instant k, for a face of several parts
   // (the triangles of a non-planar polygon, each turned its own way to the sun, as
@@ -99,6 +102,13 @@ struct ShadowedScene {
 // listing the ids of the paths there are, or saying that there is no sun path at all.
 const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_view id,
                                    const std::string& file);
+
+// Throws InputError naming `file` where `path` was summed into lit areas alone
+// (SunPathHours::regions_kept false), for what needs its sun-hours regions (`what`).
+void require_regions(const SunPathHours& path, const std::string& file, std::string_view what);
+
+// The file messages about a shadowed scene name: its first face's (empty without faces).
+std::string scene_file_of(const ShadowedScene& shadowed);
 
 // Lit area of every (face, light): from its lit polygons or, for an instant of a sun path
 // that keeps only its instants' lit areas, from the path's.

@@ -104,9 +104,10 @@ void check_writable(const ShadowedScene& shadowed) {
   for (const SunPathHours& path : shadowed.sun_paths) {
     const WriteCheck check("sun path '" + path.id + "'");
     const std::vector<std::vector<SunHoursRegion>>& regions = path.regions;
-    const bool sums_shaped = shadowed.shard
-                                 ? path.nodes.size() == scene.faces.size() && regions.empty()
-                                 : regions.size() == scene.faces.size();
+    const bool sums_shaped =
+        !path.regions_kept ||
+        (shadowed.shard ? path.nodes.size() == scene.faces.size() && regions.empty()
+                        : regions.size() == scene.faces.size());
     if (path.lit_area.size() != scene.faces.size() || !sums_shaped) {
       check.fail("sums not shaped [face]");
     }
@@ -131,6 +132,7 @@ void check_writable(const ShadowedScene& shadowed) {
         if (areas.size() != own) check.fail("part lit areas not per instant");
         for (const double a : areas) check.finite(a, "a part's lit area");
       }
+      if (!path.regions_kept) continue;
       if (shadowed.shard) {
         for (const SunHoursNode& node : path.nodes[f]) check.pieces(node.sums);
         continue;
@@ -215,7 +217,9 @@ void write_sun_path(JsonWriter& out, const SunPathHours& path) {
   out.begin_object().key("id").value(path.id);
   out.key("step_min").value(std::uint64_t(path.step_min));
   out.key("from").value(path.from).key("to").value(path.to);
-  out.key("instant_polygons").value(path.lit_polygons_kept ? "kept" : "dropped").end_object();
+  out.key("instant_polygons").value(path.lit_polygons_kept ? "kept" : "dropped");
+  if (!path.regions_kept) out.key("regions").value("dropped");
+  out.end_object();
 }
 
 void write_view(JsonWriter& out, const ViewSpec& view) {
@@ -285,6 +289,10 @@ void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPat
         out.end_array();
       }
       out.end_array();
+    }
+    if (!path.regions_kept) {  // lit areas alone
+      out.end_object();
+      continue;
     }
     if (!path.nodes.empty()) {
       write_nodes(out, path.nodes[face]);

@@ -79,7 +79,7 @@ void append_fraction(std::string& out, double fraction) {
 
 EnergyPlusShading energyplus_shading(const ShadowedScene& shadowed) {
   detail::require_sun_paths(shadowed, "a shading schedule");
-  const std::string file = detail::scene_file_of(shadowed);
+  const std::string file = scene_file_of(shadowed);
   if (shadowed.sun_paths.size() > 1) {
     std::string ids;
     for (const SunPathHours& path : shadowed.sun_paths) ids += (ids.empty() ? "" : ", ") + path.id;

@@ -19,6 +19,9 @@ std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
     }
   }
   detail::require_sun_paths(shadowed, "sun hours");
+  for (const SunPathHours& path : shadowed.sun_paths) {
+    require_regions(path, scene_file_of(shadowed), "a sun-hours report");
+  }
   const Scene& scene = shadowed.scene;
   std::vector<SunHoursRow> rows;
   rows.reserve(scene.faces.size() * shadowed.sun_paths.size());

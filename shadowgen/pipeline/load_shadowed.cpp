@@ -41,6 +41,7 @@ ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
   generate.threads = options.threads;
   generate.keep_instant_polygons = options.instant_polygons;
   generate.shard = options.shard;
+  generate.sun_hours_regions = options.sun_hours_regions;
   generate.on_light_done = options.on_light_done;
   try {
     return generate_shadows(scene, generate).shadowed;

@@ -31,6 +31,8 @@ struct LoadOptions {
   bool strict = false;   // ReadOptions::strict, for a scene and a database alike
   bool verbose = false;  // ReadOptions::verbose
   unsigned threads = 0;  // GenerateOptions::threads
+  // GenerateOptions::sun_hours_regions, for a scene.
+  bool sun_hours_regions = true;
   // GenerateOptions::shard: a scene's run cut into shards (generate --instants K/N). A
   // shard database is refused but where `accept` is kShard.
   std::optional<ShardPlace> shard;

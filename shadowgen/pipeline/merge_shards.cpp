@@ -28,7 +28,8 @@ std::string run_text(const ShadowedScene& shard) {
   std::string text = database_json(bare);
   for (const SunPathHours& path : shard.sun_paths) {
     text += "\n" + path.id + " " + std::to_string(path.step_min) + " " + path.from + " " + path.to +
-            (path.lit_polygons_kept ? " kept" : " dropped");
+            (path.lit_polygons_kept ? " kept" : " dropped") +
+            (path.regions_kept ? " regions" : " areas");
   }
   return text;
 }
@@ -113,6 +114,7 @@ ShadowedScene merge_shards(std::vector<ShardFile> given) {
     }
     path.nodes.clear();
     path.shard_first = path.shard_last = 0;
+    if (!path.regions_kept) continue;  // lit areas alone
     path.regions.assign(faces, {});
     const std::size_t blocks = block_count(path.instants.size());
     std::vector<std::optional<InputError>> bad(faces);

@@ -123,6 +123,10 @@ class DatabaseParser {
         kept.fail("expected 'kept' or 'dropped'");
       }
       path.lit_polygons_kept = kept.string() == "kept";
+      if (const std::optional<JsonValue> regions = entry.find("regions")) {
+        if (regions->string() != "dropped") regions->fail("expected 'dropped' (or no key)");
+        path.regions_kept = false;
+      }
       for (std::size_t l = 0; l < shadowed.scene.lights.size(); ++l) {
         const std::optional<SunInstant>& sun = shadowed.scene.lights[l].sun;
         if (!sun || sun->sun_id != path.id) continue;
@@ -202,6 +206,11 @@ class DatabaseParser {
       const bool shard = shadowed.shard.has_value();
       path.lit_area.push_back(read_instant_areas(sum.get("lit_area"), path, shard));
       read_part_lit_areas(sum, face, path, shard);
+      if (!path.regions_kept) {  // lit areas alone
+        sum.finish();
+        path_values_[p].push_back(sum.value());
+        continue;
+      }
       if (shard) {
         path.nodes.push_back(read_nodes(sum.get("nodes"), path, *shadowed.shard));
         sum.finish();
@@ -439,6 +448,7 @@ class DatabaseParser {
 
   static std::optional<std::string> sun_hours_problem(const Face& face, const SunPathHours& path,
                                                       std::size_t f) {
+    if (!path.regions_kept) return lit_areas_problem(face, path, f);
     std::vector<LitPolygon> all;
     double hour_area = 0.0, area = 0.0;
     for (const SunHoursRegion& region : path.regions[f]) {
@@ -474,6 +484,22 @@ class DatabaseParser {
              ", the lit areas' to " + shortest(lit_hours);
     }
     return std::nullopt;
+  }
+
+  // A path of lit areas alone: no instant's lit area above the face's, nor a part's above
+  // the part's, and the parts' summing the face's, up to the rounding along the face's
+  // boundary (LitChecker::area_tolerance).
+  static std::optional<std::string> lit_areas_problem(const Face& face, const SunPathHours& path,
+                                                      std::size_t f) {
+    const double face_area = hsr::area(face.parts);
+    const double tolerance = detail::LitChecker(face).area_tolerance({});
+    for (const double a : path.lit_area[f]) {
+      if (a > face_area + tolerance) {
+        return "a lit area of " + shortest(a) + ", more than the face's area of " +
+               shortest(face_area);
+      }
+    }
+    return part_lit_area_problem(face, path, f, tolerance);
   }
 
   // On a face of several parts: each part's lit area at most the part's, and the parts'

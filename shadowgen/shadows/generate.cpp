@@ -96,14 +96,19 @@ struct PathPlace {
 // With a shard, only its own instants are summed, and its nodes are what it keeps.
 class PathSums {
  public:
-  PathSums(const Scene& scene, std::vector<SunPathHours>& paths, bool keep_polygons,
+  PathSums(const Scene& scene, std::vector<SunPathHours>& paths, bool keep_polygons, bool regions,
            const std::optional<ShardPlace>& shard)
-      : scene_(scene), paths_(paths), shard_(shard), place_(scene.lights.size()) {
+      : scene_(scene),
+        paths_(paths),
+        regions_(regions),
+        shard_(shard),
+        place_(scene.lights.size()) {
     const std::size_t faces = scene.faces.size();
     state_.resize(paths.size());
     for (std::size_t p = 0; p < paths.size(); ++p) {
       SunPathHours& path = paths[p];
       path.lit_polygons_kept = keep_polygons;
+      path.regions_kept = regions;
       const std::size_t instants = path.instants.size();
       const IndexRun own = shard ? shard_instants(instants, *shard) : IndexRun{0, instants};
       if (shard) {
@@ -151,6 +156,7 @@ class PathSums {
             paths_[p].part_lit_area[f].at(lit_polygon.part)[own] += hsr::area(lit_polygon.polygon);
           }
         }
+        if (!regions_) continue;
         named(f, p, [&] {
           std::optional<FaceSunHours>& block = state.block[f];
           if (!polygons.empty()) {
@@ -170,6 +176,7 @@ class PathSums {
   void finish() {
     for (std::size_t p = 0; p < paths_.size(); ++p) {
       SunPathHours& path = paths_[p];
+      if (!regions_) continue;  // lit areas alone: no regions, no nodes
       const std::size_t faces = scene_.faces.size();
       if (shard_) {
         path.nodes.resize(faces);
@@ -214,6 +221,7 @@ class PathSums {
 
   const Scene& scene_;
   std::vector<SunPathHours>& paths_;
+  bool regions_ = true;
   std::optional<ShardPlace> shard_;
   std::vector<std::optional<PathPlace>> place_;
   std::set<std::size_t> in_any_path_;
@@ -230,7 +238,8 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
   result.shadowed.lit.assign(faces, std::vector<std::vector<LitPolygon>>(lights));
   result.stats.resize(lights);
   result.shadowed.sun_paths = sun_paths_of(scene);
-  PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons, options.shard);
+  PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons,
+                options.sun_hours_regions, options.shard);
   // The lights this run works out: in a shard, its own instants, and the lights that are
   // no instant in shard 0 alone.
   std::vector<std::size_t> todo;

@@ -60,6 +60,12 @@ struct GenerateOptions {
   // instants' lit polygons are then dropped, only their lit areas kept, unless this is
   // set: then each instant keeps its lit polygons as any light does.
   bool keep_instant_polygons = false;
+  // Whether sun paths get their sun-hours regions (SunPathHours::regions_kept). Without
+  // them a path costs its instants' lit areas alone, in time and memory linear in its
+  // instants: all that EnergyPlus schedules and irradiation need, and the only way to a
+  // year of instants on a large scene (the regions are the arrangement of every instant's
+  // shadow edges, which grows with the square of the instants where shadows sweep a face).
+  bool sun_hours_regions = true;
   // Only shard `index` of `count` of every sun path (ShadowedScene::shard; sun_hours_tree.h
   // says which instants are its own): the paths keep their tree nodes, not regions, and
   // the lights that are no instant are lit in shard 0 alone. Not with

@@ -64,6 +64,26 @@ TEST_F(ShardCli, MergedShardsAreTheFileOneGenerateWrites) {
   }
 }
 
+TEST_F(ShardCli, ShardsOfLitAreasAloneMergeIntoTheFileOfOneRunToo) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path whole = dir_ / "whole.json", merged = dir_ / "merged.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", whole.string(), "--areas-only"}).code, 0);
+  std::vector<std::string> args = {"merge"};
+  for (int k = 1; k <= 3; ++k) {
+    const fs::path out = dir_ / ("shard-" + std::to_string(k) + ".json");
+    ASSERT_EQ(run({"generate", scene.string(), "-o", out.string(), "--instants",
+                   std::to_string(k) + "/3", "--areas-only"})
+                  .code,
+              0);
+    args.push_back(out.string());
+  }
+  args.insert(args.end(), {"-o", merged.string()});
+  const Outcome o = run(args);
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(contents(merged), contents(whole));
+  EXPECT_EQ(contents(whole).find("\"nodes\""), std::string::npos);
+}
+
 // examples/shards/run-local.sh: the shards as processes, the merge, and with CHECK=1 the
 // comparison with one plain generate, which it exits non-zero on.
 TEST_F(ShardCli, TheLocalShardScriptMergesIntoTheFileOfOneRun) {

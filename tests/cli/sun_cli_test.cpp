@@ -178,6 +178,31 @@ TEST_F(SunCli, ExportOfSummedInstantsWarnsAndPartOfAPathIsRefused) {
   EXPECT_NE(contents(dir_ / "yard.mtl").find("march21@2026-03-21T12:00"), std::string::npos);
 }
 
+TEST_F(SunCli, LitAreasAloneServeTheScheduleButNotTheSunHoursRegions) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path db = dir_ / "yard.shadowed.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string(), "--areas-only"}).code, 0);
+  const Outcome schedule = run({"report", db.string(), "--format", "energyplus"});
+  ASSERT_EQ(schedule.code, 0) << schedule.err;
+  EXPECT_EQ(schedule.out, run({"report", scene.string(), "--format", "energyplus"}).out);
+  EXPECT_EQ(run({"report", db.string()}).out, run({"report", scene.string()}).out);
+  const std::string refused = "shadowgen: " + scene.string() +
+                              ": sun path 'march21' was summed into lit areas alone (generate "
+                              "--areas-only), without the sun-hours regions ";
+  const Outcome report = run({"report", db.string(), "--format", "sun-hours"});
+  EXPECT_EQ(report.code, 1);
+  EXPECT_EQ(report.err, refused + "a sun-hours report needs: generate without --areas-only\n");
+  const Outcome map = run({"render", db.string(), "--sun-hours", "march21", "--eye", "5,-20,10",
+                           "--target", "5,5,0", "--svg", (dir_ / "map.svg").string()});
+  EXPECT_EQ(map.code, 1);
+  EXPECT_EQ(map.err, refused + "a sun-hours map needs: generate without --areas-only\n");
+  const Outcome bands = run(
+      {"export", db.string(), "--sun-hours", "march21", "--obj", (dir_ / "bands.obj").string()});
+  EXPECT_EQ(bands.code, 1);
+  EXPECT_EQ(bands.err, refused + "an export by hour bands needs: generate without --areas-only\n");
+  EXPECT_EQ(files(), std::vector<std::string>({"yard.json", "yard.shadowed.json"}));
+}
+
 TEST_F(SunCli, NoSunPathOrAThresholdWithoutTheFormatIsAnError) {
   const fs::path scene = write("lamp.json", R"({"format": "shadowgen-scene/1",
       "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],

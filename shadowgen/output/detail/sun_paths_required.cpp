@@ -4,11 +4,6 @@
 
 namespace shadowgen::detail {
 
-std::string scene_file_of(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
-  return scene.faces.empty() ? "" : scene.faces.front().source_file;
-}
-
 void require_sun_paths(const ShadowedScene& shadowed, std::string_view what) {
   if (!shadowed.sun_paths.empty()) return;
   throw InputError(scene_file_of(shadowed), "",

@@ -10,9 +10,6 @@
 
 namespace shadowgen::detail {
 
-// The file messages about a shadowed scene name: its first face's (empty without faces).
-std::string scene_file_of(const ShadowedScene& shadowed);
-
 // InputError naming the scene's file when `shadowed` has no sun path; `what` says what
 // the report would have given ("sun hours").
 void require_sun_paths(const ShadowedScene& shadowed, std::string_view what);

@@ -15,7 +15,9 @@
 
 #include "hsr/area.h"
 #include "hsr/plane_chart.h"
+#include "shadowgen/model/input_error.h"
 #include "shadowgen/output/database.h"
+#include "shadowgen/scene/database_reader.h"
 #include "tests/shadowgen/hand_scenes.h"
 
 namespace shadowgen {
@@ -245,6 +247,50 @@ TEST(SunHours, SameOnAnyThreadCountAndWithTheInstantsPolygonsKept) {
   }
   without_polygons.sun_paths[0].lit_polygons_kept = false;
   EXPECT_EQ(database_json(without_polygons), database_json(a));
+}
+
+// generate --areas-only: the same lit areas, no regions; the database says so and reads
+// back; what needs the regions refuses it, naming the file.
+TEST(SunHours, AreasAloneKeepEveryInstantsLitAreaAndNoRegions) {
+  const Scene scene = parse_scene(site_scene(kCourtyard, kMarch21), "test.json").scene;
+  GenerateOptions both, areas;
+  both.threads = areas.threads = 1;
+  areas.sun_hours_regions = false;
+  const ShadowedScene a = generate_shadows(scene, both).shadowed;
+  const ShadowedScene b = generate_shadows(scene, areas).shadowed;
+  ASSERT_FALSE(b.sun_paths.at(0).regions_kept);
+  EXPECT_TRUE(b.sun_paths[0].regions.empty());
+  EXPECT_EQ(b.sun_paths[0].lit_area, a.sun_paths[0].lit_area);
+  const std::string text = database_json(b);
+  EXPECT_NE(text.find(R"("instant_polygons":"dropped","regions":"dropped")"), std::string::npos);
+  EXPECT_EQ(text.find("\"hours\""), std::string::npos);
+  const ShadowedScene read = parse_database(text, "areas.json");
+  EXPECT_FALSE(read.sun_paths.at(0).regions_kept);
+  EXPECT_EQ(database_json(read), text);
+  try {
+    require_regions(read.sun_paths[0], scene_file_of(read), "a sun-hours map");
+    ADD_FAILURE() << "regions required of a path of lit areas alone";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "test.json: sun path 'day' was summed into lit areas alone (generate "
+              "--areas-only), without the sun-hours regions a sun-hours map needs: generate "
+              "without --areas-only");
+  }
+  // A lit area above the face's is caught as with regions.
+  std::string tampered = text;
+  const std::string key = "\"lit_area\": [";
+  const std::size_t at = tampered.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t first = at + key.size();  // the ground's (400) at the first instant
+  tampered.replace(first, tampered.find_first_of(",]", first) - first, "1000.0");
+  try {
+    parse_database(tampered, "areas.json");
+    ADD_FAILURE() << "a lit area above the face's read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a lit area of 1000, more than the face's area of 400"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(SunHours, PathsAreTheSunEntriesWithASpanAndTheirInstantsInOrder) {
