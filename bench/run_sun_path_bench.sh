@@ -9,6 +9,9 @@
 # Defaults: 10000 faces, 21 March 2026 from 00:00 to 23:59 every 10 minutes. A year of
 # hourly instants: 10000 2026-01-01T00:00 2026-12-31T23:00 60. BUILD_DIR (default
 # build/release) must hold cli/shadowgen and bench/output_bench (SHADOWGEN_BENCH=ON).
+# Environment: THREADS (default "1 2"), the thread counts to run in turn; SUMS=areas runs
+# generate --areas-only (lit areas alone, no sun-hours regions) and sums the EnergyPlus
+# schedule instead of the sun-hours report.
 set -euo pipefail
 
 faces=${1:-10000}
@@ -39,14 +42,26 @@ echo "city of $faces faces (as read: $(python3 -c "import json,sys; print(len(js
 echo
 echo "| threads | wall s | peak MB | database MB |"
 echo "|---:|---:|---:|---:|"
-for threads in 1 2; do
+sums=()
+[ "${SUMS:-regions}" = areas ] && sums=(--areas-only)
+for threads in ${THREADS:-1 2}; do
   /usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" generate "$work/scene.json" \
-    -o "$work/db.json" --threads "$threads" --quiet
+    -o "$work/db.json" --threads "$threads" --quiet "${sums[@]}"
   read -r wall kb <"$work/time"
   mb=$(du -m --apparent-size "$work/db.json" | cut -f1)
   echo "| $threads | $wall | $((kb / 1024)) | $mb |"
 done
 echo
+if [ "${SUMS:-regions}" = areas ]; then
+  "$build/cli/shadowgen" report "$work/db.json" --format energyplus 2>/dev/null |
+    python3 -c "
+import sys
+rows = [line.rstrip(',\n').split(',') for line in sys.stdin][1:]
+fractions = [float(x) for row in rows for x in row[1:]]
+print('EnergyPlus schedule: %d rows of %d faces, mean sunlit fraction %.4f' % (len(rows), len(rows[0]) - 1, sum(fractions) / len(fractions)))
+"
+  exit 0
+fi
 "$build/cli/shadowgen" report "$work/db.json" --format sun-hours --threshold 2,6 |
   python3 -c "
 import csv, sys

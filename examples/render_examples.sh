@@ -59,7 +59,7 @@ if [[ ! -x $shadowgen ]]; then
 fi
 
 # The scenes whose sun path gets a sun-hours map, and the path's id.
-declare -A sun_hours_maps=([garden]=march21)
+declare -A sun_hours_maps=([garden]=march21 [roof]=dec21)
 
 if [[ ${#names[@]} -eq 0 ]]; then
   for scene in "$examples"/scenes/*.json; do

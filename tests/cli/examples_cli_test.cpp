@@ -166,12 +166,14 @@ class ExampleCli : public CliFolderTest<::testing::TestWithParam<std::string>> {
 
 TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
   const std::vector<std::string> names = example_names();
-  for (const char* expected : {"chairs", "courtyard", "garden", "house", "pergola", "room"}) {
+  for (const char* expected :
+       {"chairs", "courtyard", "garden", "house", "pergola", "roof", "room"}) {
     EXPECT_TRUE(std::find(names.begin(), names.end(), expected) != names.end()) << expected;
   }
   // The garden's sun path of 21 March also has its sun-hours map.
   EXPECT_EQ(pictures_of("garden"),
             (std::vector<std::string>{"garden-sun-hours.svg", "garden.svg"}));
+  EXPECT_EQ(pictures_of("roof"), (std::vector<std::string>{"roof-sun-hours.svg", "roof.svg"}));
   for (const std::string& name : names) {
     const nlohmann::json scene =
         nlohmann::json::parse(contents(kExamples / "scenes" / (name + ".json")));
@@ -196,6 +198,60 @@ TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
     EXPECT_NE(contents(picture).find("data-face="), std::string::npos) << picture;
     EXPECT_EQ(shell("xmllint --noout " + quoted(picture.string()) + " 2>/dev/null"), 0) << picture;
   }
+}
+
+class ExampleScript : public CliFolderTest<> {
+ protected:
+  ExampleScript() : CliFolderTest("shadowgen-example-script") {}
+};
+
+// examples/roof-year.sh: the roof's faces over every hour of 2026, as EnergyPlus reads a
+// shading schedule: 8,760 rows, sunlit fractions from 0 to 1, nothing lit at night, the
+// panels in the chimney's and their neighbours' shade at some hours and lit whole at
+// others.
+TEST_F(ExampleScript, TheRoofOverAYearIsAShadingScheduleOfEveryHour) {
+  const fs::path out = dir_ / "roof-year.csv";
+  const int code = shell("bash " + quoted((kExamples / "roof-year.sh").string()) + " " +
+                         quoted(SHADOWGEN_EXECUTABLE) + " " + quoted(out.string()) + " >" +
+                         quoted((dir_ / "run" / "out").string()) + " 2>" +
+                         quoted((dir_ / "run" / "err").string()));
+  ASSERT_EQ(code, 0) << contents(dir_ / "run" / "err");
+  std::istringstream csv(contents(out));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const std::vector<std::string> header = csv_fields(line);
+  ASSERT_GE(header.size(), 3u);
+  EXPECT_EQ(header.front(), "Surface Name");
+  std::vector<std::size_t> panels;
+  for (std::size_t i = 1; i + 1 < header.size(); ++i) {
+    if (header[i].rfind("PANEL.", 0) == 0) panels.push_back(i);
+  }
+  ASSERT_EQ(panels.size(), 6u);
+  std::size_t rows = 0, panel_partly = 0, panel_whole = 0;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> fields = csv_fields(line);
+    ASSERT_EQ(fields.size(), header.size()) << line;  // the trailing comma's empty field
+    ++rows;
+    if (rows == 1) {
+      EXPECT_EQ(fields[0], " 01/01 01:00");
+    }
+    for (std::size_t i = 1; i + 1 < fields.size(); ++i) {
+      const double fraction = std::stod(fields[i]);
+      ASSERT_GE(fraction, 0.0) << line;
+      ASSERT_LE(fraction, 1.0) << line;
+      if (fields[0] == " 01/01 01:00") {
+        EXPECT_EQ(fraction, 0.0) << header[i];
+      }
+    }
+    for (const std::size_t i : panels) {
+      const double fraction = std::stod(fields[i]);
+      if (fraction > 0.0 && fraction < 1.0) ++panel_partly;
+      if (fraction == 1.0) ++panel_whole;
+    }
+  }
+  EXPECT_EQ(rows, 8760u);
+  EXPECT_GT(panel_partly, 100u);
+  EXPECT_GT(panel_whole, 1000u);
 }
 
 class ExamplePicture : public CliFolderTest<::testing::TestWithParam<std::string>> {
