@@ -46,6 +46,140 @@ bool near_each_other(const Point2& a, const Point2& b, const Point2& from, const
   return std::fabs(a.y - b.y) <= k * (std::fabs(a.y) + std::fabs(b.y));
 }
 
+// The common case decided without rounds: operands of a few edges that meet only where
+// edges cross properly or where a vertex lies exactly on an edge (edges that a cut shared
+// with an earlier clip, a T-junction), every other point well clear of every edge. The
+// rounds would route each edge through the points found on it, in order along it, and
+// then find nothing more: every other contact they look for (points in each other's
+// pixels, a point in the way of an edge or of a piece moved by a rounded crossing,
+// pieces crossing anew) needs a point within a pixel plus a piece's deviation (two
+// pixels at most) of an edge or of another point, and here every point lies more than
+// kClearPixels of the widest pixel of the operands from each edge and point it is not
+// on. Returns false, leaving the loops as they came, where that is not shown; snap_round
+// then runs the rounds, which give the same loops wherever this gives any
+// (SnapRound.TheShortcutGivesWhatTheRoundsGive).
+constexpr std::size_t kShortcutEdges = 64;
+constexpr double kClearPixels = 8.0;
+
+// Whether p lies farther than `reach` from the segment a-b: outside its box grown by
+// `reach`, or off its line by more, in doubles with a generous bound (8u of the products'
+// magnitudes) on the rounding of the determinant taken off.
+bool clear_of(const Point2& p, const Point2& a, const Point2& b, double reach) {
+  if (p.x < std::min(a.x, b.x) - reach || p.x > std::max(a.x, b.x) + reach ||
+      p.y < std::min(a.y, b.y) - reach || p.y > std::max(a.y, b.y) + reach) {
+    return true;
+  }
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double left = dx * (p.y - a.y), right = dy * (p.x - a.x);
+  const double rounding = 0x1p-50 * (std::fabs(left) + std::fabs(right));
+  return std::fabs(left - right) - rounding > 1.001 * reach * std::sqrt(dx * dx + dy * dy);
+}
+
+bool apart(const Point2& p, const Point2& q, double reach) {
+  return std::fabs(p.x - q.x) > reach || std::fabs(p.y - q.y) > reach;
+}
+
+bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats) {
+  struct Edge {
+    Point2 from, to;
+  };
+  // A point an edge is to be routed through.
+  struct Through {
+    std::uint32_t edge;
+    Point2 at;
+  };
+  std::vector<Edge> edges;
+  double magnitude = 0.0;
+  for (const auto& side : loops) {
+    for (const Loop2& loop : side) {
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Point2& p = loop[i];
+        edges.push_back({p, loop[i + 1 == loop.size() ? 0 : i + 1]});
+        magnitude = std::max({magnitude, std::fabs(p.x), std::fabs(p.y)});
+      }
+      if (edges.size() > kShortcutEdges) return false;
+    }
+  }
+  const double reach = kClearPixels * snap_distance({magnitude, magnitude});
+  std::vector<Through> through;
+  std::size_t splits = 0;
+  // Vertices: apart from one another, and each clear of every edge or exactly on it
+  // between its ends (then found there by both edges the vertex ends).
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const Point2& v = edges[k].from;
+    for (std::size_t m = k + 1; m < edges.size(); ++m) {
+      if (v != edges[m].from && !apart(v, edges[m].from, reach)) return false;
+    }
+    for (std::size_t m = 0; m < edges.size(); ++m) {
+      const Edge& e = edges[m];
+      if (v == e.from || v == e.to || clear_of(v, e.from, e.to, reach)) continue;
+      if (orient2d(e.from, e.to, v) != Orientation::kCollinear ||
+          !projects_inside(v, e.from, e.to) || !apart(v, e.from, reach) || !apart(v, e.to, reach)) {
+        return false;
+      }
+      through.push_back({static_cast<std::uint32_t>(m), v});
+      splits += 2;
+    }
+  }
+  // Proper crossings, rounded: apart from every vertex and clear of every edge but their
+  // own two.
+  std::size_t crossings = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const Edge& a = edges[i];
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const Edge& b = edges[j];
+      if (std::max(a.from.x, a.to.x) < std::min(b.from.x, b.to.x) ||
+          std::max(b.from.x, b.to.x) < std::min(a.from.x, a.to.x) ||
+          std::max(a.from.y, a.to.y) < std::min(b.from.y, b.to.y) ||
+          std::max(b.from.y, b.to.y) < std::min(a.from.y, a.to.y)) {
+        continue;
+      }
+      if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
+      if (!properly_cross(a.from, a.to, b.from, b.to)) continue;
+      const Point2 at = crossing_point(a.from, a.to, b.from, b.to);
+      for (std::size_t m = 0; m < edges.size(); ++m) {
+        if (!apart(at, edges[m].from, reach)) return false;
+        if (m != i && m != j && !clear_of(at, edges[m].from, edges[m].to, reach)) return false;
+      }
+      through.push_back({static_cast<std::uint32_t>(i), at});
+      through.push_back({static_cast<std::uint32_t>(j), at});
+      ++crossings;
+      splits += 2;
+    }
+  }
+  if (!through.empty() && snap_round_limit() < 1) return false;
+  std::sort(through.begin(), through.end(), [&edges](const Through& a, const Through& b) {
+    if (a.edge != b.edge) return a.edge < b.edge;
+    return AlongSegment(edges[a.edge].from, edges[a.edge].to)(a.at, b.at);
+  });
+  // As SnapRounder::write_back puts the routes together.
+  std::size_t k = 0, next = 0;
+  for (auto& side : loops) {
+    for (Loop2& loop : side) {
+      Loop2 out;
+      out.reserve(loop.size() + through.size());
+      auto push = [&out](const Point2& p) {
+        if (out.empty() || out.back() != p) out.push_back(p);
+      };
+      for (std::size_t i = 0; i < loop.size(); ++i, ++k) {
+        push(edges[k].from);
+        for (; next < through.size() && through[next].edge == k; ++next) push(through[next].at);
+      }
+      while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+      if (out.size() < 2) out.clear();
+      loop = std::move(out);
+    }
+  }
+  if (stats != nullptr) {
+    *stats = {};
+    stats->crossings = crossings;
+    stats->splits = splits;
+    stats->rounds = through.empty() ? 0 : 1;
+    stats->separated = true;
+  }
+  return true;
+}
+
 class SnapRounder {
   // A point to put into a route, in the piece that ends at route[position].
   struct Insertion {
@@ -341,7 +475,8 @@ class SnapRounder {
 
 }  // namespace
 
-void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats) {
+void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats, SnapPath path) {
+  if (path == SnapPath::kShortcutWhereShown && snap_round_separated(loops, stats)) return;
   SnapRounder rounder(loops);
   const SnapRoundingStats local = rounder.run();
   if (stats != nullptr) *stats = local;

@@ -47,7 +47,14 @@ struct SnapRoundingStats {
   std::size_t crossings = 0;  // rounded crossing points made
   std::size_t splits = 0;     // points put into routes
   bool converged = true;      // false when the round limit stopped it
+  bool separated = false;     // decided by the shortcut, without rounds
 };
+
+// Whether snap_round may take its shortcut (operands of a few edges, well clear of each
+// other but where they cross properly: the edges routed through their crossings, no
+// rounds) or must run the rounds, which give the same loops there (for tests that hold
+// the two side by side).
+enum class SnapPath { kShortcutWhereShown, kRoundsOnly };
 
 // The loops of both operands (loops[0] the subject's, loops[1] the clip's, each running
 // with its region on the left), snapped in place. A loop may come back with spikes,
@@ -60,6 +67,7 @@ struct SnapRoundingStats {
 // it throws SnapRoundingError (clipper/clip.h), after filling `stats`, and the loops are
 // left as they came: a graph that is not noded would give every caller pieces whose areas
 // could be wrong, so none gets one.
-void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats = nullptr);
+void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats = nullptr,
+                SnapPath path = SnapPath::kShortcutWhereShown);
 
 }  // namespace shadowgen::clipper::detail
