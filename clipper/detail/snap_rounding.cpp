@@ -47,16 +47,17 @@ bool near_each_other(const Point2& a, const Point2& b, const Point2& from, const
 }
 
 // The common case decided without rounds: operands of a few edges that meet only where
-// edges cross properly or where a vertex lies exactly on an edge (edges that a cut shared
-// with an earlier clip, a T-junction), every other point well clear of every edge. The
-// rounds would route each edge through the points found on it, in order along it, and
-// then find nothing more: every other contact they look for (points in each other's
-// pixels, a point in the way of an edge or of a piece moved by a rounded crossing,
-// pieces crossing anew) needs a point within a pixel plus a piece's deviation (two
-// pixels at most) of an edge or of another point, and here every point lies more than
-// kClearPixels of the widest pixel of the operands from each edge and point it is not
-// on. Returns false, leaving the loops as they came, where that is not shown; snap_round
-// then runs the rounds, which give the same loops wherever this gives any
+// edges cross properly or where a vertex lies in an edge's way (on it, or off it within
+// the vertex's pixel: an edge that a cut shared with an earlier clip, a T-junction), every
+// other point well clear of every edge. The rounds would route each edge through the
+// points found on it, in order along it, and then find nothing more: every other contact
+// they look for (points in each other's pixels, a point in the way of an edge or of a
+// piece moved by a rounded crossing or a vertex, pieces crossing anew) needs a point
+// within a pixel plus a piece's deviation (two pixels at most) of an edge or of another
+// point, and here every point lies more than kClearPixels of the widest pixel of the
+// operands from each edge and point it is not routed through or on. Returns false,
+// leaving the loops as they came, where that is not shown; snap_round then runs the
+// rounds, which give the same loops wherever this gives any
 // (SnapRound.TheShortcutGivesWhatTheRoundsGive).
 constexpr std::size_t kShortcutEdges = 64;
 constexpr double kClearPixels = 8.0;
@@ -73,6 +74,16 @@ bool clear_of(const Point2& p, const Point2& a, const Point2& b, double reach) {
   const double left = dx * (p.y - a.y), right = dy * (p.x - a.x);
   const double rounding = 0x1p-50 * (std::fabs(left) + std::fabs(right));
   return std::fabs(left - right) - rounding > 1.001 * reach * std::sqrt(dx * dx + dy * dy);
+}
+
+// Whether the rounds' first look routes the whole edge a-b through vertex v: v lies in
+// the edge's box grown by its margin (ContactFinder's candidate test) and the edge passes
+// through v's pixel.
+bool in_way(const Point2& v, const Point2& a, const Point2& b) {
+  const double margin = 1.25 * std::max(snap_distance(a), snap_distance(b));
+  return v.x >= std::min(a.x, b.x) - margin && v.x <= std::max(a.x, b.x) + margin &&
+         v.y >= std::min(a.y, b.y) - margin && v.y <= std::max(a.y, b.y) + margin &&
+         within_snap_distance(v, a, b);
 }
 
 bool apart(const Point2& p, const Point2& q, double reach) {
@@ -103,8 +114,8 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   const double reach = kClearPixels * snap_distance({magnitude, magnitude});
   std::vector<Through> through;
   std::size_t splits = 0;
-  // Vertices: apart from one another, and each clear of every edge or exactly on it
-  // between its ends (then found there by both edges the vertex ends).
+  // Vertices: apart from one another, and each clear of every edge or in its way between
+  // its ends (then found there by both edges the vertex ends).
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const Point2& v = edges[k].from;
     for (std::size_t m = k + 1; m < edges.size(); ++m) {
@@ -113,8 +124,7 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     for (std::size_t m = 0; m < edges.size(); ++m) {
       const Edge& e = edges[m];
       if (v == e.from || v == e.to || clear_of(v, e.from, e.to, reach)) continue;
-      if (orient2d(e.from, e.to, v) != Orientation::kCollinear ||
-          !projects_inside(v, e.from, e.to) || !apart(v, e.from, reach) || !apart(v, e.to, reach)) {
+      if (!in_way(v, e.from, e.to) || !apart(v, e.from, reach) || !apart(v, e.to, reach)) {
         return false;
       }
       through.push_back({static_cast<std::uint32_t>(m), v});
@@ -136,6 +146,11 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
       }
       if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
       if (!properly_cross(a.from, a.to, b.from, b.to)) continue;
+      // A vertex of one in the other's way (a hair across it): routed through, not crossed.
+      if (in_way(a.from, b.from, b.to) || in_way(a.to, b.from, b.to) ||
+          in_way(b.from, a.from, a.to) || in_way(b.to, a.from, a.to)) {
+        continue;
+      }
       const Point2 at = crossing_point(a.from, a.to, b.from, b.to);
       for (std::size_t m = 0; m < edges.size(); ++m) {
         if (!apart(at, edges[m].from, reach)) return false;

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "clipper/predicates.h"
-#include "tests/support/random_polygons.h"
 #include "tests/clipper/snap_shortcut_check.h"
+#include "tests/support/random_polygons.h"
 #include "tests/support/transform.h"
 
 namespace shadowgen::clipper::detail {
@@ -96,12 +96,12 @@ TEST(SnapRound, LongEdgeAcrossANeedleBesideTheAxisEndsNoded) {
   EXPECT_TRUE(noded(loops));
 }
 
-// The shortcut (operands clear of each other but where edges cross or a vertex lies
-// exactly on an edge) gives the loops and statistics the rounds give, on random pairs of
-// doubles, on a coarse integer grid (shared edges, vertices on edges and on vertices), on
-// slivers, far from the origin, and on a grid polygon against itself moved a hair (its
-// vertices within a few pixels of its own edges), which it leaves to the rounds. Both ways are
-// taken often.
+// The shortcut (operands clear of each other but where edges cross or a vertex lies in an
+// edge's way) gives the loops and statistics the rounds give, on random pairs of doubles,
+// on a coarse integer grid (shared edges, vertices on edges and on vertices), on slivers,
+// far from the origin, and on a grid polygon against itself moved a hair (its vertices a
+// pixel or a few from its own edges, mostly left to the rounds). Both ways are taken
+// often.
 TEST(SnapRound, TheShortcutGivesWhatTheRoundsGive) {
   std::mt19937_64 rng(0x5eed5c07);
   int taken = 0, declined = 0;
