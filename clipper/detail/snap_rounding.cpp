@@ -62,14 +62,10 @@ bool near_each_other(const Point2& a, const Point2& b, const Point2& from, const
 constexpr std::size_t kShortcutEdges = 64;
 constexpr double kClearPixels = 8.0;
 
-// Whether p lies farther than `reach` from the segment a-b: outside its box grown by
-// `reach`, or off its line by more, in doubles with a generous bound (8u of the products'
-// magnitudes) on the rounding of the determinant taken off.
-bool clear_of(const Point2& p, const Point2& a, const Point2& b, double reach) {
-  if (p.x < std::min(a.x, b.x) - reach || p.x > std::max(a.x, b.x) + reach ||
-      p.y < std::min(a.y, b.y) - reach || p.y > std::max(a.y, b.y) + reach) {
-    return true;
-  }
+// Whether p lies off the line through a and b by more than `reach`, in doubles with a
+// generous bound (8u of the products' magnitudes) on the rounding of the determinant
+// taken off.
+bool off_line(const Point2& p, const Point2& a, const Point2& b, double reach) {
   const double dx = b.x - a.x, dy = b.y - a.y;
   const double left = dx * (p.y - a.y), right = dy * (p.x - a.x);
   const double rounding = 0x1p-50 * (std::fabs(left) + std::fabs(right));
@@ -93,57 +89,80 @@ bool apart(const Point2& p, const Point2& q, double reach) {
 bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats) {
   struct Edge {
     Point2 from, to;
+    double xmin, xmax, ymin, ymax;  // the box, grown by the reach
+    bool near(const Point2& p) const {
+      return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax;
+    }
   };
   // A point an edge is to be routed through.
   struct Through {
     std::uint32_t edge;
     Point2 at;
   };
-  std::vector<Edge> edges;
+  // Kept from call to call: a clip of small polygons would otherwise spend much of its
+  // time allocating them.
+  thread_local std::vector<Edge> edges;
+  thread_local std::vector<Through> through;
+  edges.clear();
+  through.clear();
   double magnitude = 0.0;
   for (const auto& side : loops) {
     for (const Loop2& loop : side) {
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const Point2& p = loop[i];
-        edges.push_back({p, loop[i + 1 == loop.size() ? 0 : i + 1]});
+        edges.push_back({p, loop[i + 1 == loop.size() ? 0 : i + 1], 0, 0, 0, 0});
         magnitude = std::max({magnitude, std::fabs(p.x), std::fabs(p.y)});
       }
       if (edges.size() > kShortcutEdges) return false;
     }
   }
   const double reach = kClearPixels * snap_distance({magnitude, magnitude});
-  std::vector<Through> through;
+  for (Edge& e : edges) {
+    e.xmin = std::min(e.from.x, e.to.x) - reach;
+    e.xmax = std::max(e.from.x, e.to.x) + reach;
+    e.ymin = std::min(e.from.y, e.to.y) - reach;
+    e.ymax = std::max(e.from.y, e.to.y) + reach;
+  }
+  // Vertices by x, edges by the left side of their boxes: each edge meets only the
+  // vertices and edges in its box's x-range.
+  thread_local std::vector<std::uint32_t> by_x, by_left;
+  by_x.resize(edges.size());
+  for (std::uint32_t k = 0; k < edges.size(); ++k) by_x[k] = k;
+  by_left = by_x;
+  std::sort(by_x.begin(), by_x.end(),
+            [](std::uint32_t a, std::uint32_t b) { return edges[a].from.x < edges[b].from.x; });
+  std::sort(by_left.begin(), by_left.end(),
+            [](std::uint32_t a, std::uint32_t b) { return edges[a].xmin < edges[b].xmin; });
   std::size_t splits = 0;
   // Vertices: apart from one another, and each clear of every edge or in its way between
-  // its ends (then found there by both edges the vertex ends).
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    const Point2& v = edges[k].from;
-    for (std::size_t m = k + 1; m < edges.size(); ++m) {
-      if (v != edges[m].from && !apart(v, edges[m].from, reach)) return false;
-    }
-    for (std::size_t m = 0; m < edges.size(); ++m) {
-      const Edge& e = edges[m];
-      if (v == e.from || v == e.to || clear_of(v, e.from, e.to, reach)) continue;
-      if (!in_way(v, e.from, e.to) || !apart(v, e.from, reach) || !apart(v, e.to, reach)) {
-        return false;
-      }
-      through.push_back({static_cast<std::uint32_t>(m), v});
+  // its ends (then found there by both edges the vertex ends). Every vertex starts an
+  // edge, and a point within the reach of it lies in that edge's grown box.
+  for (std::uint32_t m = 0; m < edges.size(); ++m) {
+    const Edge& e = edges[m];
+    auto k = std::lower_bound(by_x.begin(), by_x.end(), e.xmin, [](std::uint32_t index, double x) {
+      return edges[index].from.x < x;
+    });
+    for (; k != by_x.end() && edges[*k].from.x <= e.xmax; ++k) {
+      const Point2& v = edges[*k].from;
+      if (!e.near(v) || v == e.from) continue;
+      if (!apart(v, e.from, reach)) return false;
+      if (v == e.to || off_line(v, e.from, e.to, reach)) continue;
+      if (!in_way(v, e.from, e.to) || !apart(v, e.to, reach)) return false;
+      through.push_back({m, v});
       splits += 2;
     }
   }
   // Proper crossings, rounded: apart from every vertex and clear of every edge but their
   // own two.
   std::size_t crossings = 0;
-  for (std::size_t i = 0; i < edges.size(); ++i) {
+  for (std::size_t first = 0; first < by_left.size(); ++first) {
+    const std::uint32_t i = by_left[first];
     const Edge& a = edges[i];
-    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+    for (std::size_t second = first + 1;
+         second < by_left.size() && edges[by_left[second]].xmin <= a.xmax; ++second) {
+      const std::uint32_t j = by_left[second];
       const Edge& b = edges[j];
-      if (std::max(a.from.x, a.to.x) < std::min(b.from.x, b.to.x) ||
-          std::max(b.from.x, b.to.x) < std::min(a.from.x, a.to.x) ||
-          std::max(a.from.y, a.to.y) < std::min(b.from.y, b.to.y) ||
-          std::max(b.from.y, b.to.y) < std::min(a.from.y, a.to.y)) {
-        continue;
-      }
+      if (a.ymax < b.ymin || b.ymax < a.ymin) continue;
       if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
       if (!properly_cross(a.from, a.to, b.from, b.to)) continue;
       // A vertex of one in the other's way (a hair across it): routed through, not crossed.
@@ -152,18 +171,20 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
         continue;
       }
       const Point2 at = crossing_point(a.from, a.to, b.from, b.to);
-      for (std::size_t m = 0; m < edges.size(); ++m) {
-        if (!apart(at, edges[m].from, reach)) return false;
-        if (m != i && m != j && !clear_of(at, edges[m].from, edges[m].to, reach)) return false;
+      for (std::uint32_t m = 0; m < edges.size(); ++m) {
+        const Edge& e = edges[m];
+        if (!e.near(at)) continue;
+        if (!apart(at, e.from, reach)) return false;
+        if (m != i && m != j && !off_line(at, e.from, e.to, reach)) return false;
       }
-      through.push_back({static_cast<std::uint32_t>(i), at});
-      through.push_back({static_cast<std::uint32_t>(j), at});
+      through.push_back({i, at});
+      through.push_back({j, at});
       ++crossings;
       splits += 2;
     }
   }
   if (!through.empty() && snap_round_limit() < 1) return false;
-  std::sort(through.begin(), through.end(), [&edges](const Through& a, const Through& b) {
+  std::sort(through.begin(), through.end(), [](const Through& a, const Through& b) {
     if (a.edge != b.edge) return a.edge < b.edge;
     return AlongSegment(edges[a.edge].from, edges[a.edge].to)(a.at, b.at);
   });
