@@ -7,6 +7,18 @@
 #include "shadowgen/json/json_text.h"
 
 namespace shadowgen {
+namespace {
+
+constexpr std::size_t kPieceBytes = std::size_t{1} << 20;
+
+}  // namespace
+
+void JsonWriter::spill() {
+  if (sink_ && out_.size() >= kPieceBytes) {
+    sink_(out_);
+    out_.clear();
+  }
+}
 
 void JsonWriter::newline(std::size_t depth) {
   out_ += '\n';
@@ -14,6 +26,7 @@ void JsonWriter::newline(std::size_t depth) {
 }
 
 void JsonWriter::separate() {
+  spill();
   if (after_key_) {  // the value of a member: right after its key
     after_key_ = false;
     return;
@@ -90,9 +103,16 @@ JsonWriter& JsonWriter::value(const glm::dvec3& v) {
 }
 
 std::string JsonWriter::take() {
-  assert(open_.empty() && !after_key_);
+  assert(open_.empty() && !after_key_ && !sink_);
   out_ += '\n';
   return std::move(out_);
+}
+
+void JsonWriter::finish() {
+  assert(open_.empty() && !after_key_ && sink_);
+  out_ += '\n';
+  sink_(out_);
+  out_.clear();
 }
 
 }  // namespace shadowgen

@@ -16,8 +16,13 @@
 // "-0.0", "1e-300") so that they read as floating point; JSON has no NaN or infinity, and
 // a non-finite number is refused (std::invalid_argument) rather than written. Strings are
 // escaped as JSON requires; bytes that are not UTF-8 become U+FFFD.
+//
+// The text is kept whole for take(), or, given a sink, passed on in pieces of about a
+// mebibyte as it is written and ended by finish(): a database of hundreds of megabytes
+// then never stands in memory as one string.
 
 #include <cstdint>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
@@ -28,6 +33,10 @@ namespace shadowgen {
 class JsonWriter {
  public:
   enum class Layout { kInline, kLines };
+  using Sink = std::function<void(std::string_view)>;
+
+  JsonWriter() = default;
+  explicit JsonWriter(Sink sink) : sink_(std::move(sink)) {}
 
   JsonWriter& begin_object(Layout layout = Layout::kInline);
   JsonWriter& end_object();
@@ -44,8 +53,11 @@ class JsonWriter {
   // [x, y, z].
   JsonWriter& value(const glm::dvec3& v);
 
-  // The document, ended by a line break. Every container must be closed.
+  // The document, ended by a line break. Every container must be closed. Without a sink.
   std::string take();
+  // Passes the rest of the document, ended by a line break, to the sink. Every container
+  // must be closed.
+  void finish();
 
  private:
   struct Open {
@@ -60,6 +72,10 @@ class JsonWriter {
   // Ends the innermost open object or array with `bracket`.
   JsonWriter& close(char bracket);
 
+  // Hands the text so far to the sink once it has grown past a piece's size.
+  void spill();
+
+  Sink sink_;
   std::string out_;
   std::vector<Open> open_;
   bool after_key_ = false;

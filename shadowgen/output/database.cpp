@@ -333,10 +333,11 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
 
 }  // namespace
 
-std::string database_json(const ShadowedScene& shadowed) {
+namespace {
+
+void write_database_to(const ShadowedScene& shadowed, JsonWriter& out) {
   check_writable(shadowed);
   const Scene& scene = shadowed.scene;
-  JsonWriter out;
   out.begin_object(Layout::kLines).key("format").value(kShadowedFormat);
   if (shadowed.shard) {
     out.key("shard").begin_object().key("index").value(std::uint64_t{shadowed.shard->index + 1});
@@ -357,11 +358,23 @@ std::string database_json(const ShadowedScene& shadowed) {
   for (std::size_t f = 0; f < scene.faces.size(); ++f) write_face(out, shadowed, f);
   out.end_array();
   out.end_object();
+}
+
+}  // namespace
+
+std::string database_json(const ShadowedScene& shadowed) {
+  JsonWriter out;
+  write_database_to(shadowed, out);
   return out.take();
 }
 
 void write_database(const ShadowedScene& shadowed, const std::filesystem::path& path) {
-  write_file_atomically(path, database_json(shadowed));
+  // Streamed: a sun path's sums can make hundreds of megabytes of text.
+  stream_file_atomically(path, [&shadowed](const OutputSink& sink) {
+    JsonWriter out(sink);
+    write_database_to(shadowed, out);
+    out.finish();
+  });
 }
 
 }  // namespace shadowgen

@@ -77,6 +77,7 @@ namespace shadowgen {
 std::string database_json(const ShadowedScene& shadowed);
 
 // Writes through a temporary file in the same folder and a rename: never a partial file.
+// The text is streamed into it, never held whole.
 void write_database(const ShadowedScene& shadowed, const std::filesystem::path& path);
 
 }  // namespace shadowgen

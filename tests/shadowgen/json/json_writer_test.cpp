@@ -122,5 +122,32 @@ TEST(JsonWriter, RandomBitPatternsRoundTrip) {
   expect_round_trip(values);
 }
 
+// With a sink the text arrives in pieces of about a mebibyte (a piece is passed on at the
+// first value after it reaches that size), and together they are the document take()
+// gives.
+TEST(JsonWriter, ASinkReceivesTheDocumentInPieces) {
+  auto write = [](JsonWriter& out) {
+    out.begin_object(Layout::kLines).key("numbers").begin_array(Layout::kLines);
+    for (int i = 0; i < 200000; ++i) out.value(i * 0.1);
+    out.end_array().key("end").value("here").end_object();
+  };
+  JsonWriter whole;
+  write(whole);
+  const std::string expected = whole.take();
+  std::vector<std::string> pieces;
+  JsonWriter streamed([&pieces](std::string_view piece) { pieces.emplace_back(piece); });
+  write(streamed);
+  streamed.finish();
+  ASSERT_GE(pieces.size(), 3u);
+  std::string joined;
+  for (const std::string& piece : pieces) {
+    EXPECT_LE(piece.size(), (std::size_t{1} << 20) + 64);
+    joined += piece;
+  }
+  EXPECT_EQ(joined, expected);
+  // Every piece but the last is a whole mebibyte at least.
+  EXPECT_LE(pieces.size() - 1, expected.size() >> 20);
+}
+
 }  // namespace
 }  // namespace shadowgen
