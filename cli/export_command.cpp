@@ -55,8 +55,15 @@ void run_export(const ExportArgs& args) {
   refuse_input_as_output("--obj", mtl_path.string(), args.input);
   LoadOptions load = load_options(args.reading, Accept::kSceneOrDatabase,
                                   {{"--obj", obj_path.string()}, {"--obj", mtl_path.string()}});
-  // A sun-hours export writes a path's sums, not its instants' lit polygons.
+  // A sun-hours export writes a path's sums, not its instants' lit polygons; a scene
+  // without that path is refused before its shadows are computed.
   load.instant_polygons = args.sun_hours.path.empty();
+  if (!args.sun_hours.path.empty()) {
+    load.on_scene = [&args, check = load.on_scene](const Scene& scene) {
+      if (check) check(scene);
+      require_sun_path(scene, args.sun_hours.path, args.input);
+    };
+  }
   const ShadowedScene shadowed = load_shadowed(args.input, load);
   std::optional<SunHoursMap> map;
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.input);
@@ -79,7 +86,8 @@ void add_export_options(CLI::App& command, ExportArgs& args) {
       .add_option("--obj", args.obj, "OBJ file to write (replaced whole); the MTL goes next to it")
       ->required();
   add_reading_options(command, args.reading);
-  add_sun_hours_options(command, args.sun_hours, "write");
+  // A sun-hours export writes one path whole: there is nothing for --lights to choose.
+  add_sun_hours_options(command, args.sun_hours, "write")->excludes(command.get_option("--lights"));
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "shadowgen/model/shadowed_scene.h"
 
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "hsr/area.h"
 #include "shadowgen/model/input_error.h"
@@ -8,19 +10,41 @@
 
 namespace shadowgen {
 
-const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_view id,
-                                   const std::string& file) {
-  std::string known;
-  for (const SunPathHours& path : shadowed.sun_paths) {
-    if (path.id == id) return path;
-    known += (known.empty() ? "'" : ", '") + one_line(path.id) + "'";
-  }
+namespace {
+
+// `known`: the ids of the sun paths there are, in order.
+[[noreturn]] void throw_no_sun_path(std::string_view id, const std::vector<std::string>& known,
+                                    const std::string& file) {
+  std::string list;
+  for (const std::string& k : known) list += (list.empty() ? "'" : ", '") + one_line(k) + "'";
   throw InputError(file, "",
-                   known.empty()
+                   list.empty()
                        ? "has no sun path (a `sun` light with from, to and step_min), "
                          "so no sun hours of '" +
                              one_line(id) + "'"
-                       : "has no sun path '" + one_line(id) + "' (its sun paths: " + known + ")");
+                       : "has no sun path '" + one_line(id) + "' (its sun paths: " + list + ")");
+}
+
+}  // namespace
+
+const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_view id,
+                                   const std::string& file) {
+  std::vector<std::string> known;
+  for (const SunPathHours& path : shadowed.sun_paths) {
+    if (path.id == id) return path;
+    known.push_back(path.id);
+  }
+  throw_no_sun_path(id, known, file);
+}
+
+void require_sun_path(const Scene& scene, std::string_view id, const std::string& file) {
+  std::vector<std::string> known;
+  for (const Light& light : scene.lights) {
+    if (!light.sun || light.sun->step_min == 0) continue;  // not an instant of a path
+    if (light.sun->sun_id == id) return;
+    if (known.empty() || known.back() != light.sun->sun_id) known.push_back(light.sun->sun_id);
+  }
+  throw_no_sun_path(id, known, file);
 }
 
 void require_regions(const SunPathHours& path, const std::string& file, std::string_view what) {

@@ -103,6 +103,12 @@ struct ShadowedScene {
 const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_view id,
                                    const std::string& file);
 
+// The same check on a scene read but not yet generated, so that a command asked for a
+// path the scene does not have stops before computing its shadows: throws what
+// sun_path_named throws where no `sun` entry of the scene with from, to and step_min has
+// that id and an instant with the sun up.
+void require_sun_path(const Scene& scene, std::string_view id, const std::string& file);
+
 // Throws InputError naming `file` where `path` was summed into lit areas alone
 // (SunPathHours::regions_kept false), for what needs its sun-hours regions (`what`).
 void require_regions(const SunPathHours& path, const std::string& file, std::string_view what);

@@ -324,7 +324,7 @@ TEST_F(SunHoursCli, BandsChooseTheEdges) {
             (std::vector<std::string>{"0-2h", "2-6h", "6h+"}));
 }
 
-TEST_F(SunHoursCli, AnUnknownPathOrNoSunPathIsBadInputNamingTheDatabase) {
+TEST_F(SunHoursCli, AnUnknownPathOrNoSunPathIsBadInputNamingTheFile) {
   const std::string svg = (dir_ / "map.svg").string(), obj = (dir_ / "map.obj").string();
   const std::string expected =
       "shadowgen: " + garden_.string() + ": has no sun path 'june21' (its sun paths: 'march21')\n";
@@ -350,6 +350,18 @@ TEST_F(SunHoursCli, AnUnknownPathOrNoSunPathIsBadInputNamingTheDatabase) {
       run({"export", courtyard.string(), "--obj", obj, "--sun-hours", "march21"});
   EXPECT_EQ(export_none.code, 1);
   EXPECT_EQ(export_none.err, none);
+  // A scene is checked as soon as it is read, with the same message naming it.
+  for (const char* name : {"garden.json", "courtyard.json"}) {
+    const std::string scene = (kScenes / name).string();
+    const Outcome from_scene = run({"export", scene, "--obj", obj, "--sun-hours", "june21"});
+    EXPECT_EQ(from_scene.code, 1);
+    EXPECT_EQ(from_scene.err,
+              "shadowgen: " + scene + ": " +
+                  (std::string(name) == "garden.json"
+                       ? "has no sun path 'june21' (its sun paths: 'march21')\n"
+                       : "has no sun path (a `sun` light with from, to and step_min), so no "
+                         "sun hours of 'june21'\n"));
+  }
   EXPECT_EQ(files(), (std::vector<std::string>{"courtyard.shadowed.json", "garden.shadowed.json"}));
 }
 
@@ -365,6 +377,11 @@ TEST_F(SunHoursCli, OptionsThatDoNotFitAreUsageErrors) {
   const Outcome lights = render({"--sun-hours", "march21", "--lights", "march21"});
   EXPECT_EQ(lights.code, 2);
   EXPECT_NE(lights.err.find("--lights excludes --sun-hours"), std::string::npos) << lights.err;
+  const Outcome export_lights =
+      run({"export", db, "--obj", obj, "--sun-hours", "march21", "--lights", "march21"});
+  EXPECT_EQ(export_lights.code, 2);
+  EXPECT_NE(export_lights.err.find("--lights excludes --sun-hours"), std::string::npos)
+      << export_lights.err;
   EXPECT_EQ(render({"--bands", "2"}).code, 2);  // bands of no map
   EXPECT_EQ(run({"export", db, "--obj", obj, "--bands", "2"}).code, 2);
   EXPECT_EQ(render({"--sun-hours", "march21", "--bands", "0"}).code, 2);
