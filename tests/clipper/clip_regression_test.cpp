@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "tests/clipper/snap_shortcut_check.h"
 #include "tests/support/clip_check.h"
 #include "tests/support/expect.h"
-#include "tests/clipper/snap_shortcut_check.h"
 #include "tests/support/wkt.h"
 
 namespace shadowgen::test {

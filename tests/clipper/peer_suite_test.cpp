@@ -30,10 +30,10 @@
 #include <vector>
 
 #include "clipper/clip.h"
+#include "tests/clipper/snap_shortcut_check.h"
 #include "tests/support/cgal_oracle.h"
 #include "tests/support/clip_check.h"
 #include "tests/support/expect.h"
-#include "tests/clipper/snap_shortcut_check.h"
 #include "tests/support/wkb.h"
 #include "tests/support/wkt.h"
 
