@@ -46,6 +46,25 @@ bool near_each_other(const Point2& a, const Point2& b, const Point2& from, const
   return std::fabs(a.y - b.y) <= k * (std::fabs(a.y) + std::fabs(b.y));
 }
 
+// A loop put together from its edges' routes, as snap_round returns it: repeats in a row
+// dropped, the last point dropped while it is the first again, and nothing left of a loop
+// snapped to a single point (it bounds nothing).
+class LoopOfRoutes {
+ public:
+  explicit LoopOfRoutes(std::size_t expected) { out_.reserve(expected); }
+  void add(const Point2& p) {
+    if (out_.empty() || out_.back() != p) out_.push_back(p);
+  }
+  Loop2 take() {
+    while (out_.size() > 1 && out_.back() == out_.front()) out_.pop_back();
+    if (out_.size() < 2) out_.clear();
+    return std::move(out_);
+  }
+
+ private:
+  Loop2 out_;
+};
+
 // The common case decided without rounds: operands of a few edges that meet only where
 // edges cross properly or where a vertex lies in an edge's way (on it, or off it within
 // the vertex's pixel: an edge that a cut shared with an earlier clip, a T-junction), every
@@ -188,22 +207,15 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     if (a.edge != b.edge) return a.edge < b.edge;
     return AlongSegment(edges[a.edge].from, edges[a.edge].to)(a.at, b.at);
   });
-  // As SnapRounder::write_back puts the routes together.
   std::size_t k = 0, next = 0;
   for (auto& side : loops) {
     for (Loop2& loop : side) {
-      Loop2 out;
-      out.reserve(loop.size() + through.size());
-      auto push = [&out](const Point2& p) {
-        if (out.empty() || out.back() != p) out.push_back(p);
-      };
+      LoopOfRoutes out(loop.size() + through.size());
       for (std::size_t i = 0; i < loop.size(); ++i, ++k) {
-        push(edges[k].from);
-        for (; next < through.size() && through[next].edge == k; ++next) push(through[next].at);
+        out.add(edges[k].from);
+        for (; next < through.size() && through[next].edge == k; ++next) out.add(through[next].at);
       }
-      while (out.size() > 1 && out.back() == out.front()) out.pop_back();
-      if (out.size() < 2) out.clear();
-      loop = std::move(out);
+      loop = out.take();
     }
   }
   if (stats != nullptr) {
@@ -289,19 +301,13 @@ class SnapRounder {
     for (int side = 0; side < 2; ++side) {
       for (Loop2& loop : loops[side]) {
         const std::size_t n = loop.size();
-        Loop2 out;
-        out.reserve(n);
-        auto push = [&out](const Point2& p) {
-          if (out.empty() || out.back() != p) out.push_back(p);
-        };
+        LoopOfRoutes out(n);
         for (std::size_t i = 0; i < n; ++i, ++k) {
           const Segment& s = segments_[k];
-          push(resolve(s.from));
-          for (const Point2& p : s.route) push(p);
+          out.add(resolve(s.from));
+          for (const Point2& p : s.route) out.add(p);
         }
-        while (out.size() > 1 && out.back() == out.front()) out.pop_back();
-        if (out.size() < 2) out.clear();  // merged into a single point: bounds nothing
-        loop = std::move(out);
+        loop = out.take();
       }
     }
   }

@@ -51,9 +51,9 @@ struct SnapRoundingStats {
 };
 
 // Whether snap_round may take its shortcut (operands of a few edges, well clear of each
-// other but where they cross properly: the edges routed through their crossings, no
-// rounds) or must run the rounds, which give the same loops there (for tests that hold
-// the two side by side).
+// other but where edges cross properly or a vertex lies in an edge's way: the edges
+// routed through those points, no rounds) or must run the rounds, which give the same
+// loops there (for tests that hold the two side by side).
 enum class SnapPath { kShortcutWhereShown, kRoundsOnly };
 
 // The loops of both operands (loops[0] the subject's, loops[1] the clip's, each running
