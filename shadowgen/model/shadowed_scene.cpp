@@ -91,6 +91,16 @@ double part_lit_area(const SunPathHours& path, std::size_t face, std::size_t par
   return parts.at(part).at(k);
 }
 
+void check_lit_shape(const ShadowedScene& shadowed, std::string_view who) {
+  const Scene& scene = shadowed.scene;
+  if (shadowed.lit.size() != scene.faces.size() || shadowed.lit.lights() != scene.lights.size()) {
+    throw std::invalid_argument(
+        std::string(who) + ": lit polygons for " + std::to_string(shadowed.lit.size()) +
+        " faces and " + std::to_string(shadowed.lit.lights()) + " lights, the scene has " +
+        std::to_string(scene.faces.size()) + " and " + std::to_string(scene.lights.size()));
+  }
+}
+
 LitAreas::LitAreas(const ShadowedScene& shadowed)
     : shadowed_(shadowed), place_(shadowed.scene.lights.size()) {
   for (const SunPathHours& path : shadowed.sun_paths) {
@@ -104,7 +114,7 @@ LitAreas::LitAreas(const ShadowedScene& shadowed)
 double LitAreas::operator()(std::size_t face, std::size_t light) const {
   const Place& place = place_.at(light);
   if (place.path) return place.path->lit_area.at(face).at(place.instant);
-  return lit_area(shadowed_.lit.at(face).at(light));
+  return lit_area(shadowed_.lit.at(face, light));
 }
 
 }  // namespace shadowgen

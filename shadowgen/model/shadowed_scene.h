@@ -13,16 +13,10 @@
 
 #include "clipper/polygon.h"
 #include "hsr/polygon3.h"
+#include "shadowgen/model/lit_table.h"
 #include "shadowgen/model/scene.h"
 
 namespace shadowgen {
-
-// One lit detail polygon, lying in the plane of part `part` of its face (Face::parts):
-// the part is known where the polygon is made, so no reader of it has to guess.
-struct LitPolygon {
-  std::size_t part = 0;
-  hsr::Polygon3 polygon;
-};
 
 // Part of a face with a constant number of sun hours over a sun path.
 struct SunHoursRegion {
@@ -89,9 +83,9 @@ struct SunPathHours {
 struct ShadowedScene {
   Scene scene;
   // lit[face][light]: polygons with holes covering exactly the lit region; empty when
-  // unlit, and for the instants of a path in sun_paths (see lit_area_of). The polygons of
-  // one part do not overlap.
-  std::vector<std::vector<std::vector<LitPolygon>>> lit;
+  // unlit. The instants of a path in sun_paths that keeps only their lit areas are lights
+  // the table does not keep (see LitAreas). The polygons of one part do not overlap.
+  LitTable lit;
   std::vector<SunPathHours> sun_paths;
   // Set in a shard of a sun-path run, which only `merge` reads: lights that are not
   // instants of a path are lit in shard 0 alone.
@@ -112,6 +106,10 @@ void require_sun_path(const Scene& scene, std::string_view id, const std::string
 // Throws InputError naming `file` where `path` was summed into lit areas alone
 // (SunPathHours::regions_kept false), for what needs its sun-hours regions (`what`).
 void require_regions(const SunPathHours& path, const std::string& file, std::string_view what);
+
+// Throws std::invalid_argument, the message starting with `who`, where the lit table is
+// not one row per face of one list per light: a caller's mistake, never bad input.
+void check_lit_shape(const ShadowedScene& shadowed, std::string_view who);
 
 // The file messages about a shadowed scene name: its first face's (empty without faces).
 std::string scene_file_of(const ShadowedScene& shadowed);

@@ -85,11 +85,7 @@ void check_writable(const ShadowedScene& shadowed) {
   check_unique_ids(scene.faces, "face");
   check_unique_ids(scene.lights, "light");
   check_unique_ids(scene.views, "view");
-  if (shadowed.lit.size() != scene.faces.size()) {
-    throw std::invalid_argument("shadowed database: lit details for " +
-                                std::to_string(shadowed.lit.size()) + " faces, the scene has " +
-                                std::to_string(scene.faces.size()));
-  }
+  check_lit_shape(shadowed, "shadowed database");
   for (const Light& light : scene.lights) {
     const WriteCheck check("light '" + light.id + "'");
     check.finite(light.direction, "direction");
@@ -154,10 +150,6 @@ void check_writable(const ShadowedScene& shadowed) {
     const WriteCheck check("face '" + scene.faces[f].id + "'");
     if (scene.faces[f].parts.empty()) check.fail("the face has no parts");
     check.polygons(scene.faces[f].parts);
-    if (shadowed.lit[f].size() != scene.lights.size()) {
-      check.fail("lit details for " + std::to_string(shadowed.lit[f].size()) +
-                 " lights, the scene has " + std::to_string(scene.lights.size()));
-    }
     for (const std::vector<LitPolygon>& lit : shadowed.lit[f]) {
       for (const LitPolygon& p : lit) {
         if (p.part >= scene.faces[f].parts.size()) {
@@ -313,7 +305,7 @@ void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPat
 void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
   const Face& face = shadowed.scene.faces[f];
   const std::vector<Light>& lights = shadowed.scene.lights;
-  const std::vector<std::vector<LitPolygon>>& lit = shadowed.lit[f];
+  const LitTable::ConstRow lit = shadowed.lit[f];
   out.begin_object(Layout::kLines);
   out.key("id").value(face.id).key("source_file").value(face.source_file);
   out.key("parts").begin_array(Layout::kLines);

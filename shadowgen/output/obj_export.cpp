@@ -50,9 +50,7 @@ struct SceneRegions {
 
 SceneRegions scene_regions(const ShadowedScene& shadowed) {
   const Scene& scene = shadowed.scene;
-  if (shadowed.lit.size() != scene.faces.size()) {
-    throw std::invalid_argument("obj_export: lit detail polygons not shaped [face][light]");
-  }
+  check_lit_shape(shadowed, "obj_export");
   SceneRegions regions;
   regions.of_face.resize(scene.faces.size());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {

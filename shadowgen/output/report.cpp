@@ -165,19 +165,11 @@ Totals totals_of(const Scene& scene, const std::vector<ReportRow>& rows) {
 
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
   const Scene& scene = shadowed.scene;
-  if (shadowed.lit.size() != scene.faces.size()) {
-    throw std::invalid_argument("report: lit details for " + std::to_string(shadowed.lit.size()) +
-                                " faces, the scene has " + std::to_string(scene.faces.size()));
-  }
+  check_lit_shape(shadowed, "report");
   const LitAreas lit_areas(shadowed);
   std::vector<ReportRow> rows;
   rows.reserve(scene.faces.size() * scene.lights.size());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    if (shadowed.lit[f].size() != scene.lights.size()) {
-      throw std::invalid_argument("report: face '" + scene.faces[f].id + "': lit details for " +
-                                  std::to_string(shadowed.lit[f].size()) +
-                                  " lights, the scene has " + std::to_string(scene.lights.size()));
-    }
     const double face_area = area(scene.faces[f].parts);
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
       ReportRow row;

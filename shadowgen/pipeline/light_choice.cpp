@@ -64,10 +64,10 @@ namespace {
 // one whose lit polygons were dropped cannot lose some of them; one that kept them becomes
 // plain lights.
 void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const std::string& file) {
-  for (const std::vector<std::vector<LitPolygon>>& per_light : shadowed.lit) {
-    if (per_light.size() != keep.size()) {
-      throw std::invalid_argument("keep_lights: lit polygons not shaped [face][light]");
-    }
+  if (shadowed.lit.lights() != keep.size()) {
+    throw std::invalid_argument("keep_lights: lit polygons for " +
+                                std::to_string(shadowed.lit.lights()) + " lights, " +
+                                std::to_string(keep.size()) + " chosen or not");
   }
   std::vector<std::size_t> renumbered(keep.size());
   for (std::size_t l = 0, next = 0; l < keep.size(); ++l) renumbered[l] = keep[l] ? next++ : 0;
@@ -90,7 +90,7 @@ void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const s
   }
   shadowed.sun_paths = std::move(paths);
   keep_marked(shadowed.scene.lights, keep);
-  for (std::vector<std::vector<LitPolygon>>& per_light : shadowed.lit) keep_marked(per_light, keep);
+  shadowed.lit.keep_lights(keep);
 }
 
 }  // namespace

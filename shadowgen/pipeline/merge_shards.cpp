@@ -23,8 +23,7 @@ namespace {
 std::string run_text(const ShadowedScene& shard) {
   ShadowedScene bare;
   bare.scene = shard.scene;
-  bare.lit.assign(shard.scene.faces.size(),
-                  std::vector<std::vector<LitPolygon>>(shard.scene.lights.size()));
+  bare.lit = LitTable(shard.scene.faces.size(), shard.scene.lights.size());
   std::string text = database_json(bare);
   for (const SunPathHours& path : shard.sun_paths) {
     text += "\n" + path.id + " " + std::to_string(path.step_min) + " " + path.from + " " + path.to +

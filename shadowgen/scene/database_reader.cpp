@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 #include <unordered_map>
 #include <utility>
@@ -20,6 +22,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/instant_blocks.h"
 #include "shadowgen/model/number_text.h"
+#include "shadowgen/model/one_line.h"
 #include "shadowgen/sun/civil_time.h"
 
 namespace shadowgen {
@@ -66,9 +69,9 @@ class DatabaseParser {
     if (const std::optional<JsonValue> paths = top.find("sun_paths")) {
       read_sun_paths(*paths, shadowed);
     }
+    shadowed.lit = LitTable(0, shadowed.scene.lights.size(), kept_lights(shadowed));
     const JsonArray faces = top.get("faces").array();
     shadowed.scene.faces.reserve(faces.size());
-    shadowed.lit.reserve(faces.size());
     for (std::size_t i = 0; i < faces.size(); ++i) read_face(faces.at(i), shadowed);
     top.finish();
     check_lit(shadowed);
@@ -77,6 +80,17 @@ class DatabaseParser {
   }
 
  private:
+  // Per light, whether faces may list its lit polygons: not for the instants of a path
+  // whose instant polygons were dropped (only their lit areas are kept).
+  static std::vector<bool> kept_lights(const ShadowedScene& shadowed) {
+    std::vector<bool> kept(shadowed.scene.lights.size(), true);
+    for (const SunPathHours& path : shadowed.sun_paths) {
+      if (path.lit_polygons_kept) continue;
+      for (const std::size_t l : path.instants) kept[l] = false;
+    }
+    return kept;
+  }
+
   // "shard": {"index": K, "count": N}, 1 <= K <= N.
   static ShardPlace read_shard(const JsonValue& value) {
     JsonObject entry = value.object();
@@ -331,18 +345,32 @@ class DatabaseParser {
     if (!std::isfinite(hsr::area(face.parts))) {
       parts_value.fail("the face's area is not a finite number (coordinates too large)");
     }
-    std::vector<std::vector<LitPolygon>> lit(shadowed.scene.lights.size());
+    const std::size_t f = shadowed.lit.size();
+    shadowed.lit.add_face();
     lists_of_face_.push_back(lists_.size());
     for (const auto& [light_id, list] : entry.get("lit").object().entries()) {
       const auto light = light_index_.find(light_id);
       if (light == light_index_.end()) list.fail("no light has this id");
-      lit[light->second] = read_lit(list, face);
+      if (!shadowed.lit.kept(light->second)) {
+        list.fail("the light is an instant of sun path '" +
+                  one_line(path_of(shadowed, light->second)) +
+                  "', whose instant polygons are \"dropped\": only its lit areas are kept");
+      }
+      shadowed.lit.at(f, light->second) = read_lit(list, face);
       lists_.push_back({light->second, list});
     }
     read_sun_hours(entry, face, shadowed);
     entry.finish();
     shadowed.scene.faces.push_back(std::move(face));
-    shadowed.lit.push_back(std::move(lit));
+  }
+
+  static const std::string& path_of(const ShadowedScene& shadowed, std::size_t light) {
+    for (const SunPathHours& path : shadowed.sun_paths) {
+      if (std::find(path.instants.begin(), path.instants.end(), light) != path.instants.end()) {
+        return path.id;
+      }
+    }
+    throw std::logic_error("database reader: light " + std::to_string(light) + " is in no path");
   }
 
   // A part gets the checks a scene's face gets (strict: a part is planar, it was written

@@ -235,11 +235,15 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
   result.shadowed.scene = scene;
   result.shadowed.shard = options.shard;
   const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
-  result.shadowed.lit.assign(faces, std::vector<std::vector<LitPolygon>>(lights));
   result.stats.resize(lights);
   result.shadowed.sun_paths = sun_paths_of(scene);
   PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons,
                 options.sun_hours_regions, options.shard);
+  std::vector<bool> kept(lights);
+  for (std::size_t l = 0; l < lights; ++l) {
+    kept[l] = !sums.in_path(l) || options.keep_instant_polygons;
+  }
+  result.shadowed.lit = LitTable(faces, lights, std::move(kept));
   // The lights this run works out: in a shard, its own instants, and the lights that are
   // no instant in shard 0 alone.
   std::vector<std::size_t> todo;
@@ -283,7 +287,7 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
       sums.add(batch, per_light);
       for (std::size_t i = 0; i < batch.size(); ++i) {
         const std::size_t l = batch[i];
-        if (sums.in_path(l) && !options.keep_instant_polygons) continue;
+        if (!result.shadowed.lit.kept(l)) continue;
         for (std::size_t f = 0; f < faces; ++f)
           result.shadowed.lit[f][l] = std::move(per_light[i][f]);
       }

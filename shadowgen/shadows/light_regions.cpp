@@ -79,12 +79,9 @@ std::vector<LightRegion> regions_of(const ShadowedScene& shadowed, std::size_t f
     throw std::invalid_argument("light_regions: face index " + std::to_string(face) +
                                 " out of range");
   }
-  if (shadowed.lit.size() != scene.faces.size() ||
-      shadowed.lit[face].size() != scene.lights.size()) {
-    throw std::invalid_argument("light_regions: lit detail polygons not shaped [face][light]");
-  }
+  check_lit_shape(shadowed, "light_regions");
   const Face& f = scene.faces[face];
-  const std::vector<std::vector<LitPolygon>>& lit = shadowed.lit[face];
+  const LitTable::ConstRow lit = shadowed.lit[face];
 
   // Parts with area, with their planes.
   std::vector<std::size_t> parts;

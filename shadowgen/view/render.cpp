@@ -14,19 +14,6 @@ namespace {
 
 double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
-void check_lit_shape(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
-  if (shadowed.lit.size() != scene.faces.size()) {
-    throw std::invalid_argument("the shadowed database's lit polygons are not one list per face");
-  }
-  for (const auto& per_light : shadowed.lit) {
-    if (per_light.size() != scene.lights.size()) {
-      throw std::invalid_argument(
-          "the shadowed database's lit polygons are not one list per (face, light)");
-    }
-  }
-}
-
 // Faces split by their light-set regions (shadowgen/shadows/light_regions.h), each piece
 // shaded by the lights of its set; the shadow gets what the lit regions leave.
 class LightSetTiling : public detail::FaceTiling {
@@ -102,7 +89,7 @@ Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm:
 }
 
 Picture render(const ShadowedScene& shadowed, const Camera& camera, const RenderOptions& options) {
-  check_lit_shape(shadowed);
+  check_lit_shape(shadowed, "render");
   LightSetTiling tiling(shadowed, options);
   return detail::paint_picture(shadowed.scene, camera, options, tiling);
 }

@@ -64,6 +64,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "hsr/polygon3.h"
@@ -420,8 +421,7 @@ class ReaderCase {
     // The scene as a database without lit details: what `report` and `generate` start from.
     ShadowedScene unlit;
     unlit.scene = scene;
-    using LitLists = typename decltype(unlit.lit)::value_type;
-    unlit.lit.assign(scene.faces.size(), LitLists(scene.lights.size()));
+    unlit.lit = LitTable(scene.faces.size(), scene.lights.size());
     check_outputs(unlit, "the scene read");
 
     if (generate_ && scene.faces.size() <= kTinyFaces && scene.lights.size() <= kTinyLights &&
@@ -436,8 +436,9 @@ class ReaderCase {
       }
       if (verbose()) {
         std::size_t lit = 0;
-        for (const auto& per_face : generated.shadowed.lit) {
-          for (const auto& per_light : per_face) lit += per_light.size();
+        for (std::size_t f = 0; f < generated.shadowed.lit.size(); ++f) {
+          for (const auto& per_light : std::as_const(generated.shadowed.lit)[f])
+            lit += per_light.size();
         }
         std::fprintf(stderr, "reader_fuzzer: %s: generated %zu lit polygon(s)\n", kind_name(kind_),
                      lit);

@@ -85,7 +85,7 @@ inline ShadowedScene sun_path_by_hand() {
     light.sun = SunInstant{"p", "2026-03-21T1" + std::to_string(k) + ":00", 30, 180.0, 30.0};
     shadowed.scene.lights.push_back(light);
   }
-  shadowed.lit.assign(1, std::vector<std::vector<LitPolygon>>(4));
+  shadowed.lit = LitTable(1, 4, std::vector<bool>(4, false));  // instants: lit areas alone
   SunPathHours path;
   path.id = "p";
   path.step_min = 30;

@@ -50,7 +50,7 @@ ShadowedScene by_hand(int step_min, const std::string& from, const std::string& 
     path.lit_area[0].push_back(roof);
     path.lit_area[1].push_back(wall);
   }
-  shadowed.lit.assign(2, std::vector<std::vector<LitPolygon>>(lit.size()));
+  shadowed.lit = LitTable(2, lit.size(), std::vector<bool>(lit.size(), false));
   shadowed.sun_paths.push_back(std::move(path));
   return shadowed;
 }

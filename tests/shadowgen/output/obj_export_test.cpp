@@ -364,7 +364,7 @@ TEST(ObjExport, OutputIsDeterministic) {
 
 TEST(ObjExport, MisshapedDatabaseThrows) {
   ShadowedScene s = generated(kTwoLights);
-  s.lit.pop_back();
+  s.lit = LitTable(s.scene.faces.size() - 1, s.scene.lights.size());  // a face short
   EXPECT_THROW(obj_export(s, "x.mtl"), std::invalid_argument);
 }
 

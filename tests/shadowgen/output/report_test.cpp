@@ -55,10 +55,10 @@ ShadowedScene scene_with_ids(const std::string& ground, const std::string& sun) 
   // ground: the sun lights all but a 4 × 4 shadow (82); the lamp lights a 1 × 1 square.
   Polygon3 ground_lit = ground_polygon;
   ground_lit.holes.push_back(hole(4, 4, 8, 8));
-  s.lit = {{{{0, ground_lit}}, {{0, rectangle(9, 9, 10, 10)}}},
-           {{}, {}},
-           {{{0, rectangle(0, 0, 4, 4, 3)}},
-            {{0, rectangle(0, 0, 2, 4, 3)}, {0, rectangle(2, 0, 4, 1, 3)}}}};
+  s.lit = LitTable({{{{0, ground_lit}}, {{0, rectangle(9, 9, 10, 10)}}},
+                    {{}, {}},
+                    {{{0, rectangle(0, 0, 4, 4, 3)}},
+                     {{0, rectangle(0, 0, 2, 4, 3)}, {0, rectangle(2, 0, 4, 1, 3)}}}});
   return s;
 }
 
@@ -78,7 +78,7 @@ TEST(ReportCsv, NumbersArePrintedWithSeventeenDigits) {
   ShadowedScene s;
   s.scene.faces = {Face{"thin", {rectangle(0, 0, 0.1, 1.0 / 3.0)}, "scene.json"}};
   s.scene.lights = {directional("sun")};
-  s.lit = {{{{0, rectangle(0, 0, 0.1, 0.2)}}}};
+  s.lit = LitTable({{{{0, rectangle(0, 0, 0.1, 0.2)}}}});
   const double area_value = hsr::area(s.scene.faces[0].parts);
   const double lit_value = lit_area(s.lit[0][0]);
   EXPECT_EQ(report_csv(s), "face_id,light_id,area,lit_area,lit_fraction\nthin,sun," +
@@ -150,7 +150,7 @@ TEST(ReportRows, LitAreaARoundingOverTheAreaIsClampedALargerExcessIsNot) {
   Polygon3 hair_over = face;
   // A rounding outside the face: its right side an ulp further out.
   hair_over.outer[1].x = hair_over.outer[2].x = std::nextafter(0.34, 1.0);
-  s.lit = {{{{0, hair_over}}}, {{{0, rectangle(0, 0, 0.35, 0.04)}}}};
+  s.lit = LitTable({{{{0, hair_over}}}, {{{0, rectangle(0, 0, 0.35, 0.04)}}}});
   ASSERT_GT(hsr::area(hair_over), hsr::area(face));
   const std::vector<ReportRow> rows = report_rows(s);
   EXPECT_EQ(rows[0].lit_area, rows[0].area);
@@ -161,16 +161,16 @@ TEST(ReportRows, LitAreaARoundingOverTheAreaIsClampedALargerExcessIsNot) {
 TEST(ReportRows, NoLightsNoRows) {
   ShadowedScene s = scene_with_ids("ground", "sun");
   s.scene.lights.clear();
-  for (auto& per_face : s.lit) per_face.clear();
+  s.lit = LitTable(s.scene.faces.size(), 0);
   EXPECT_TRUE(report_rows(s).empty());
   EXPECT_EQ(report_csv(s), "face_id,light_id,area,lit_area,lit_fraction\n");
 }
 
 TEST(ReportRows, LitDetailsMustBeShapedFaceByLight) {
   ShadowedScene s = scene_with_ids("ground", "sun");
-  s.lit[1].pop_back();
+  s.lit = LitTable(s.scene.faces.size(), 0);  // no light
   EXPECT_THROW((void)report_rows(s), std::invalid_argument);
-  s.lit.pop_back();
+  s.lit = LitTable(s.scene.faces.size() - 1, 1);  // a face short
   EXPECT_THROW((void)report_csv(s), std::invalid_argument);
 }
 
@@ -181,7 +181,7 @@ TEST(ReportRows, AFaceAtTheTopOfTheRangeHasItsFiniteArea) {
   ShadowedScene s;
   s.scene.faces = {Face{"huge", {rectangle(0, 0, 1e100, 1e100)}, "big.json"}};
   s.scene.lights = {directional("sun")};
-  s.lit = {{{{0, rectangle(0, 0, 1e100, 5e99)}}}};
+  s.lit = LitTable({{{{0, rectangle(0, 0, 1e100, 5e99)}}}});
   const std::vector<ReportRow> rows = report_rows(s);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_DOUBLE_EQ(rows[0].area, 1e200);
@@ -253,13 +253,12 @@ TEST(ReportJson, TotalsAreCompensatedSums) {
   ShadowedScene s;
   s.scene.lights = {directional("sun")};
   s.scene.faces.push_back(Face{"big", {rectangle(0, 0, 1, 1)}, "scene.json"});
-  s.lit.push_back({{}});
   const double side = 1e-8;  // area about 1e-16, below half an ulp of 1
   for (int i = 0; i < 1000; ++i) {
     s.scene.faces.push_back(
         Face{"tiny" + std::to_string(i), {rectangle(0, 0, side, side)}, "scene.json"});
-    s.lit.push_back({{}});
   }
+  s.lit = LitTable(s.scene.faces.size(), 1);
   const double tiny = hsr::area(s.scene.faces[1].parts);
   const nlohmann::json json = nlohmann::json::parse(report_json(s));
   const double total = json["totals"]["area"].get<double>();
@@ -318,9 +317,10 @@ TEST(ReportTable, TopLimitsTheListsAndZeroLeavesThemOut) {
 TEST(ReportTable, TiesKeepSceneOrder) {
   ShadowedScene s;
   s.scene.lights = {directional("sun")};
+  s.lit = LitTable(3, 1);
   for (const char* id : {"c", "a", "b"}) {
+    s.lit[s.scene.faces.size()][0] = {{0, rectangle(0, 0, 1, 2)}};  // each half lit
     s.scene.faces.push_back(Face{id, {rectangle(0, 0, 2, 2)}, "scene.json"});
-    s.lit.push_back({{{0, rectangle(0, 0, 1, 2)}}});  // each half lit
   }
   const std::string table = report_table(s);
   EXPECT_NE(table.find("face_id  area  lit_area  lit_fraction\n"
@@ -349,7 +349,7 @@ TEST(ReportTable, AreasHaveSixSignificantDigits) {
   s.scene.lights = {directional("sun")};
   s.scene.faces = {Face{"big", {rectangle(0, 0, 1000, 1234.5678)}, "scene.json"},
                    Face{"small", {rectangle(0, 0, 1e-4, 1e-4)}, "scene.json"}};
-  s.lit = {{{{0, rectangle(0, 0, 1000, 1000)}}}, {{}}};
+  s.lit = LitTable({{{{0, rectangle(0, 0, 1000, 1000)}}}, {{}}});
   const std::string table = report_table(s);
   EXPECT_NE(table.find("sun           2          1  1.23457e+06     1e+06        0.8100\n"),
             std::string::npos)

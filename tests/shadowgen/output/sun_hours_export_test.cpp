@@ -93,7 +93,7 @@ TEST(SunHoursExport, GroupNamesEscapeTheFaceIdAndSplitAtTheLastAt) {
 TEST(SunHoursExport, AFaceWithoutRegionsGetsTheFirstBandsEmptyGroup) {
   ShadowedScene shadowed = sun_path_by_hand();
   shadowed.scene.faces.push_back({"dot", {{{{5, 0, 0}, {5, 0, 0}, {5, 0, 0}}, {}}}, "test.json"});
-  shadowed.lit.emplace_back(4);
+  shadowed.lit.add_face();
   SunPathHours& path = shadowed.sun_paths[0];
   path.regions.emplace_back();
   path.lit_area.push_back({0, 0, 0, 0});

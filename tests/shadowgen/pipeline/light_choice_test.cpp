@@ -100,7 +100,7 @@ TEST(KeepLights, AnIdTheInputLacksIsRefusedWithTheLightsItHas) {
 TEST(KeepLights, ADatabaseNotShapedFaceByLightIsRefused) {
   ShadowedScene shadowed;
   shadowed.scene = two_lights();
-  shadowed.lit.assign(2, std::vector<std::vector<LitPolygon>>(1));
+  shadowed.lit = LitTable(2, 1);  // one light, the scene has two
   EXPECT_THROW(keep_lights(shadowed, std::vector<std::string>{"down"}, "x.json"),
                std::invalid_argument);
 }

@@ -254,6 +254,18 @@ TEST(DatabaseReaderSunHours, SumsThatDoNotTileTheFaceOrMatchTheLitAreasAreErrors
             "their sun's entry");
 }
 
+// A path whose instant polygons were dropped keeps only its instants' lit areas: a face
+// listing lit polygons for one of them is tampered with, not a database to trust.
+TEST(DatabaseReaderSunHours, LitPolygonsOfAnInstantWhosePolygonsWereDroppedAreAnError) {
+  EXPECT_EQ(sun_path_problem([](nlohmann::json& db) {
+              ASSERT_EQ(db["sun_paths"][0]["instant_polygons"], "dropped");
+              db["faces"][0]["lit"]["p@2"] = nlohmann::json::parse(
+                  R"([{"outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]], "holes": []}])");
+            }),
+            "faces[0].lit['p@2']: the light is an instant of sun path 'p', whose instant "
+            "polygons are \"dropped\": only its lit areas are kept");
+}
+
 TEST(DatabaseReaderSunHours, APathsSpanMustBeTimesInOrderHoldingItsInstants) {
   EXPECT_EQ(
       sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["from"] = "noon"; }),

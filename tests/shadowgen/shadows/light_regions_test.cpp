@@ -312,7 +312,7 @@ TEST(LightRegions, HandBuiltNonPlanarFaceTakesEachLitPolygonToItsOwnPart) {
   s.scene.lights = {light};
   const hsr::Polygon3 lit_floor{{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, {}};  // area 2
   const hsr::Polygon3 lit_wall{{{0, 0, 0}, {0, 4, 0}, {0, 0, 4}}, {}};   // all: 8
-  s.lit = {{{{1, lit_wall}, {0, lit_floor}}}};
+  s.lit = LitTable({{{{1, lit_wall}, {0, lit_floor}}}});
   const std::vector<LightRegion> regions = light_regions(s, 0);
   ASSERT_EQ(sets_of(regions), (std::vector<LightSet>{{}, {0}}));
   EXPECT_EQ(lit_area(regions[0].polygons), 6.0);
@@ -386,7 +386,7 @@ TEST(LightRegions, BadArgumentsThrow) {
   const ShadowedScene s = generated(kTwoLights);
   EXPECT_THROW(light_regions(s, 2), std::invalid_argument);
   ShadowedScene misshaped = s;
-  misshaped.lit[0].pop_back();
+  misshaped.lit = LitTable(s.lit.size(), s.lit.lights() - 1);
   EXPECT_THROW(light_regions(misshaped, 0), std::invalid_argument);
 }
 

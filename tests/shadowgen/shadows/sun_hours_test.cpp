@@ -55,7 +55,9 @@ TEST(SunHours, ASouthWallInAnEmptySiteHasTheHoursTheSunStandsInFrontOfIt) {
   ASSERT_EQ(path.regions[0].size(), 1u);
   EXPECT_NEAR(path.regions[0][0].hours, expected, 1e-9 * expected);
   EXPECT_NEAR(lit_area(path.regions[0][0].polygons), 12.0, 1e-9 * 12.0);
-  EXPECT_TRUE(shadowed.lit[0][path.instants[0]].empty());  // instants' polygons not kept
+  // The instants' polygons are not kept: the table holds no room for them.
+  EXPECT_FALSE(shadowed.lit.kept(path.instants[0]));
+  EXPECT_TRUE(shadowed.lit[0][path.instants[0]].empty());
 }
 
 TEST(SunHours, RegionsTileEachFaceAndSumItsInstantsLitAreas) {
@@ -242,8 +244,13 @@ TEST(SunHours, SameOnAnyThreadCountAndWithTheInstantsPolygonsKept) {
   EXPECT_EQ(lit_area(k.lit[0][noon]), a.sun_paths[0].lit_area[0][12]);
   // The same sums: the regions of both, written alike.
   ShadowedScene without_polygons = k;
-  for (auto& per_light : without_polygons.lit) {
-    for (const std::size_t l : k.sun_paths[0].instants) per_light[l].clear();
+  std::vector<bool> kept_lights(k.lit.lights(), true);
+  for (const std::size_t l : k.sun_paths[0].instants) kept_lights[l] = false;
+  without_polygons.lit = LitTable(k.lit.size(), k.lit.lights(), kept_lights);
+  for (std::size_t f = 0; f < k.lit.size(); ++f) {
+    for (std::size_t l = 0; l < k.lit.lights(); ++l) {
+      if (kept_lights[l]) without_polygons.lit.at(f, l) = k.lit.at(f, l);
+    }
   }
   without_polygons.sun_paths[0].lit_polygons_kept = false;
   EXPECT_EQ(database_json(without_polygons), database_json(a));

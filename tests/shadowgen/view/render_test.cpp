@@ -514,7 +514,8 @@ TEST(Render, DrawsTheDatabaseNotAShadowPass) {
   Light sun;
   sun.id = "sun";
   shadowed.scene.lights = {sun};
-  shadowed.lit = {{{{0, hsr::Polygon3{{{0, 0, 0}, {5, 0, 0}, {5, 10, 0}, {0, 10, 0}}, {}}}}}};
+  shadowed.lit =
+      LitTable({{{{0, hsr::Polygon3{{{0, 0, 0}, {5, 0, 0}, {5, 10, 0}, {0, 10, 0}}, {}}}}}});
   const Camera camera = looking_down({5, 5, 10}, {5, 5, 0}, 10.0);
   const RenderOptions options = picture_size(120, 120);
   const Picture picture = render(shadowed, camera, options);
@@ -572,7 +573,7 @@ TEST(Render, BadCamerasAreRejected) {
   empty.width = 0;
   EXPECT_THROW(render(shadowed, Camera{}, empty), std::invalid_argument);
   ShadowedScene misshapen = shadowed;
-  misshapen.lit.pop_back();
+  misshapen.lit = LitTable(misshapen.lit.size() - 1, misshapen.lit.lights());
   EXPECT_THROW(render(misshapen, Camera{}), std::invalid_argument);
 }
 
