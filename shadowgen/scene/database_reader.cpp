@@ -17,6 +17,7 @@
 #include "hsr/area.h"
 #include "hsr/collinearity.h"
 #include "hsr/parallel.h"
+#include "hsr/plane_chart.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
@@ -228,6 +229,7 @@ class DatabaseParser {
       if (shard) {
         path.nodes.push_back(read_nodes(sum.get("nodes"), path, *shadowed.shard));
         sum.finish();
+        path_values_[p].push_back(sum.value());
         continue;
       }
       const JsonValue regions_value = sum.get("regions");
@@ -459,14 +461,20 @@ class DatabaseParser {
   // Σ × step, up to the rounding along the regions' boundaries (LitChecker::
   // area_tolerance; times the path's hours for the second sum, each instant's lit
   // boundary lying along them), and no instant's lit area exceeds the face's by more.
+  // In a shard, the nodes' sums get the same checks (nodes_problem).
   void check_sun_hours(const ShadowedScene& shadowed) const {
-    if (shadowed.shard) return;  // no regions yet: merge checks the nodes as it joins them
     const std::size_t faces = shadowed.scene.faces.size();
     for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
       const SunPathHours& path = shadowed.sun_paths[p];
       std::vector<std::optional<std::string>> problems(faces);
       hsr::for_each_in_parallel(faces, [&](std::size_t f) {
-        problems[f] = sun_hours_problem(shadowed.scene.faces[f], path, f);
+        const Face& face = shadowed.scene.faces[f];
+        if (!shadowed.shard) {
+          problems[f] = sun_hours_problem(face, path, f);
+          return;
+        }
+        if (path.regions_kept) problems[f] = nodes_problem(face, path, f);
+        if (!problems[f]) problems[f] = lit_areas_problem(face, path, f);
       });
       for (std::size_t f = 0; f < faces; ++f) {
         if (problems[f]) path_values_[p][f].fail(*problems[f]);
@@ -514,6 +522,82 @@ class DatabaseParser {
     return std::nullopt;
   }
 
+  // A shard's nodes on one face, each checked as a face's regions are: the pieces of all
+  // its counts, lifted from their part's chart (the chart FaceSunHours takes: the part's
+  // plane, its vertices kept exactly) onto the part, lie on it and inside it without
+  // overlapping; on each part they list, their areas sum to the part's (a part not listed
+  // is lit at none of the node's instants); no count exceeds the node's instants; and Σ
+  // count × area is the sum of the lit areas of the node's instants, up to that many times
+  // the rounding along the pieces' boundaries (LitChecker::area_tolerance).
+  static std::optional<std::string> nodes_problem(const Face& face, const SunPathHours& path,
+                                                  std::size_t f) {
+    const detail::LitChecker checker(face);
+    const std::vector<SunHoursNode>& nodes = path.nodes[f];
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const SunHoursNode& node = nodes[i];
+      const std::string where = "nodes[" + std::to_string(i) + "]: ";
+      const std::size_t blocks = std::size_t{1} << node.level;
+      const IndexRun instants{
+          std::min(node.first_block * kInstantsPerBlock, path.instants.size()),
+          std::min((node.first_block + blocks) * kInstantsPerBlock, path.instants.size())};
+      std::vector<LitPolygon> pieces;
+      std::vector<std::pair<std::size_t, double>> part_areas;  // (part, Σ its pieces' areas)
+      double count_area = 0.0;
+      for (const SunHoursPieces::Part& part : node.sums.parts) {
+        if (part.part >= face.parts.size()) {
+          return where + "part " + std::to_string(part.part) + " of a face of " +
+                 std::to_string(face.parts.size()) + " parts";
+        }
+        const hsr::Polygon3& polygon = face.parts[part.part];
+        const hsr::Plane3 plane = hsr::plane_of(polygon);
+        if (plane.normal == glm::dvec3(0.0) || !(hsr::area(polygon) > 0.0)) {
+          return where + "sums on part " + std::to_string(part.part) + ", which has no area";
+        }
+        hsr::ChartedPlane chart(plane.normal, polygon.outer[0], hsr::ChartFrom::kWorld);
+        (void)chart.flatten_known(polygon);
+        double on_part = 0.0;
+        for (const SunHoursPieces::Count& count : part.counts) {
+          if (count.count > instants.size()) {
+            return where + "a count of " + std::to_string(count.count) + " instants in a node of " +
+                   std::to_string(instants.size());
+          }
+          for (const clipper::PolygonWithHoles2& piece : count.pieces) {
+            LitPolygon lifted{part.part, chart.lift(piece)};
+            if (const std::optional<std::string> problem = detail::vertex_problem(lifted.polygon)) {
+              return where + "a piece on part " + std::to_string(part.part) + ": " + *problem;
+            }
+            const double a = hsr::area(lifted.polygon);
+            on_part += a;
+            count_area += static_cast<double>(count.count) * a;
+            pieces.push_back(std::move(lifted));
+          }
+        }
+        part_areas.emplace_back(part.part, on_part);
+      }
+      if (std::optional<detail::LitProblem> problem = checker.check(pieces)) {
+        return where + "pieces: " + problem->what;
+      }
+      const double tolerance = checker.area_tolerance(pieces);
+      for (const auto& [part, on_part] : part_areas) {
+        const double part_area = hsr::area(face.parts[part]);
+        if (std::fabs(on_part - part_area) > tolerance) {
+          return where + "the pieces on part " + std::to_string(part) + " cover an area of " +
+                 shortest(on_part) + ", not the part's " + shortest(part_area);
+        }
+      }
+      double lit = 0.0;
+      for (std::size_t k = instants.first; k < instants.last; ++k) {
+        lit += path.lit_area[f].at(k - path.shard_first);
+      }
+      if (std::fabs(count_area - lit) > static_cast<double>(instants.size()) * tolerance) {
+        return where + "the counts times areas sum to " + shortest(count_area) +
+               ", the lit areas of the node's " + std::to_string(instants.size()) +
+               " instants to " + shortest(lit);
+      }
+    }
+    return std::nullopt;
+  }
+
   // A path of lit areas alone: no instant's lit area above the face's, nor a part's above
   // the part's, and the parts' summing the face's, up to the rounding along the face's
   // boundary (LitChecker::area_tolerance).
@@ -537,20 +621,21 @@ class DatabaseParser {
                                                           double tolerance) {
     const std::vector<std::vector<double>>& on_parts = path.part_lit_area[f];
     if (on_parts.empty()) return std::nullopt;
-    for (std::size_t k = 0; k < path.instants.size(); ++k) {
+    for (std::size_t k = 0; k < path.lit_area[f].size(); ++k) {  // a shard's own instants
       double sum = 0.0;
       for (std::size_t i = 0; i < on_parts.size(); ++i) {
         const double part_area = hsr::area(face.parts[i]);
         if (on_parts[i][k] > part_area + tolerance) {
           return "part " + std::to_string(i) + "'s lit area of " + shortest(on_parts[i][k]) +
-                 " at instant " + std::to_string(k) + ", more than the part's area of " +
-                 shortest(part_area);
+                 " at instant " + std::to_string(path.shard_first + k) +
+                 ", more than the part's area of " + shortest(part_area);
         }
         sum += on_parts[i][k];
       }
       if (std::fabs(sum - path.lit_area[f][k]) > tolerance) {
-        return "the parts' lit areas at instant " + std::to_string(k) + " sum to " + shortest(sum) +
-               ", not the face's lit area of " + shortest(path.lit_area[f][k]);
+        return "the parts' lit areas at instant " + std::to_string(path.shard_first + k) +
+               " sum to " + shortest(sum) + ", not the face's lit area of " +
+               shortest(path.lit_area[f][k]);
       }
     }
     return std::nullopt;

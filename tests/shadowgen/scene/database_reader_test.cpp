@@ -10,11 +10,14 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/database.h"
+#include "shadowgen/scene/scene_reader.h"
+#include "shadowgen/shadows/generate.h"
 #include "tests/shadowgen/hand_scenes.h"
 
 namespace shadowgen {
@@ -264,6 +267,78 @@ TEST(DatabaseReaderSunHours, LitPolygonsOfAnInstantWhosePolygonsWereDroppedAreAn
             }),
             "faces[0].lit['p@2']: the light is an instant of sun path 'p', whose instant "
             "polygons are \"dropped\": only its lit areas are kept");
+}
+
+// A shard (generate --instants 1/1) of the courtyard over 21 March, its sums in nodes.
+nlohmann::json court_shard() {
+  GenerateOptions options;
+  options.threads = 1;
+  options.shard = ShardPlace{0, 1};
+  const Scene scene =
+      parse_scene(test::site_scene(test::kCourtyard, test::kMarch21), "court.json").scene;
+  return nlohmann::json::parse(database_json(generate_shadows(scene, options).shadowed));
+}
+
+// That shard with the ground's nodes changed by `change`, read back: its problem.
+std::string shard_problem(const std::function<void(nlohmann::json& ground_nodes)>& change) {
+  nlohmann::json db = court_shard();
+  EXPECT_EQ(db["faces"][0]["id"], "ground");
+  change(db["faces"][0]["sun_hours"]["day"]["nodes"]);
+  const Refusal r = refusal(db.dump());
+  EXPECT_EQ(r.file, "db.json") << r.problem;
+  EXPECT_EQ(r.face, "ground") << r.problem;
+  return r.problem;
+}
+
+// The vertex of the first node's pieces at the ground's corner (-10, -10).
+nlohmann::json& ground_corner(nlohmann::json& nodes) {
+  for (nlohmann::json& count : nodes[0]["parts"][0]["counts"]) {
+    for (nlohmann::json& piece : count["pieces"]) {
+      for (nlohmann::json& point : piece["outer"]) {
+        if (point[0] == -10.0 && point[1] == -10.0) return point;
+      }
+    }
+  }
+  throw std::logic_error("no piece has the ground's corner");
+}
+
+// A shard's sums are checked as a whole database's regions are, node by node: the pieces
+// of all counts tile each part they list, and their counts agree with the lit areas.
+TEST(DatabaseReaderSunHours, AShardsNodesMustTileTheFaceAndAgreeWithTheLitAreas) {
+  EXPECT_EQ(refusal(court_shard().dump()).problem, "(no error)");
+  // A corner moved in leaves a gap.
+  const std::string gap =
+      shard_problem([](nlohmann::json& nodes) { ground_corner(nodes)[0] = -9.75; });
+  EXPECT_TRUE(starts_with(gap,
+                          "faces[0].sun_hours.day: nodes[0]: the pieces on part 0 cover "
+                          "an area of 399."))
+      << gap;
+  EXPECT_TRUE(gap.ends_with(", not the part's 400")) << gap;
+  // Moved out: beyond the ground.
+  const std::string outside =
+      shard_problem([](nlohmann::json& nodes) { ground_corner(nodes)[0] = -10.25; });
+  EXPECT_TRUE(starts_with(outside, "faces[0].sun_hours.day: nodes[0]: pieces: ")) << outside;
+  // A piece given twice overlaps itself.
+  const std::string twice = shard_problem([](nlohmann::json& nodes) {
+    nlohmann::json& pieces = nodes[0]["parts"][0]["counts"].back()["pieces"];
+    pieces.push_back(pieces[0]);
+  });
+  EXPECT_TRUE(starts_with(twice, "faces[0].sun_hours.day: nodes[0]: pieces: ")) << twice;
+  // The same tiling with a piece counted once more no longer sums to the lit areas.
+  const std::string counted = shard_problem([](nlohmann::json& nodes) {
+    nlohmann::json& counts = nodes[0]["parts"][0]["counts"];
+    ASSERT_GE(counts.size(), 2u);
+    nlohmann::json& from = counts[counts.size() - 2]["pieces"];
+    counts.back()["pieces"].push_back(from.back());
+    from.erase(from.size() - 1);
+  });
+  EXPECT_TRUE(starts_with(counted,
+                          "faces[0].sun_hours.day: nodes[0]: the counts times areas "
+                          "sum to "))
+      << counted;
+  const std::string too_many = shard_problem(
+      [](nlohmann::json& nodes) { nodes[0]["parts"][0]["counts"].back()["count"] = 25; });
+  EXPECT_EQ(too_many, "faces[0].sun_hours.day: nodes[0]: a count of 25 instants in a node of 24");
 }
 
 TEST(DatabaseReaderSunHours, APathsSpanMustBeTimesInOrderHoldingItsInstants) {
