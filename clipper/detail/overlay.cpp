@@ -35,9 +35,34 @@ int half_plane(const Point2& v, const Point2& a) {
   return (a.y < v.y || (a.y == v.y && a.x < v.x)) ? 1 : 0;
 }
 
+// A segment's run, lo -> hi or back, in one operand's loops.
+struct EdgeRun {
+  std::uint32_t hi;
+  int operand;
+  int sign;  // +1 for lo -> hi
+};
+
+// The storage of one overlay, kept per thread from call to call: the graph is built anew
+// for every clip, and a clip of small polygons (a few dozen points) would otherwise spend
+// much of its time allocating it.
+struct Workspace {
+  PointIndex index{0};
+  std::vector<std::vector<std::uint32_t>> ids[2];  // per operand, loop: its points' ids
+  std::vector<Edge> edges;
+  std::vector<std::uint32_t> first, incidence, part;
+  // Scratch of the steps that build those.
+  std::vector<EdgeRun> runs;
+  std::vector<std::uint32_t> run_first, fill, seeds, stack, todo;
+  std::vector<char> done;
+};
+
+// Overlays of more points than this give their storage back when done, so that a thread
+// does not hold a huge ground's graph for good.
+constexpr std::size_t kKeptPoints = std::size_t{1} << 14;
+
 class Graph {
  public:
-  explicit Graph(const Boundary (&loops)[2]);
+  Graph(const Boundary (&loops)[2], Workspace& workspace);
 
   OverlayEdges combine() const;
 
@@ -61,12 +86,13 @@ class Graph {
   }
 
   const Boundary (&loops_)[2];
-  PointIndex index_;
-  std::vector<std::vector<std::uint32_t>> ids_[2];
-  std::vector<Edge> edges_;
-  std::vector<std::uint32_t> first_;      // per vertex: its slice of incidence_
-  std::vector<std::uint32_t> incidence_;  // edge indices, counter-clockwise around each vertex
-  std::vector<std::uint32_t> part_;       // per vertex: its connected part
+  Workspace& w_;
+  PointIndex& index_;
+  std::vector<std::vector<std::uint32_t>> (&ids_)[2];
+  std::vector<Edge>& edges_;
+  std::vector<std::uint32_t>& first_;      // per vertex: its slice of incidence_
+  std::vector<std::uint32_t>& incidence_;  // edge indices, counter-clockwise around each vertex
+  std::vector<std::uint32_t>& part_;       // per vertex: its connected part
 };
 
 std::size_t point_count(const Boundary (&loops)[2]) {
@@ -77,10 +103,21 @@ std::size_t point_count(const Boundary (&loops)[2]) {
   return n;
 }
 
-Graph::Graph(const Boundary (&loops)[2]) : loops_(loops), index_(point_count(loops)) {
+Graph::Graph(const Boundary (&loops)[2], Workspace& workspace)
+    : loops_(loops),
+      w_(workspace),
+      index_(workspace.index),
+      ids_(workspace.ids),
+      edges_(workspace.edges),
+      first_(workspace.first),
+      incidence_(workspace.incidence),
+      part_(workspace.part) {
+  index_.reset(point_count(loops));
+  edges_.clear();
   for (int s = 0; s < 2; ++s) {
     ids_[s].resize(loops[s].size());
     for (std::size_t l = 0; l < loops[s].size(); ++l) {
+      ids_[s][l].clear();
       ids_[s][l].reserve(loops[s][l].size());
       for (const Point2& p : loops[s][l]) {
         ids_[s][l].push_back(static_cast<std::uint32_t>(index_.id(p)));
@@ -95,13 +132,10 @@ Graph::Graph(const Boundary (&loops)[2]) : loops_(loops), index_(point_count(loo
 // Every distinct segment once, with each operand's net multiplicity along it: the loops'
 // edges bucketed by their lower end (a counting sort), then merged within each bucket.
 void Graph::collect_edges() {
-  struct Run {
-    std::uint32_t hi;
-    int operand;
-    int sign;  // +1 for lo -> hi
-  };
+  using Run = EdgeRun;
   const std::size_t count = index_.size();
-  std::vector<std::uint32_t> first(count + 1, 0);
+  std::vector<std::uint32_t>& first = w_.run_first;
+  first.assign(count + 1, 0);
   auto each_run = [&](auto&& visit) {
     for (int s = 0; s < 2; ++s) {
       for (const std::vector<std::uint32_t>& ids : ids_[s]) {
@@ -116,8 +150,10 @@ void Graph::collect_edges() {
   };
   each_run([&first](std::uint32_t lo, const Run&) { ++first[lo + 1]; });
   for (std::size_t v = 0; v < count; ++v) first[v + 1] += first[v];
-  std::vector<Run> runs(first.back());
-  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  std::vector<Run>& runs = w_.runs;
+  runs.resize(first.back());
+  std::vector<std::uint32_t>& fill = w_.fill;
+  fill.assign(first.begin(), first.end() - 1);
   each_run([&](std::uint32_t lo, const Run& r) { runs[fill[lo]++] = r; });
   edges_.reserve(runs.size());
   for (std::uint32_t lo = 0; lo < count; ++lo) {
@@ -142,7 +178,8 @@ void Graph::collect_incidence() {
   }
   for (std::size_t v = 0; v < count; ++v) first_[v + 1] += first_[v];
   incidence_.resize(first_.back());
-  std::vector<std::uint32_t> fill(first_.begin(), first_.end() - 1);
+  std::vector<std::uint32_t>& fill = w_.fill;
+  fill.assign(first_.begin(), first_.end() - 1);
   for (std::uint32_t i = 0; i < edges_.size(); ++i) {
     incidence_[fill[edges_[i].lo]++] = i;
     incidence_[fill[edges_[i].hi]++] = i;
@@ -234,7 +271,9 @@ void Graph::spread_windings() {
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   part_.assign(count, kNone);
   // The connected parts, each with its lowest-leftmost vertex.
-  std::vector<std::uint32_t> seeds, stack;
+  std::vector<std::uint32_t>& seeds = w_.seeds;
+  std::vector<std::uint32_t>& stack = w_.stack;
+  seeds.clear();
   for (std::uint32_t v = 0; v < count; ++v) {
     if (part_[v] != kNone) continue;
     const auto part = static_cast<std::uint32_t>(seeds.size());
@@ -260,8 +299,9 @@ void Graph::spread_windings() {
   // Parts are located against each other.
   const std::vector<Winding> outside =
       seeds.size() > 1 ? windings_outside_parts(seeds) : std::vector<Winding>(seeds.size());
-  std::vector<char> done(count, 0);
-  std::vector<std::uint32_t> todo;  // pairs: a vertex, and an edge of it already known
+  std::vector<char>& done = w_.done;
+  done.assign(count, 0);
+  std::vector<std::uint32_t>& todo = w_.todo;  // pairs: a vertex, and an edge known
   for (std::uint32_t part = 0; part < seeds.size(); ++part) {
     const std::uint32_t seed = seeds[part];
     const std::span<std::uint32_t> at = edges_at(seed);
@@ -313,6 +353,11 @@ OverlayEdges Graph::combine() const {
 
 }  // namespace
 
-OverlayEdges overlay(const std::vector<Loop2> (&loops)[2]) { return Graph(loops).combine(); }
+OverlayEdges overlay(const std::vector<Loop2> (&loops)[2]) {
+  thread_local Workspace workspace;
+  OverlayEdges out = Graph(loops, workspace).combine();
+  if (workspace.index.size() > kKeptPoints) workspace = Workspace{};
+  return out;
+}
 
 }  // namespace shadowgen::clipper::detail

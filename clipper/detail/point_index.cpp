@@ -2,11 +2,14 @@
 
 namespace shadowgen::clipper::detail {
 
-PointIndex::PointIndex(std::size_t expected) {
+PointIndex::PointIndex(std::size_t expected) { reset(expected); }
+
+void PointIndex::reset(std::size_t expected) {
   std::size_t capacity = 16;
   while (capacity < 2 * expected) capacity *= 2;  // load factor at most 1/2
   slots_.assign(capacity, 0);
   mask_ = capacity - 1;
+  points_.clear();
   points_.reserve(expected);
 }
 

@@ -17,6 +17,10 @@ class PointIndex {
   // Room for `expected` distinct points without growing.
   explicit PointIndex(std::size_t expected);
 
+  // Empty again, with room for `expected` points, in the storage it has where that is
+  // enough (an index reused clip after clip allocates nothing).
+  void reset(std::size_t expected);
+
   // The id of p, a new one (the current size) if p was not seen before.
   std::size_t id(const Point2& p);
   std::size_t size() const { return points_.size(); }
