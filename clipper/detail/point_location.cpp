@@ -76,4 +76,8 @@ bool add_winding_number(const Point2& p, const Loop2& loop, int& winding) {
   return accumulate_winding(p, loop, winding);
 }
 
+bool add_winding_number(const Midpoint2& p, const Loop2& loop, int& winding) {
+  return accumulate_winding(p, loop, winding);
+}
+
 }  // namespace shadowgen::clipper::detail

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "clipper/polygon.h"
+#include "clipper/predicates.h"
 
 namespace shadowgen::clipper::detail {
 
@@ -26,5 +27,6 @@ Location locate_midpoint(const Point2& a, const Point2& b, const std::vector<Loo
 // Adds the loop's winding number around p (counter-clockwise turns positive) to
 // `winding`; returns false, leaving it partly added, when p lies on the loop.
 bool add_winding_number(const Point2& p, const Loop2& loop, int& winding);
+bool add_winding_number(const Midpoint2& p, const Loop2& loop, int& winding);
 
 }  // namespace shadowgen::clipper::detail

@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <utility>
 
-#include "clipper/box.h"
 #include "clipper/clip.h"
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
+#include "detail/chart_region.h"
 #include "hsr/area.h"
 #include "hsr/plane_chart.h"
 #include "shadowgen/model/scene.h"
@@ -24,41 +24,14 @@ namespace {
 using LightSet = std::vector<std::size_t>;
 using SetPieces = std::vector<std::pair<LightSet, clipper::PolygonSet2>>;
 
-// Every set's pieces split by the lit polygons `clips` of light l: the pieces inside go to
-// the set with l added, those outside stay. A piece is clipped only by the lit polygons
-// whose boxes overlap its own, and one that no lit polygon's box overlaps stays whole
-// without a clip: under many lights (a sun path) most pieces of a face meet only a few
-// of each light's lit polygons, or none.
-SetPieces split_by_light(const SetPieces& regions,
-                         std::span<const clipper::PolygonWithHoles2> clips, std::size_t l) {
-  std::vector<clipper::Box2> boxes;
-  boxes.reserve(clips.size());
-  for (const clipper::PolygonWithHoles2& c : clips) boxes.push_back(clipper::box_of(c));
-  std::vector<std::size_t> near;
-  std::vector<clipper::PolygonWithHoles2> some;
+// Every set's pieces split by light l's region: the pieces inside go to the set with l
+// added, those outside stay (detail/chart_region.h: only pieces along l's shadow edges
+// are clipped).
+SetPieces split_by_light(SetPieces regions, const detail::ChartRegion& region, std::size_t l) {
   SetPieces split;
-  for (const auto& [set, pieces] : regions) {
+  for (auto& [set, pieces] : regions) {
     clipper::PolygonSet2 inside, outside;
-    for (const clipper::PolygonWithHoles2& piece : pieces) {
-      const clipper::Box2 box = clipper::box_of(piece);
-      near.clear();
-      for (std::size_t c = 0; c < clips.size(); ++c) {
-        if (boxes[c].overlaps(box)) near.push_back(c);
-      }
-      if (near.empty()) {
-        outside.push_back(piece);
-        continue;
-      }
-      // Every lit polygon near: clipped against them in place, without copies.
-      if (near.size() < clips.size()) {
-        some.clear();
-        for (const std::size_t c : near) some.push_back(clips[c]);
-      }
-      clipper::ClipResult r =
-          clipper::clip(piece, near.size() == clips.size() ? clips : std::span(some));
-      for (auto& p : r.inside) inside.push_back(std::move(p));
-      for (auto& p : r.outside) outside.push_back(std::move(p));
-    }
+    region.split(std::move(pieces), outside, inside);
     if (!outside.empty()) split.emplace_back(set, std::move(outside));
     if (!inside.empty()) {
       LightSet with = set;
@@ -107,14 +80,15 @@ std::vector<LightRegion> regions_of(const ShadowedScene& shadowed, std::size_t f
     // The part's own vertices are lifted back to themselves exactly; the lit polygons are
     // charted exactly but not remembered (the part's plane places their vertices).
     hsr::ChartedPlane chart(planes[k].normal, f.parts[k].outer[0], hsr::ChartFrom::kWorld);
+    const clipper::PolygonSet2 whole = clipper::normalized({chart.flatten_known(f.parts[k])});
+    if (whole.empty()) continue;  // no area in its chart either
     SetPieces regions;
-    regions.emplace_back(LightSet{}, clipper::normalized({chart.flatten_known(f.parts[k])}));
-    if (regions.back().second.empty()) continue;  // no area in its chart either
+    regions.emplace_back(LightSet{}, whole);
     for (std::size_t l = 0; l < lit.size(); ++l) {
       if (lit_by_part[k][l].empty()) continue;
-      std::vector<clipper::PolygonWithHoles2> clips;
+      clipper::PolygonSet2 clips;
       for (const hsr::Polygon3* q : lit_by_part[k][l]) clips.push_back(chart.flatten(*q));
-      regions = split_by_light(regions, clips, l);
+      regions = split_by_light(std::move(regions), detail::ChartRegion(whole, std::move(clips)), l);
     }
 
     // Pieces of one set cut by different lit polygons of a light share edges: merged.

@@ -38,11 +38,13 @@ struct LightSetLess {
 // deterministic order (empty set first, then by size, then lexicographically).
 //
 // Method: each part of the face (one, or the triangles of a non-planar polygon) is taken
-// to its exact plane chart (hsr/plane_chart.h); the part's region is split
-// by each light's lit polygons in turn with the Weiler–Atherton clipper, every piece
-// going to "inside" (the light joins its set) or "outside". Each lit polygon is clipped
-// against the part it carries (LitPolygon::part). Chart points that are vertices of
-// the part are lifted back to those exact 3D points; every other point (lit polygons'
+// to its exact plane chart (hsr/plane_chart.h); the part's pieces are split
+// by each light's lit polygons in turn, every piece going to "inside" (the light joins
+// its set) or "outside". Only pieces along the light's shadow edges are clipped, with
+// the Weiler–Atherton clipper, against the lit polygons or the shadows near them,
+// whichever are fewer vertices (detail/chart_region.h); the others are sorted by their
+// boxes. Each lit polygon splits the part it carries (LitPolygon::part). Chart points that are
+// vertices of the part are lifted back to those exact 3D points; every other point (lit polygons'
 // vertices, which generation leaves within rounding of the plane, and new crossings)
 // gets the part's plane's coordinate along the dropped axis. So the regions' areas
 // sum to the face's area, and the regions containing a light to its lit area, up to the

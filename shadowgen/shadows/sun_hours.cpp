@@ -13,6 +13,7 @@
 #include "clipper/clip.h"
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
+#include "detail/chart_region.h"
 #include "hsr/area.h"
 #include "hsr/spatial_grid.h"
 
@@ -60,43 +61,6 @@ bool is_whole_part(const hsr::Polygon3& lit, const hsr::Polygon3& part) {
   return true;
 }
 
-std::vector<clipper::Box2> boxes_of(const clipper::PolygonSet2& polygons) {
-  std::vector<clipper::Box2> boxes;
-  boxes.reserve(polygons.size());
-  for (const clipper::PolygonWithHoles2& p : polygons) boxes.push_back(clipper::box_of(p));
-  return boxes;
-}
-
-bool overlaps_any(const clipper::Box2& box, const std::vector<clipper::Box2>& boxes) {
-  return std::any_of(boxes.begin(), boxes.end(),
-                     [&box](const clipper::Box2& b) { return b.overlaps(box); });
-}
-
-// Appends the parts of `pieces` outside a region of the chart to `outside`, those inside
-// to `inside`. The region is `clips` (boxes `clip_boxes`), `outside_boxes` bound the rest
-// of the part: a piece whose box meets no clip's box is outside whole, one whose box meets
-// none of the rest's inside whole, and only the others are clipped (all in one clip).
-void split_pieces(clipper::PolygonSet2 pieces, const clipper::PolygonSet2& clips,
-                  const std::vector<clipper::Box2>& clip_boxes,
-                  const std::vector<clipper::Box2>& outside_boxes, clipper::PolygonSet2& outside,
-                  clipper::PolygonSet2& inside) {
-  clipper::PolygonSet2 split;
-  for (clipper::PolygonWithHoles2& piece : pieces) {
-    const clipper::Box2 box = clipper::box_of(piece);
-    if (!overlaps_any(box, clip_boxes)) {
-      outside.push_back(std::move(piece));
-    } else if (!overlaps_any(box, outside_boxes)) {
-      inside.push_back(std::move(piece));
-    } else {
-      split.push_back(std::move(piece));
-    }
-  }
-  if (split.empty()) return;
-  clipper::ClipResult r = clipper::clip(split, clips);
-  for (auto& p : r.outside) outside.push_back(std::move(p));
-  for (auto& p : r.inside) inside.push_back(std::move(p));
-}
-
 }  // namespace
 
 void FaceSunHours::add(std::span<const LitPolygon> lit) {
@@ -112,18 +76,13 @@ void FaceSunHours::add(std::span<const LitPolygon> lit) {
     }
     clipper::PolygonSet2 clips;
     for (const hsr::Polygon3* q : on_part) clips.push_back(part.chart.flatten(*q));
-    // The part in shadow, so that pieces wholly lit are known by their boxes alone.
-    split_one_up(part, clips, boxes_of(clipper::difference(part.whole, clips)));
+    split_one_up(part, detail::ChartRegion(part.whole, std::move(clips)));
   }
 }
 
-void FaceSunHours::split_one_up(Part& part, const clipper::PolygonSet2& clips,
-                                const std::vector<clipper::Box2>& outside_boxes) {
-  const std::vector<clipper::Box2> clip_boxes = boxes_of(clips);
-  // A piece that no lit polygon's box overlaps stays; one that no shadowed polygon's box
-  // overlaps goes one up; the others, along the lit region's boundary, are split with
-  // one clip per count. Over a sun path most pieces are far from an instant's shadow
-  // edges, so the work per instant follows those edges, not the pieces.
+void FaceSunHours::split_one_up(Part& part, const detail::ChartRegion& region) {
+  // One split per count (detail/chart_region.h): over a sun path most pieces are far from
+  // an instant's shadow edges, so the work per instant follows those edges.
   std::vector<CountPieces> next;
   const auto to = [&next](std::size_t count) -> clipper::PolygonSet2& {
     if (next.empty() || next.back().count != count) next.push_back({count, {}});
@@ -134,7 +93,7 @@ void FaceSunHours::split_one_up(Part& part, const clipper::PolygonSet2& clips,
     CountPieces& c = part.by_count[i];
     clipper::PolygonSet2 stay = std::move(carried), up;
     carried.clear();
-    split_pieces(std::move(c.pieces), clips, clip_boxes, outside_boxes, stay, up);
+    region.split(std::move(c.pieces), stay, up);
     if (!stay.empty()) to(c.count) = std::move(stay);
     const bool gap = i + 1 == part.by_count.size() || part.by_count[i + 1].count != c.count + 1;
     if (gap && !up.empty()) {

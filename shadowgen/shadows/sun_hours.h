@@ -37,6 +37,10 @@
 
 namespace shadowgen {
 
+namespace detail {
+class ChartRegion;
+}
+
 // One face over one sun path, an instant at a time.
 class FaceSunHours {
  public:
@@ -76,10 +80,8 @@ class FaceSunHours {
     std::vector<CountPieces> by_count;  // increasing counts, none empty; not merged
   };
 
-  // Splits `part`'s pieces by a region of its chart (`clips`): pieces inside go one up.
-  // `outside_boxes` bound the rest of the part, the region's complement.
-  static void split_one_up(Part& part, const clipper::PolygonSet2& clips,
-                           const std::vector<clipper::Box2>& outside_boxes);
+  // Splits `part`'s pieces by a region of its chart: pieces inside go one up.
+  static void split_one_up(Part& part, const detail::ChartRegion& region);
 
   std::vector<Part> parts_;
 };

@@ -1,0 +1,50 @@
+#pragma once
+
+// A region of a face part's plane chart (what one light, or one instant of a sun path,
+// lights of the part), held with its complement in the part, so that the part's pieces
+// are sorted into the region's inside and outside with as little clipping as possible.
+// The light-set regions (light_regions.h) and the sun-hours regions (sun_hours.h) split
+// a part's pieces by one light or instant after another this way: over many lights most
+// pieces lie far from any one light's shadow edges, and the work per light then follows
+// those edges, not the pieces.
+
+#include <vector>
+
+#include "clipper/box.h"
+#include "clipper/polygon.h"
+
+namespace shadowgen::detail {
+
+class ChartRegion {
+ public:
+  // `whole`: the part in its chart; `inside`: the region's polygons, within the part. The
+  // complement, whole − inside, is clipped here once. Throws clipper::SnapRoundingError
+  // where that clip's snapping does not settle.
+  ChartRegion(const clipper::PolygonSet2& whole, clipper::PolygonSet2 inside);
+
+  // Appends what of `pieces` (pieces of the part, not overlapping) lies inside the region
+  // to `inside`, the rest to `outside`. A piece whose box meets none of the region's
+  // polygons' boxes goes to `outside` whole, one whose box meets none of the
+  // complement's to `inside` whole, each as it is; the others are clipped in one clip
+  // against those polygons of one side that their boxes meet: the region's or the
+  // complement's, whichever has fewer vertices. (A lit region is often one polygon with
+  // a hole per shadow, its complement those shadows: a piece near one shadow is clipped
+  // against that shadow alone.) Pieces of one call that share edges may come out
+  // merged, so give one call pieces that may merge (one light set, one count). The
+  // result is exact up to the clipper's rounding of crossing points (clipper/clip.h).
+  // Throws clipper::SnapRoundingError as clip() does.
+  void split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outside,
+             clipper::PolygonSet2& inside) const;
+
+ private:
+  struct Side {
+    clipper::PolygonSet2 polygons;
+    std::vector<clipper::Box2> boxes;
+  };
+  static Side side_of(clipper::PolygonSet2 polygons);
+
+  Side inside_;
+  Side outside_;  // the part's complement of the region
+};
+
+}  // namespace shadowgen::detail
