@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/vec3.hpp>
+
+#include "hsr/area.h"
 
 namespace shadowgen::hsr {
 
@@ -125,6 +128,14 @@ ChartAffine ChartedPlane::dot_on_plane(const glm::dvec3& g) const {
     f.c = g[0] * origin_[0] + g[1] * origin_[1] + g[2] * origin_[2];
   }
   return f;
+}
+
+std::optional<OwnChart> own_chart(const Polygon3& polygon) {
+  const Plane3 plane = plane_of(polygon);
+  if (plane.normal == glm::dvec3(0.0) || !(area(polygon) > 0.0)) return std::nullopt;
+  OwnChart own{ChartedPlane(plane.normal, polygon.outer[0], ChartFrom::kWorld), {}};
+  own.flat = own.chart.flatten_known(polygon);
+  return own;
 }
 
 }  // namespace shadowgen::hsr

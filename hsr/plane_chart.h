@@ -24,6 +24,7 @@
 // vertex (ChartFrom).
 
 #include <glm/vec3.hpp>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -115,5 +116,16 @@ class ChartedPlane {
   clipper::Point2 origin_in_chart_;  // the origin's chart point: (0, 0) from itself
   std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> known_;
 };
+
+// A polygon in the chart of its own plane, its vertices known (lift() gives them back
+// exactly): the frame in which a face part's pieces (its light-set and sun-hours regions)
+// are cut, and lifted back onto it.
+struct OwnChart {
+  ChartedPlane chart;
+  clipper::PolygonWithHoles2 flat;  // the polygon in the chart
+};
+
+// None when the polygon has no plane (plane_of gives no normal) or no area.
+std::optional<OwnChart> own_chart(const Polygon3& polygon);
 
 }  // namespace shadowgen::hsr

@@ -548,13 +548,11 @@ class DatabaseParser {
           return where + "part " + std::to_string(part.part) + " of a face of " +
                  std::to_string(face.parts.size()) + " parts";
         }
-        const hsr::Polygon3& polygon = face.parts[part.part];
-        const hsr::Plane3 plane = hsr::plane_of(polygon);
-        if (plane.normal == glm::dvec3(0.0) || !(hsr::area(polygon) > 0.0)) {
+        const std::optional<hsr::OwnChart> own = hsr::own_chart(face.parts[part.part]);
+        if (!own) {
           return where + "sums on part " + std::to_string(part.part) + ", which has no area";
         }
-        hsr::ChartedPlane chart(plane.normal, polygon.outer[0], hsr::ChartFrom::kWorld);
-        (void)chart.flatten_known(polygon);
+        const hsr::ChartedPlane& chart = own->chart;
         double on_part = 0.0;
         for (const SunHoursPieces::Count& count : part.counts) {
           if (count.count > instants.size()) {

@@ -56,12 +56,14 @@ std::vector<LightRegion> regions_of(const ShadowedScene& shadowed, std::size_t f
   const Face& f = scene.faces[face];
   const LitTable::ConstRow lit = shadowed.lit[face];
 
-  // Parts with area, with their planes.
-  std::vector<std::size_t> parts;
-  std::vector<hsr::Plane3> planes(f.parts.size());
+  // Parts with area, each in its own chart: the part's vertices are lifted back to
+  // themselves exactly; the lit polygons are charted exactly but not remembered (the
+  // part's plane places their vertices).
+  std::vector<std::pair<std::size_t, hsr::OwnChart>> parts;
   for (std::size_t k = 0; k < f.parts.size(); ++k) {
-    planes[k] = hsr::plane_of(f.parts[k]);
-    if (planes[k].normal != glm::dvec3(0.0) && area(f.parts[k]) > 0.0) parts.push_back(k);
+    if (std::optional<hsr::OwnChart> own = hsr::own_chart(f.parts[k])) {
+      parts.emplace_back(k, std::move(*own));
+    }
   }
   if (parts.empty()) return {};
 
@@ -76,11 +78,9 @@ std::vector<LightRegion> regions_of(const ShadowedScene& shadowed, std::size_t f
   }
 
   std::map<LightSet, std::vector<LitPolygon>, LightSetLess> by_set;
-  for (const std::size_t k : parts) {
-    // The part's own vertices are lifted back to themselves exactly; the lit polygons are
-    // charted exactly but not remembered (the part's plane places their vertices).
-    hsr::ChartedPlane chart(planes[k].normal, f.parts[k].outer[0], hsr::ChartFrom::kWorld);
-    const clipper::PolygonSet2 whole = clipper::normalized({chart.flatten_known(f.parts[k])});
+  for (const auto& [k, own] : parts) {
+    const hsr::ChartedPlane& chart = own.chart;
+    const clipper::PolygonSet2 whole = clipper::normalized({own.flat});
     if (whole.empty()) continue;  // no area in its chart either
     SetPieces regions;
     regions.emplace_back(LightSet{}, whole);

@@ -21,16 +21,11 @@ namespace shadowgen {
 
 FaceSunHours::FaceSunHours(const Face& face) {
   for (std::size_t k = 0; k < face.parts.size(); ++k) {
-    const hsr::Plane3 plane = hsr::plane_of(face.parts[k]);
-    if (plane.normal == glm::dvec3(0.0) || !(hsr::area(face.parts[k]) > 0.0)) continue;
     // The part's own vertices are lifted back to themselves exactly; lit polygons are
     // charted exactly but not remembered (the part's plane places their vertices).
-    Part part{k,
-              face.parts[k],
-              hsr::ChartedPlane(plane.normal, face.parts[k].outer[0], hsr::ChartFrom::kWorld),
-              {},
-              {}};
-    part.whole = clipper::normalized({part.chart.flatten_known(face.parts[k])});
+    std::optional<hsr::OwnChart> own = hsr::own_chart(face.parts[k]);
+    if (!own) continue;
+    Part part{k, face.parts[k], std::move(own->chart), clipper::normalized({own->flat}), {}};
     if (part.whole.empty()) continue;  // no area in its chart either
     part.by_count.push_back({0, part.whole});
     parts_.push_back(std::move(part));

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -92,6 +93,19 @@ TEST(ChartedPlane, LiftsKnownVerticesExactly) {
       }
     }
   }
+}
+
+TEST(OwnChart, LiftsThePolygonsVerticesBackAndRefusesPolygonsWithoutArea) {
+  const Polygon3 polygon = tilted_polygon(dvec3(1e8, -3e7, 2e8));
+  const std::optional<OwnChart> own = own_chart(polygon);
+  ASSERT_TRUE(own.has_value());
+  EXPECT_EQ(own->chart.normal(), plane_of(polygon).normal);
+  EXPECT_EQ(own->chart.lift(own->flat).outer, polygon.outer);
+  EXPECT_EQ(own->chart.lift(own->flat).holes, polygon.holes);
+  // On a line, a point, nothing: no chart.
+  EXPECT_FALSE(own_chart(Polygon3{{dvec3(0, 0, 0), dvec3(1, 1, 1), dvec3(2, 2, 2)}, {}}));
+  EXPECT_FALSE(own_chart(Polygon3{{dvec3(1, 2, 3), dvec3(1, 2, 3), dvec3(1, 2, 3)}, {}}));
+  EXPECT_FALSE(own_chart(Polygon3{}));
 }
 
 TEST(ChartedPlane, WorldChartIsExact) {
