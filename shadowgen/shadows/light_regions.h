@@ -40,10 +40,11 @@ struct LightSetLess {
 // Method: each part of the face (one, or the triangles of a non-planar polygon) is taken
 // to its exact plane chart (hsr/plane_chart.h); the part's pieces are split
 // by each light's lit polygons in turn, every piece going to "inside" (the light joins
-// its set) or "outside". Only pieces along the light's shadow edges are clipped, with
-// the Weiler–Atherton clipper, against the lit polygons or the shadows near them,
-// whichever are fewer vertices (detail/chart_region.h); the others are sorted by their
-// boxes. Each lit polygon splits the part it carries (LitPolygon::part). Chart points that are
+// its set) or "outside". Only pieces that the light's shadow edges pass through are
+// clipped, with the Weiler–Atherton clipper, against the lit polygons near them; the
+// others are sorted by their boxes or, exactly, by where they lie (detail/chart_region.h,
+// ChartRegion::Sorting::kExact). Each lit polygon splits the part it carries
+// (LitPolygon::part). Chart points that are
 // vertices of the part are lifted back to those exact 3D points; every other point (lit polygons'
 // vertices, which generation leaves within rounding of the plane, and new crossings)
 // gets the part's plane's coordinate along the dropped axis. So the regions' areas

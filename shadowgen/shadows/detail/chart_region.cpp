@@ -27,9 +27,9 @@ ChartRegion::Side ChartRegion::side_of(clipper::PolygonSet2 polygons) {
 
 ChartRegion::ChartRegion(const clipper::PolygonSet2& whole, clipper::PolygonSet2 inside)
     : inside_(side_of(std::move(inside))),
-      outside_(side_of(clipper::difference(whole, inside_.polygons))) {}
+      outside_boxes_(side_of(clipper::difference(whole, inside_.polygons)).boxes) {}
 
-void ChartRegion::split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outside,
+void ChartRegion::split(clipper::PolygonSet2 pieces, Sorting sorting, clipper::PolygonSet2& outside,
                         clipper::PolygonSet2& inside) const {
   // By boxes first: a piece whose box meets no polygon of one side lies in the other.
   clipper::PolygonSet2 near_edges;
@@ -38,7 +38,7 @@ void ChartRegion::split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outsi
     const clipper::Box2 box = clipper::box_of(piece);
     if (!overlaps_any(box, inside_.boxes)) {
       outside.push_back(std::move(piece));
-    } else if (!overlaps_any(box, outside_.boxes)) {
+    } else if (!overlaps_any(box, outside_boxes_)) {
       inside.push_back(std::move(piece));
     } else {
       near_edges.push_back(std::move(piece));
@@ -46,44 +46,40 @@ void ChartRegion::split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outsi
     }
   }
   if (near_edges.empty()) return;
+  if (sorting == Sorting::kBoxes) {
+    clipper::ClipResult r = clipper::clip(near_edges, inside_.polygons);
+    for (auto& p : r.outside) outside.push_back(std::move(p));
+    for (auto& p : r.inside) inside.push_back(std::move(p));
+    return;
+  }
 
-  // The rest against one side, the region's polygons or the complement's, whichever has
-  // fewer vertices among those whose boxes meet theirs (closed boxes, as clip() takes
+  // The region's polygons whose boxes meet theirs (closed boxes, as clip() takes
   // operands that touch: clipper/box.h).
-  const auto near = [](const Side& side, const std::vector<clipper::Box2>& boxes,
-                       std::size_t& vertices) {
+  const auto near = [this](const std::vector<clipper::Box2>& boxes) {
     std::vector<const clipper::PolygonWithHoles2*> found;
-    vertices = 0;
-    for (std::size_t k = 0; k < side.polygons.size(); ++k) {
-      const clipper::Box2& b = side.boxes[k];
+    for (std::size_t k = 0; k < inside_.polygons.size(); ++k) {
+      const clipper::Box2& b = inside_.boxes[k];
       if (std::any_of(boxes.begin(), boxes.end(),
                       [&b](const clipper::Box2& c) { return c.touches_or_overlaps(b); })) {
-        found.push_back(&side.polygons[k]);
-        vertices += clipper::vertex_count(side.polygons[k]);
+        found.push_back(&inside_.polygons[k]);
       }
     }
     return found;
   };
-  std::size_t inside_vertices = 0, outside_vertices = 0;
-  std::vector<const clipper::PolygonWithHoles2*> by = near(inside_, near_boxes, inside_vertices);
-  std::vector<const clipper::PolygonWithHoles2*> near_outside =
-      near(outside_, near_boxes, outside_vertices);
-  const bool by_complement = outside_vertices < inside_vertices;
-  if (by_complement) by = std::move(near_outside);
-  clipper::PolygonSet2& in_by = by_complement ? outside : inside;
-  clipper::PolygonSet2& out_by = by_complement ? inside : outside;
+  const std::vector<const clipper::PolygonWithHoles2*> by = near(near_boxes);
 
-  // A piece whose boundary meets none of that side's lies wholly in it or wholly out of
-  // it, decided exactly (clipper/placement.h); the others are clipped, all in one clip.
+  // A piece whose boundary the region's does not pass through lies wholly in it or
+  // wholly out of it, decided exactly (clipper/placement.h); the others are clipped, all
+  // in one clip.
   clipper::PolygonSet2 crossing;
   std::vector<clipper::Box2> crossing_boxes;
   for (std::size_t i = 0; i < near_edges.size(); ++i) {
     switch (clipper::placement(near_edges[i], by)) {
       case clipper::Placement::kInside:
-        in_by.push_back(std::move(near_edges[i]));
+        inside.push_back(std::move(near_edges[i]));
         break;
       case clipper::Placement::kOutside:
-        out_by.push_back(std::move(near_edges[i]));
+        outside.push_back(std::move(near_edges[i]));
         break;
       case clipper::Placement::kMeeting:
         crossing.push_back(std::move(near_edges[i]));
@@ -93,14 +89,10 @@ void ChartRegion::split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outsi
   }
   if (crossing.empty()) return;
   clipper::PolygonSet2 clips;
-  std::size_t unused = 0;
-  for (const clipper::PolygonWithHoles2* p :
-       near(by_complement ? outside_ : inside_, crossing_boxes, unused)) {
-    clips.push_back(*p);
-  }
+  for (const clipper::PolygonWithHoles2* p : near(crossing_boxes)) clips.push_back(*p);
   clipper::ClipResult r = clipper::clip(crossing, clips);
-  for (auto& p : r.inside) in_by.push_back(std::move(p));
-  for (auto& p : r.outside) out_by.push_back(std::move(p));
+  for (auto& p : r.inside) inside.push_back(std::move(p));
+  for (auto& p : r.outside) outside.push_back(std::move(p));
 }
 
 }  // namespace shadowgen::detail

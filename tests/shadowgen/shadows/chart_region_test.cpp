@@ -39,14 +39,18 @@ TEST(ChartRegion, SplitsPiecesIntoTheRegionsInsideAndOutside) {
         pieces.push_back(square(x, y, x + w, y + 1));
       }
     }
-    PolygonSet2 inside, outside;
-    chart_region.split(pieces, outside, inside);
-    SCOPED_TRACE("round " + std::to_string(round));
-    const double tolerance = 1e-12 * n * n;
-    EXPECT_NEAR(test::exact_area_of_pieces(inside), exact.inside, tolerance);
-    EXPECT_NEAR(test::exact_area_of_pieces(outside), exact.outside, tolerance);
-    EXPECT_NEAR(test::exact_area(inside), exact.inside, tolerance);    // no overlap
-    EXPECT_NEAR(test::exact_area(outside), exact.outside, tolerance);  // no overlap
+    for (const ChartRegion::Sorting sorting :
+         {ChartRegion::Sorting::kBoxes, ChartRegion::Sorting::kExact}) {
+      PolygonSet2 inside, outside;
+      chart_region.split(pieces, sorting, outside, inside);
+      SCOPED_TRACE("round " + std::to_string(round) +
+                   (sorting == ChartRegion::Sorting::kBoxes ? ", boxes" : ", exact"));
+      const double tolerance = 1e-12 * n * n;
+      EXPECT_NEAR(test::exact_area_of_pieces(inside), exact.inside, tolerance);
+      EXPECT_NEAR(test::exact_area_of_pieces(outside), exact.outside, tolerance);
+      EXPECT_NEAR(test::exact_area(inside), exact.inside, tolerance);    // no overlap
+      EXPECT_NEAR(test::exact_area(outside), exact.outside, tolerance);  // no overlap
+    }
   }
 }
 
@@ -55,7 +59,7 @@ TEST(ChartRegion, ARegionThatIsTheWholePartTakesEveryPieceWithoutAClip) {
   const ChartRegion everything(whole, whole);
   const PolygonSet2 pieces{square(0, 0, 1, 4), square(1, 0, 4, 4)};
   PolygonSet2 inside, outside;
-  everything.split(pieces, outside, inside);
+  everything.split(pieces, ChartRegion::Sorting::kBoxes, outside, inside);
   EXPECT_TRUE(outside.empty());
   ASSERT_EQ(inside.size(), 2u);  // as they were: not merged by a clip
   EXPECT_EQ(inside[0].outer, pieces[0].outer);
