@@ -24,6 +24,7 @@
 #include "shadowgen/shadows/generate.h"
 #include "tests/shadowgen/hand_scenes.h"
 #include "tests/support/cgal_oracle.h"
+#include "tests/support/relative_error.h"
 
 namespace shadowgen {
 namespace {
@@ -32,6 +33,7 @@ using LightSet = std::vector<std::size_t>;
 using test::generated;
 using test::kDartUnderRoof;
 using test::kTwoLights;
+using test::relative_error;
 
 std::size_t face_index(const Scene& scene, const std::string& id) {
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
@@ -52,11 +54,6 @@ double region_area(const std::vector<LightRegion>& regions, const LightSet& set)
     if (r.lights == set) return lit_area(r.polygons);
   }
   return 0.0;
-}
-
-double relative_error(double actual, double expected) {
-  const double scale = std::max(std::abs(expected), 1e-300);
-  return std::abs(actual - expected) / scale;
 }
 
 // Every polygon of a region lies in the plane of some part of its face (within rounding of

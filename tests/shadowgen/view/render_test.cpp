@@ -28,6 +28,7 @@
 #include "tests/shadowgen/hand_scenes.h"
 #include "tests/shadowgen/view/cameras.h"
 #include "tests/support/cgal_oracle.h"
+#include "tests/support/relative_error.h"
 
 namespace shadowgen {
 namespace {
@@ -35,10 +36,7 @@ namespace {
 using test::generated;
 using test::looking_down;
 using test::picture_size;
-
-double relative_error(double actual, double expected) {
-  return std::abs(actual - expected) / std::max(std::abs(expected), 1e-300);
-}
+using test::relative_error;
 
 bool contains(const std::vector<std::size_t>& set, std::size_t light) {
   return std::find(set.begin(), set.end(), light) != set.end();
