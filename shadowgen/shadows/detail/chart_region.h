@@ -51,13 +51,8 @@ class ChartRegion {
              clipper::PolygonSet2& inside) const;
 
  private:
-  struct Side {
-    clipper::PolygonSet2 polygons;
-    std::vector<clipper::Box2> boxes;
-  };
-  static Side side_of(clipper::PolygonSet2 polygons);
-
-  Side inside_;
+  clipper::PolygonSet2 inside_;
+  std::vector<clipper::Box2> inside_boxes_;
   std::vector<clipper::Box2> outside_boxes_;  // of the part's complement of the region
 };
 
