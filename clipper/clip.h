@@ -53,11 +53,12 @@
 // wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
 // count such folds as they are, so the pieces are the Boolean combination of the snapped
 // operands, which differ from the input by the pixels that moved them. The snapping is
-// iterated (at most 17 rounds of changes), and nothing proves that it always ends with
-// edges meeting only at vertices. Where the limit stops it, the snapped edges are
-// checked exactly: if some still cross or end inside another, the pieces would still be
-// valid loops but their areas could be wrong by more than the pixels account for
-// (README, Limits), so the call throws SnapRoundingError instead of returning them.
+// iterated, and nothing proves that it always ends with edges meeting only at vertices:
+// some inputs cycle. After 17 rounds of changes it stops at the first state whose edges
+// are checked exactly to meet only at vertices, within 34 rounds more; if none is
+// reached, the pieces would still be valid loops but their areas could be wrong by more
+// than the pixels account for (README, Limits), so the call throws SnapRoundingError
+// instead of returning them.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
@@ -94,18 +95,20 @@ auto failing_as(std::size_t index, Work&& work) {
 }
 
 // For tests of that failure, which no known input causes: while one lives, the snapping
-// stops after `rounds` rounds of changes instead of 17 (with 0 it changes nothing, and
+// stops after `rounds` rounds of changes instead of 17, and looks `search` rounds more
+// instead of 34 for edges meeting only at vertices (with 0 and 0 it changes nothing, and
 // operands whose edges cross or end inside one another fail). Process-wide; the previous
-// limit comes back when it ends.
+// bounds come back when it ends.
 class SnapRoundLimitForTesting {
  public:
-  explicit SnapRoundLimitForTesting(int rounds);
+  explicit SnapRoundLimitForTesting(int rounds, int search = 0);
   ~SnapRoundLimitForTesting();
   SnapRoundLimitForTesting(const SnapRoundLimitForTesting&) = delete;
   SnapRoundLimitForTesting& operator=(const SnapRoundLimitForTesting&) = delete;
 
  private:
   int previous_;
+  int previous_search_;
 };
 
 struct ClipResult {

@@ -12,16 +12,22 @@
 namespace shadowgen::clipper::detail {
 namespace {
 
-// Rounds of changes after which the snapping stops. A round looks only at what the
-// previous one changed; a second round finds something on near-degenerate input only, a
-// third was seen on adversarial input alone. The bound keeps the cost finite whatever the
-// input: some inputs (a route that comes back to a point it passes, on self-crossing
-// boundaries) cut and put back the same point round after round, and are left as the
-// limit finds them, provided their edges meet only at vertices (noded, snap_convergence.h).
+// Rounds of changes after which the snapping looks for an end. A round looks only at
+// what the previous one changed; a second round finds something on near-degenerate input
+// only, a third was seen on adversarial input alone. Some inputs never settle: a route
+// that comes back to a point it passes cuts out the stretch between, and the point is
+// found in its way again (on self-crossing boundaries, and where dozens of rounded
+// crossings crowd within a few pixels, as the shadow edges of a sun path fanning out from
+// one corner do). Such a cycle of rounds passes through states whose edges meet only at
+// vertices (noded, snap_convergence.h), so past the limit the rounds go on until one of
+// them is reached, for kSearchRounds more at most: one that was seen lasted six rounds,
+// and half of its states were noded.
 constexpr int kMaxRounds = 17;
+constexpr int kSearchRounds = 34;
 
-// The limit in force: kMaxRounds but while a SnapRoundLimitForTesting lives (clip.h).
+// The bounds in force: these but while a SnapRoundLimitForTesting lives (clip.h).
 std::atomic<int> round_limit{kMaxRounds};
+std::atomic<int> search_rounds{kSearchRounds};
 
 // Whether two edges meet only at a common endpoint or as the very same segment (exact):
 // no proper crossing, no endpoint of one inside the other.
@@ -39,6 +45,8 @@ bool meet_at_vertices(const Point2& a0, const Point2& a1, const Point2& b0, cons
 }  // namespace
 
 int snap_round_limit() { return round_limit.load(std::memory_order_relaxed); }
+
+int snap_round_search() { return search_rounds.load(std::memory_order_relaxed); }
 
 bool noded(const std::vector<Loop2> (&loops)[2]) {
   struct Edge {
@@ -67,9 +75,13 @@ bool noded(const std::vector<Loop2> (&loops)[2]) {
 namespace shadowgen::clipper {
 
 // The test hook of clip.h, here beside the limit it sets.
-SnapRoundLimitForTesting::SnapRoundLimitForTesting(int rounds)
-    : previous_(detail::round_limit.exchange(std::max(rounds, 0))) {}
+SnapRoundLimitForTesting::SnapRoundLimitForTesting(int rounds, int search)
+    : previous_(detail::round_limit.exchange(std::max(rounds, 0))),
+      previous_search_(detail::search_rounds.exchange(std::max(search, 0))) {}
 
-SnapRoundLimitForTesting::~SnapRoundLimitForTesting() { detail::round_limit.store(previous_); }
+SnapRoundLimitForTesting::~SnapRoundLimitForTesting() {
+  detail::round_limit.store(previous_);
+  detail::search_rounds.store(previous_search_);
+}
 
 }  // namespace shadowgen::clipper

@@ -11,9 +11,11 @@
 
 namespace shadowgen::clipper::detail {
 
-// The number of rounds of changes after which the snapping stops: a fixed bound, but
-// while a SnapRoundLimitForTesting (clipper/clip.h) lives.
+// The number of rounds of changes after which the snapping stops at the first state whose
+// edges are noded, and the number of rounds more it may take to reach one: fixed bounds,
+// but while a SnapRoundLimitForTesting (clipper/clip.h) lives.
 int snap_round_limit();
+int snap_round_search();
 
 // Whether the loops' edges all meet only at vertices: the plane graph the overlay needs,
 // which a round limit can leave the snapping short of.

@@ -260,9 +260,11 @@ class SnapRounder {
     changed_.assign(segments_.size(), 1);
   }
 
-  SnapRoundingStats run() {
+  // `loops` are those the rounder was made from: their sizes tell write_back where each
+  // loop ends.
+  SnapRoundingStats run(const std::vector<Loop2> (&loops)[2]) {
     SnapRoundingStats stats;
-    const int limit = snap_round_limit();
+    const int limit = snap_round_limit(), last = limit + snap_round_search();
     for (int round = 0;; ++round) {
       build_pieces();
       Contacts found;
@@ -273,9 +275,10 @@ class SnapRounder {
           [this](std::size_t i) { return pieces_[i].fresh; },
           [&finder](std::size_t i, std::size_t j) { finder.find(i, j); });
       if (found.through.empty() && found.merges.empty()) break;
-      if (round == limit) {
-        // Stopped with this round's changes not made: whether the edges meet only at
-        // vertices is then checked exactly (snap_round).
+      // Past the limit, stopped with this round's changes not made at the first state
+      // whose edges meet only at vertices (snap_convergence.cpp: cycles pass through
+      // such states), or at the last round allowed: snap_round then checks exactly.
+      if (round >= limit && (round == last || noded_now(loops))) {
         stats.converged = false;
         break;
       }
@@ -293,6 +296,13 @@ class SnapRounder {
       }
     }
     return stats;
+  }
+
+  // Whether the loops as the routes stand have edges meeting only at vertices.
+  bool noded_now(const std::vector<Loop2> (&loops)[2]) const {
+    std::vector<Loop2> snapped[2] = {loops[0], loops[1]};
+    write_back(snapped);
+    return noded(snapped);
   }
 
   // The loops, each edge replaced by its route.
@@ -520,7 +530,7 @@ class SnapRounder {
 void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats, SnapPath path) {
   if (path == SnapPath::kShortcutWhereShown && snap_round_separated(loops, stats)) return;
   SnapRounder rounder(loops);
-  const SnapRoundingStats local = rounder.run();
+  const SnapRoundingStats local = rounder.run(loops);
   if (stats != nullptr) *stats = local;
   if (local.converged) {
     rounder.write_back(loops);

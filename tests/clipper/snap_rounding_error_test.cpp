@@ -1,7 +1,8 @@
 // Snap rounding that does not settle (clip.h, Limit): the clipper throws
-// SnapRoundingError instead of returning pieces whose areas could be wrong. No known
-// input is left with crossing edges by the 17 rounds allowed, so the tests lower the
-// limit (SnapRoundLimitForTesting) until ordinary inputs run into it.
+// SnapRoundingError instead of returning pieces whose areas could be wrong. Inputs that
+// cycle are stopped at a state whose edges meet only at vertices; no known input fails to
+// reach one, so the tests lower the bounds (SnapRoundLimitForTesting) until ordinary
+// inputs run into them.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include "clipper/detail/snap_rounding.h"
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
+#include "tests/support/cgal_oracle.h"
 
 namespace shadowgen::clipper {
 namespace {
@@ -92,6 +94,44 @@ TEST(SnapRoundingError, AGraphNodedAtTheLimitComesBack) {
   EXPECT_NO_THROW(detail::snap_round(loops, &stats));
   EXPECT_FALSE(stats.converged);
   EXPECT_NO_THROW(clip(subject, clip_region));
+}
+
+// Found on a city's sun path: six shadow triangles of a day's instants fanning out from
+// three apexes within 3e-13 of one point, clipped out of the roof they fall on. Their
+// rounded crossings crowd within a few pixels, and the rounds cut and put back the same
+// points with a period of six rounds, three of them noded: stopped at the 17th, the
+// edges still crossed and the clip failed. Past the limit the rounds now go on to the
+// next noded state, and the pieces are exact on it.
+TEST(SnapRoundingError, ACycleOfRoundsStopsAtItsNextNodedState) {
+  const PolygonWithHoles2 roof = rect(0, 0, 20, 20);
+  const Point2 a{0x1.33990c5747a4p+4, 0x1.ecabf24b3fc4p+3};
+  const Point2 b{0x1.33990c5747ap+4, 0x1.ecabf24b3fbcp+3};
+  const Point2 c{0x1.33990c5747ap+4, 0x1.ecabf24b3fbap+3};
+  const std::vector<PolygonWithHoles2> shadows = {
+      {{{0x1.36769e82486p+2, 0x1.1fd7f46a50d9p+4}, a, {0x1.46ef7e9a46a8p+2, 0x1.274fa9301a58p+4}},
+       {}},
+      {{{0x1.5736a7b14dap+2, 0x1.2eb0d4376dc7p+4}, a, {0x1.675ca3a10cb8p+2, 0x1.3602f4e72017p+4}},
+       {}},
+      {{{0x1.675ca3a10cb8p+2, 0x1.3602f4e72017p+4}, a, {0x1.7771798e8ffp+2, 0x1.3d4d4f64c1e3p+4}},
+       {}},
+      {{{0x1.9d764a2d0fap+3, 0x1.3ffffffffffcp+4}, {0x1.8ae48d690248p+3, 0x1.4p+4}, b}, {}},
+      {{{0x1.ae5f06ee2db8p+3, 0x1.3ffffffffffep+4}, {0x1.9d764a2d0fap+3, 0x1.3ffffffffffcp+4}, c},
+       {}},
+      {{{0x1.bde3db42701cp+3, 0x1.4p+4}, {0x1.ae5f06ee2db8p+3, 0x1.3ffffffffffep+4}, c}, {}}};
+  {
+    const SnapRoundLimitForTesting no_search(17, 0);
+    EXPECT_THROW(clip(roof, shadows), SnapRoundingError);
+  }
+  const ClipResult result = clip(roof, shadows);
+  // Against CGAL's exact overlay: the shadows' union inside, the rest of the roof outside,
+  // to within what pixels of 2.5e-14 along 70 units of boundary can move.
+  std::vector<PolygonSet2> each;
+  for (const PolygonWithHoles2& shadow : shadows) each.push_back({shadow});
+  const std::vector<PolygonSet2> inside = {result.inside};
+  const test::ExactUnionComparison in = test::compare_exact_unions(inside, each);
+  EXPECT_LT(in.symmetric_difference, 1e-11) << in.a_union << " against " << in.b_union;
+  const std::vector<PolygonSet2> outside = {result.outside};
+  EXPECT_NEAR(test::exact_union_area(outside), 400.0 - in.b_union, 1e-11);
 }
 
 // The rounds an input takes are enough; one fewer stops the snapping before its last
