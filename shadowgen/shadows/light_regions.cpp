@@ -31,7 +31,7 @@ SetPieces split_by_light(SetPieces regions, const detail::ChartRegion& region, s
   SetPieces split;
   for (auto& [set, pieces] : regions) {
     clipper::PolygonSet2 inside, outside;
-    region.split(std::move(pieces), detail::ChartRegion::Sorting::kExact, outside, inside);
+    region.split(std::move(pieces), outside, inside);
     if (!outside.empty()) split.emplace_back(set, std::move(outside));
     if (!inside.empty()) {
       LightSet with = set;

@@ -42,8 +42,8 @@ struct LightSetLess {
 // by each light's lit polygons in turn, every piece going to "inside" (the light joins
 // its set) or "outside". Only pieces that the light's shadow edges pass through are
 // clipped, with the Weiler–Atherton clipper, against the lit polygons near them; the
-// others are sorted by their boxes or, exactly, by where they lie (detail/chart_region.h,
-// ChartRegion::Sorting::kExact). Each lit polygon splits the part it carries
+// others are sorted by their boxes or, exactly, by where they lie (detail/chart_region.h).
+// Each lit polygon splits the part it carries
 // (LitPolygon::part). Chart points that are
 // vertices of the part are lifted back to those exact 3D points; every other point (lit polygons'
 // vertices, which generation leaves within rounding of the plane, and new crossings)

@@ -88,7 +88,7 @@ void FaceSunHours::split_one_up(Part& part, const detail::ChartRegion& region) {
     CountPieces& c = part.by_count[i];
     clipper::PolygonSet2 stay = std::move(carried), up;
     carried.clear();
-    region.split(std::move(c.pieces), detail::ChartRegion::Sorting::kBoxes, stay, up);
+    region.split(std::move(c.pieces), stay, up);
     if (!stay.empty()) to(c.count) = std::move(stay);
     const bool gap = i + 1 == part.by_count.size() || part.by_count[i + 1].count != c.count + 1;
     if (gap && !up.empty()) {

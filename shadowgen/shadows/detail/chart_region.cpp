@@ -29,7 +29,7 @@ ChartRegion::ChartRegion(const clipper::PolygonSet2& whole, clipper::PolygonSet2
       inside_boxes_(boxes_of(inside_)),
       outside_boxes_(boxes_of(clipper::difference(whole, inside_))) {}
 
-void ChartRegion::split(clipper::PolygonSet2 pieces, Sorting sorting, clipper::PolygonSet2& outside,
+void ChartRegion::split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outside,
                         clipper::PolygonSet2& inside) const {
   // By boxes first: a piece whose box meets no polygon of one side lies in the other.
   clipper::PolygonSet2 undecided;
@@ -46,12 +46,6 @@ void ChartRegion::split(clipper::PolygonSet2 pieces, Sorting sorting, clipper::P
     }
   }
   if (undecided.empty()) return;
-  if (sorting == Sorting::kBoxes) {
-    clipper::ClipResult r = clipper::clip(undecided, inside_);
-    for (auto& p : r.outside) outside.push_back(std::move(p));
-    for (auto& p : r.inside) inside.push_back(std::move(p));
-    return;
-  }
 
   // The region's polygons whose boxes meet theirs (closed boxes, as clip() takes
   // operands that touch: clipper/box.h).

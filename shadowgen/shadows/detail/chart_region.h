@@ -17,22 +17,6 @@ namespace shadowgen::detail {
 
 class ChartRegion {
  public:
-  // How pieces that the boxes do not sort are sorted.
-  enum class Sorting {
-    // Clipped, all in one clip against every polygon of the region.
-    kBoxes,
-    // A piece whose boundary the region's does not pass through goes whole where it lies
-    // (clipper/placement.h); only the rest are clipped, against the region's polygons
-    // that their boxes meet. Far fewer clips under many lights; the pieces left whole
-    // keep their vertices while their neighbours are cut, so where the edges of many
-    // lights fan out from nearly one point (a shadow's tip at a building's foot, a
-    // little off from light to light) pieces can come out as slivers meeting within
-    // 1e-13 of one another. The light-set regions, which are drawn, take it; the
-    // sun-hours regions, which a database holds and reading clips together again, do not
-    // (a clip of such fans can fail to settle its snap rounding).
-    kExact,
-  };
-
   // `whole`: the part in its chart; `inside`: the region's polygons, within the part. The
   // complement, whole − inside, is clipped here once, for its boxes. Throws
   // clipper::SnapRoundingError where that clip's snapping does not settle.
@@ -41,13 +25,20 @@ class ChartRegion {
   // Appends what of `pieces` (pieces of the part, not overlapping) lies inside the region
   // to `inside`, the rest to `outside`. A piece whose box meets none of the region's
   // polygons' boxes goes to `outside` whole, one whose box meets none of the
-  // complement's to `inside` whole, each as it is; the others as `sorting` says. The
-  // clips are always against the region's own polygons, never the complement (whose
-  // edges are the region's as a clip rounded them). Pieces of one call that share edges
-  // may come out merged, so give one call pieces that may merge (one light set, one
-  // count). The result is exact up to the clipper's rounding of crossing points
-  // (clipper/clip.h). Throws clipper::SnapRoundingError as clip() does.
-  void split(clipper::PolygonSet2 pieces, Sorting sorting, clipper::PolygonSet2& outside,
+  // complement's to `inside` whole, each as it is. So does a piece whose boundary the
+  // region's does not pass through, where it lies (clipper/placement.h, exact); only the
+  // rest are clipped, against the region's polygons that their boxes meet, never the
+  // complement (whose edges are the region's as a clip rounded them). Under many lights
+  // or instants that makes the work follow the shadow edges rather than the pieces. The
+  // pieces left whole keep their vertices while their neighbours are cut: where the
+  // edges of many lights fan out from nearly one point (a shadow's tip at a building's
+  // foot, a little off from instant to instant) pieces can come out as slivers meeting
+  // within 1e-13 of one another, which the clipper's snapping takes (clipper/clip.h,
+  // Limit). Pieces of one call that share edges may come out merged, so give one call
+  // pieces that may merge (one light set, one count). The result is exact up to the
+  // clipper's rounding of crossing points (clipper/clip.h). Throws
+  // clipper::SnapRoundingError as clip() does.
+  void split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outside,
              clipper::PolygonSet2& inside) const;
 
  private:

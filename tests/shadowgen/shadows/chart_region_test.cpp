@@ -21,7 +21,7 @@ PolygonWithHoles2 square(double x0, double y0, double x1, double y1) {
 
 // The part: the grid's square; its pieces: the unit cells and, to be clipped as well,
 // pieces of several cells. Every region is a random grid polygon: cells wholly inside
-// or outside it (sorted by their boxes or exactly), cells it only touches, cells it
+// or outside it (sorted by their boxes or by where they lie), cells it only touches, cells it
 // crosses. What split() gives inside must be the region's area within the part, exactly
 // up to the rounding of crossings, and outside the rest; nothing lost, nothing twice.
 TEST(ChartRegion, SplitsPiecesIntoTheRegionsInsideAndOutside) {
@@ -39,18 +39,14 @@ TEST(ChartRegion, SplitsPiecesIntoTheRegionsInsideAndOutside) {
         pieces.push_back(square(x, y, x + w, y + 1));
       }
     }
-    for (const ChartRegion::Sorting sorting :
-         {ChartRegion::Sorting::kBoxes, ChartRegion::Sorting::kExact}) {
-      PolygonSet2 inside, outside;
-      chart_region.split(pieces, sorting, outside, inside);
-      SCOPED_TRACE("round " + std::to_string(round) +
-                   (sorting == ChartRegion::Sorting::kBoxes ? ", boxes" : ", exact"));
-      const double tolerance = 1e-12 * n * n;
-      EXPECT_NEAR(test::exact_area_of_pieces(inside), exact.inside, tolerance);
-      EXPECT_NEAR(test::exact_area_of_pieces(outside), exact.outside, tolerance);
-      EXPECT_NEAR(test::exact_area(inside), exact.inside, tolerance);    // no overlap
-      EXPECT_NEAR(test::exact_area(outside), exact.outside, tolerance);  // no overlap
-    }
+    PolygonSet2 inside, outside;
+    chart_region.split(pieces, outside, inside);
+    SCOPED_TRACE("round " + std::to_string(round));
+    const double tolerance = 1e-12 * n * n;
+    EXPECT_NEAR(test::exact_area_of_pieces(inside), exact.inside, tolerance);
+    EXPECT_NEAR(test::exact_area_of_pieces(outside), exact.outside, tolerance);
+    EXPECT_NEAR(test::exact_area(inside), exact.inside, tolerance);    // no overlap
+    EXPECT_NEAR(test::exact_area(outside), exact.outside, tolerance);  // no overlap
   }
 }
 
@@ -59,7 +55,7 @@ TEST(ChartRegion, ARegionThatIsTheWholePartTakesEveryPieceWithoutAClip) {
   const ChartRegion everything(whole, whole);
   const PolygonSet2 pieces{square(0, 0, 1, 4), square(1, 0, 4, 4)};
   PolygonSet2 inside, outside;
-  everything.split(pieces, ChartRegion::Sorting::kBoxes, outside, inside);
+  everything.split(pieces, outside, inside);
   EXPECT_TRUE(outside.empty());
   ASSERT_EQ(inside.size(), 2u);  // as they were: not merged by a clip
   EXPECT_EQ(inside[0].outer, pieces[0].outer);
