@@ -57,20 +57,13 @@ std::string JsonValue::describe() const {
   }
 }
 
-std::string JsonValue::located(const std::string& problem) const {
-  std::string what;
-  if (!subject_.empty()) what += subject_ + ": ";
-  if (!path_.empty()) what += path_ + ": ";
-  return what + problem;
-}
+JsonPlace JsonValue::place() const { return JsonPlace(source_, path_, face_, subject_); }
 
 std::string JsonValue::message(const std::string& problem) const {
-  return InputError(source_->file, face_, located(problem)).what();
+  return place().message(problem);
 }
 
-void JsonValue::fail(const std::string& problem) const {
-  throw InputError(source_->file, face_, located(problem));
-}
+void JsonValue::fail(const std::string& problem) const { place().fail(problem); }
 
 void JsonValue::warn(const std::string& problem) const {
   if (source_->warnings != nullptr) source_->warnings->push_back(message(problem));
@@ -197,6 +190,27 @@ void JsonObject::finish() {
   }
 }
 
+// ---- JsonPlace -------------------------------------------------------------------------
+
+JsonPlace JsonPlace::element(std::size_t index) const {
+  return JsonPlace(source_, path_ + "[" + std::to_string(index) + "]", face_, subject_);
+}
+
+std::string JsonPlace::located(const std::string& problem) const {
+  std::string what;
+  if (!subject_.empty()) what += subject_ + ": ";
+  if (!path_.empty()) what += path_ + ": ";
+  return what + problem;
+}
+
+std::string JsonPlace::message(const std::string& problem) const {
+  return InputError(source_->file, face_, located(problem)).what();
+}
+
+void JsonPlace::fail(const std::string& problem) const {
+  throw InputError(source_->file, face_, located(problem));
+}
+
 // ---- JsonArray, JsonDocument -----------------------------------------------------------
 
 std::size_t JsonArray::size() const { return self_.node_->size(); }
@@ -208,6 +222,19 @@ JsonValue JsonArray::at(std::size_t index) const {
 JsonDocument::JsonDocument(std::string_view text, JsonSource source)
     : root_(std::make_unique<Json>()), source_(std::make_unique<JsonSource>(std::move(source))) {
   const detail::ParseOutcome outcome = detail::parse_json(text, *root_);
+  if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
+}
+
+JsonDocument::JsonDocument(std::string_view text, JsonSource source, std::string_view streamed_key,
+                           const ElementTaker& take)
+    : root_(std::make_unique<Json>()), source_(std::make_unique<JsonSource>(std::move(source))) {
+  const std::string path(streamed_key);
+  const auto hand_over = [&](Json& element, std::size_t index) {
+    const JsonValue value(&element, source_.get(), path + "[" + std::to_string(index) + "]");
+    return take(root(), value);
+  };
+  const detail::ElementStream stream{streamed_key, hand_over};
+  const detail::ParseOutcome outcome = detail::parse_json(text, *root_, &stream);
   if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
 }
 

@@ -17,6 +17,7 @@
 // Values point into the document, which must outlive them.
 
 #include <cstddef>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
@@ -39,6 +40,7 @@ struct JsonSource {
 
 class JsonObject;
 class JsonArray;
+class JsonPlace;
 
 class JsonValue {
  public:
@@ -69,6 +71,10 @@ class JsonValue {
   // An array of [x, y, z] (a loop of points).
   std::vector<glm::dvec3> vec3_list() const;
 
+  // Where the value stands, for messages after its tree is gone (JsonDocument's
+  // streaming): kept apart from the value so that nothing reads a node no longer there.
+  JsonPlace place() const;
+
   // InputError naming the file, the face (if known), the path and `problem`.
   [[noreturn]] void fail(const std::string& problem) const;
   // The same as a warning line.
@@ -84,10 +90,34 @@ class JsonValue {
   JsonValue(const nlohmann::json* node, const JsonSource* source, std::string path)
       : node_(node), source_(source), path_(std::move(path)) {}
   JsonValue child(const nlohmann::json* node, std::string path) const;
-  std::string located(const std::string& problem) const;  // "subject: path: problem"
   [[noreturn]] void fail_expected(const char* expected) const;
 
   const nlohmann::json* node_;
+  const JsonSource* source_;
+  std::string path_;
+  std::string face_;
+  std::string subject_;
+};
+
+// Where a value stands in its document: the file, the face, the path. It fails and words
+// messages as the value itself would.
+class JsonPlace {
+ public:
+  // The place of element `index` of the array here: `...[index]`.
+  JsonPlace element(std::size_t index) const;
+
+  [[noreturn]] void fail(const std::string& problem) const;
+  std::string message(const std::string& problem) const;
+
+ private:
+  friend class JsonValue;
+  JsonPlace(const JsonSource* source, std::string path, std::string face, std::string subject)
+      : source_(source),
+        path_(std::move(path)),
+        face_(std::move(face)),
+        subject_(std::move(subject)) {}
+  std::string located(const std::string& problem) const;  // "subject: path: problem"
+
   const JsonSource* source_;
   std::string path_;
   std::string face_;
@@ -159,6 +189,16 @@ class JsonDocument {
   ~JsonDocument();
   JsonDocument(const JsonDocument&) = delete;
   JsonDocument& operator=(const JsonDocument&) = delete;
+
+  // Parses `text` as above, handing each element of the top-level array member
+  // `streamed_key` to `take` as soon as it is complete, with the root as read so far (the
+  // members before that array in the text complete, the array itself open). An element
+  // `take` returns true for is dropped from the document, a null left in its place: a
+  // reader that converts elements as they come holds one element's tree at a time.
+  // What `take` throws passes through.
+  using ElementTaker = std::function<bool(const JsonValue& root, const JsonValue& element)>;
+  JsonDocument(std::string_view text, JsonSource source, std::string_view streamed_key,
+               const ElementTaker& take);
 
   JsonValue root() const;
   const JsonSource& source() const { return *source_; }

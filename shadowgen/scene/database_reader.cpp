@@ -34,23 +34,78 @@ constexpr std::size_t kMaxShards = 1'000'000;
 
 class DatabaseParser {
  public:
+  // `stream_faces`: read each face as soon as the parser has it (see run()).
   DatabaseParser(const std::filesystem::path& path, const ReadOptions& options,
-                 std::vector<std::string>& warnings)
-      : file_(path.string()), options_(options), warnings_(warnings) {}
+                 std::vector<std::string>& warnings, bool stream_faces)
+      : file_(path.string()), options_(options), warnings_(warnings), stream_faces_(stream_faces) {}
 
+  // Faces come last in a database as written (shadowgen/output/database.h), and make
+  // nearly all of it: each is read as soon as the parser has it and its tree dropped, so
+  // reading holds the text, the scene and one face's tree, not the whole document's
+  // tree (several times the text). The members before "faces" are read at its first
+  // element. Where some of them come after "faces" instead (a file arranged by hand),
+  // the faces streamed were read too early, and the text is read again whole.
   ShadowedScene run(const std::string& text) {
-    const JsonDocument document(text, {file_, options_.strict, &warnings_});
+    ShadowedScene shadowed;
+    std::optional<JsonObject> top;
+    bool buffered = false;  // a face came before the members it needs: the rest stay
+    std::vector<bool> header_then;
+    const std::size_t warnings_before = warnings_.size();
+    const auto take = [&](const JsonValue& root, const JsonValue& face) {
+      if (!top && !buffered) {
+        header_then = header_present(root);
+        if (!stream_faces_ || !header_then[0] || !header_then[2] || !header_then[3]) {
+          buffered = true;
+        } else {
+          top.emplace(root.object());
+          read_header(*top, shadowed);
+        }
+      }
+      if (buffered) return false;
+      read_face(face, shadowed);
+      return true;
+    };
+    const JsonDocument document(text, {file_, options_.strict, &warnings_}, "faces", take);
     const JsonValue root = document.root();
+    if (top && header_present(root) != header_then) {
+      warnings_.resize(warnings_before);
+      return DatabaseParser(file_, options_, warnings_, false).run(text);
+    }
     if (!root.is_object()) {
       root.fail("a shadowed database is a JSON object; found " + root.describe());
     }
-    JsonObject top = root.object();
+    if (!top) {
+      top.emplace(root.object());
+      read_header(*top, shadowed);
+    }
+    const JsonArray faces = top->get("faces").array();
+    if (buffered || faces.empty()) {  // an empty array, or one that is not there, never streamed
+      for (std::size_t i = 0; i < faces.size(); ++i) read_face(faces.at(i), shadowed);
+    }
+    top->finish();
+    check_lit(shadowed);
+    check_sun_hours(shadowed);
+    return shadowed;
+  }
+
+ private:
+  // The members read before the faces, in this order: which of them the root has.
+  static constexpr const char* kHeader[] = {"format", "shard", "lights", "views", "sun_paths"};
+  static std::vector<bool> header_present(const JsonValue& root) {
+    std::vector<bool> present;
+    if (!root.is_object()) return present;
+    JsonObject object = root.object();  // a look only: this one is never finished
+    for (const char* key : kHeader) present.push_back(object.has(key));
+    return present;
+  }
+
+  // Everything but the faces: the format, the shard, the lights and views, the sun paths.
+  void read_header(JsonObject& top, ShadowedScene& shadowed) {
     const JsonValue format = top.get("format");
     if (format.string() != kShadowedFormat) {
       format.fail("unsupported format '" + format.string() + "'; this reader reads '" +
                   std::string(kShadowedFormat) + "'");
     }
-    ShadowedScene shadowed;
     if (const std::optional<JsonValue> shard = top.find("shard")) {
       shadowed.shard = read_shard(*shard);
     }
@@ -71,16 +126,8 @@ class DatabaseParser {
       read_sun_paths(*paths, shadowed);
     }
     shadowed.lit = LitTable(0, shadowed.scene.lights.size(), kept_lights(shadowed));
-    const JsonArray faces = top.get("faces").array();
-    shadowed.scene.faces.reserve(faces.size());
-    for (std::size_t i = 0; i < faces.size(); ++i) read_face(faces.at(i), shadowed);
-    top.finish();
-    check_lit(shadowed);
-    check_sun_hours(shadowed);
-    return shadowed;
   }
 
- private:
   // Per light, whether faces may list its lit polygons: not for the instants of a path
   // whose instant polygons were dropped (only their lit areas are kept).
   static std::vector<bool> kept_lights(const ShadowedScene& shadowed) {
@@ -223,13 +270,13 @@ class DatabaseParser {
       read_part_lit_areas(sum, face, path, shard);
       if (!path.regions_kept) {  // lit areas alone
         sum.finish();
-        path_values_[p].push_back(sum.value());
+        path_values_[p].push_back(sum.value().place());
         continue;
       }
       if (shard) {
         path.nodes.push_back(read_nodes(sum.get("nodes"), path, *shadowed.shard));
         sum.finish();
-        path_values_[p].push_back(sum.value());
+        path_values_[p].push_back(sum.value().place());
         continue;
       }
       const JsonValue regions_value = sum.get("regions");
@@ -251,7 +298,7 @@ class DatabaseParser {
         region.finish();
       }
       sum.finish();
-      path_values_[p].push_back(sum.value());
+      path_values_[p].push_back(sum.value().place());
     }
     sums.finish();
   }
@@ -359,7 +406,7 @@ class DatabaseParser {
                   "', whose instant polygons are \"dropped\": only its lit areas are kept");
       }
       shadowed.lit.at(f, light->second) = read_lit(list, face);
-      lists_.push_back({light->second, list});
+      lists_.push_back({light->second, list.place()});
     }
     read_sun_hours(entry, face, shadowed);
     entry.finish();
@@ -449,8 +496,8 @@ class DatabaseParser {
     });
     for (std::size_t k = 0; k < lists_.size(); ++k) {
       if (const std::optional<detail::LitProblem>& problem = problems[k]) {
-        const JsonValue& value = lists_[k].value;
-        (problem->polygon ? value.array().at(*problem->polygon) : value).fail(problem->what);
+        const JsonPlace& place = lists_[k].place;
+        (problem->polygon ? place.element(*problem->polygon) : place).fail(problem->what);
       }
     }
   }
@@ -642,24 +689,25 @@ class DatabaseParser {
   const std::string file_;
   const ReadOptions options_;
   std::vector<std::string>& warnings_;
+  const bool stream_faces_;
   detail::IdRegistry face_ids_;
   std::unordered_map<std::string, std::size_t> light_index_;
   // Each face's lists of lit polygons, checked once all are read (check_lit): where each
   // face's lists start in lists_, and per list its light and where it stands in the file.
   struct LitList {
     std::size_t light;
-    JsonValue value;
+    JsonPlace place;
   };
   std::vector<std::size_t> lists_of_face_;
   std::vector<LitList> lists_;
-  std::vector<std::vector<JsonValue>> path_values_;  // [path][face]: faces[f].sun_hours.<path>
+  std::vector<std::vector<JsonPlace>> path_values_;  // [path][face]: faces[f].sun_hours.<path>
 };
 
 }  // namespace
 
 ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path,
                              const ReadOptions& options, std::vector<std::string>& warnings) {
-  return DatabaseParser(path, options, warnings).run(json_text);
+  return DatabaseParser(path, options, warnings, true).run(json_text);
 }
 
 ShadowedScene read_database(const std::filesystem::path& path, const ReadOptions& options,

@@ -31,19 +31,18 @@ std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size
 // object members (std::map nodes) never move.
 class DomBuilder {
  public:
-  DomBuilder(std::string_view text, Json& root) : text_(text), root_(root) {}
+  DomBuilder(std::string_view text, Json& root, const ElementStream* stream)
+      : text_(text), root_(root), stream_(stream) {}
 
   std::optional<std::string> problem;
 
-  bool null() { return put(nullptr) != nullptr; }
-  bool boolean(bool value) { return put(value) != nullptr; }
-  bool number_integer(Json::number_integer_t value) { return put(value) != nullptr; }
-  bool number_unsigned(Json::number_unsigned_t value) { return put(value) != nullptr; }
-  bool number_float(Json::number_float_t value, const Json::string_t&) {
-    return put(value) != nullptr;
-  }
-  bool string(Json::string_t& value) { return put(std::move(value)) != nullptr; }
-  bool binary(Json::binary_t& value) { return put(Json::binary(std::move(value))) != nullptr; }
+  bool null() { return scalar(nullptr); }
+  bool boolean(bool value) { return scalar(value); }
+  bool number_integer(Json::number_integer_t value) { return scalar(value); }
+  bool number_unsigned(Json::number_unsigned_t value) { return scalar(value); }
+  bool number_float(Json::number_float_t value, const Json::string_t&) { return scalar(value); }
+  bool string(Json::string_t& value) { return scalar(std::move(value)); }
+  bool binary(Json::binary_t& value) { return scalar(Json::binary(std::move(value))); }
 
   bool start_object(std::size_t) { return open(Json::object()); }
   bool start_array(std::size_t) { return open(Json::array()); }
@@ -75,6 +74,25 @@ class DomBuilder {
     Json* container;
     std::string step;  // from the parent: "[i]" or "key"
   };
+
+  bool scalar(Json value) {
+    Json* placed = put(std::move(value));
+    if (open_.size() == 2 && streamed(open_[1])) hand_over(*placed);
+    return true;
+  }
+
+  // Whether `level` is the array whose elements go to the stream: the member `key` of
+  // the root object.
+  bool streamed(const Open& level) const {
+    return stream_ != nullptr && level.step == stream_->key && level.container->is_array() &&
+           open_.front().container->is_object();
+  }
+
+  // A complete element of the streamed array, the last one so far.
+  void hand_over(Json& element) {
+    const std::size_t index = open_[1].container->size() - 1;
+    if (stream_->take(element, index)) element = Json();
+  }
 
   // Places a value where the parser is: the root, the next element of the open array,
   // or the member whose key was just read.
@@ -116,7 +134,9 @@ class DomBuilder {
   }
 
   bool close() {
+    Json* closed = open_.back().container;
     open_.pop_back();
+    if (open_.size() == 2 && streamed(open_[1])) hand_over(*closed);
     return true;
   }
 
@@ -145,6 +165,7 @@ class DomBuilder {
   std::vector<Open> open_;
   Json* member_ = nullptr;
   std::string member_key_;
+  const ElementStream* stream_;
 };
 
 }  // namespace
@@ -173,7 +194,7 @@ std::string describe_parse_error(std::string_view text, std::size_t position,
          ": invalid JSON: " + problem;
 }
 
-ParseOutcome parse_json(std::string_view text, Json& root) {
+ParseOutcome parse_json(std::string_view text, Json& root, const ElementStream* stream) {
   // nlohmann's parser takes a NUL byte for the end of the text and would accept whatever
   // came before it, ignoring the rest; JSON text has no NUL byte anywhere.
   if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
@@ -184,7 +205,7 @@ ParseOutcome parse_json(std::string_view text, Json& root) {
     root = Json();
     return outcome;
   }
-  DomBuilder builder(text, root);
+  DomBuilder builder(text, root, stream);
   Json::sax_parse(text, &builder);
   ParseOutcome outcome;
   outcome.problem = std::move(builder.problem);

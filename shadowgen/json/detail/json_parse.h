@@ -7,6 +7,7 @@
 // are located by line and column.
 
 #include <cstddef>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -26,7 +27,18 @@ struct ParseOutcome {
   std::optional<std::string> problem;
 };
 
-ParseOutcome parse_json(std::string_view text, nlohmann::json& root);
+// The elements of one top-level array member (`key`, the root being an object), handed to
+// `take` each as soon as it is complete, with its index: one that `take` returns true for
+// is dropped from the tree (a null keeps its place), so a reader that converts elements
+// as they come never holds more than one element's tree of that array. The members
+// before it in the text are complete by then. What `take` throws passes through.
+struct ElementStream {
+  std::string_view key;
+  std::function<bool(nlohmann::json& element, std::size_t index)> take;
+};
+
+ParseOutcome parse_json(std::string_view text, nlohmann::json& root,
+                        const ElementStream* stream = nullptr);
 
 // "line L, column C: invalid JSON: what", for a SAX parse error at `position` (bytes read,
 // as nlohmann counts them). `last_token` is the token being read, `id` nlohmann's error

@@ -191,6 +191,45 @@ TEST(DatabaseReader, WrittenDatabasesReadBack) {
   EXPECT_EQ(database_json(parse_database(written, "again.json")), written);
 }
 
+// The members of a database in any order: as written (the faces last, each read as the
+// parser reaches it), the faces first (kept until the rest is read), or a member the faces
+// need after them (the streamed faces read too early: the text is read again whole).
+// Each reads as written, its warnings given once.
+TEST(DatabaseReader, ReadsTheSameWhateverTheOrderOfItsMembers) {
+  nlohmann::ordered_json db =
+      nlohmann::ordered_json::parse(database_json(test::sun_path_by_hand()));
+  db["faces"][0]["colour"] = "red";  // unknown: one warning
+  const std::string written = db.dump();
+  const auto in_order = [&db](std::vector<std::string> keys) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (const std::string& key : keys) out[key] = db[key];
+    EXPECT_EQ(out.size(), db.size());
+    return out.dump();
+  };
+  const std::vector<std::string> texts = {
+      written, in_order({"faces", "format", "lights", "sun_paths", "views"}),
+      in_order({"format", "lights", "views", "faces", "sun_paths"}),
+      in_order({"lights", "faces", "views", "sun_paths", "format"})};
+  std::vector<std::string> warnings;
+  const std::string expected = database_json(parse_database(written, "db.json", {}, warnings));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("faces[0]: unknown key 'colour'"), std::string::npos) << warnings[0];
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    std::vector<std::string> again;
+    EXPECT_EQ(database_json(parse_database(texts[i], "db.json", {}, again)), expected) << i;
+    EXPECT_EQ(again, warnings) << i;
+  }
+  // A face's error names the face and its path in every order.
+  db["faces"][0]["parts"] = nlohmann::ordered_json::array();
+  for (const std::vector<std::string>& keys :
+       {std::vector<std::string>{"format", "lights", "views", "sun_paths", "faces"},
+        std::vector<std::string>{"faces", "format", "lights", "sun_paths", "views"}}) {
+    const Refusal r = refusal(in_order(keys));
+    EXPECT_EQ(r.problem, "faces[0].parts: a face needs at least one polygon");
+    EXPECT_EQ(r.face, "g");
+  }
+}
+
 // A sliver triangle lit whole: its one lit polygon is the triangle itself, corner for
 // corner, yet its corners seemed 2.2e-5 off the plane of its rounded normal (tolerance
 // 1.8e-9) and the database did not read back (a reader fuzzer finding). The plane of a
