@@ -1,5 +1,6 @@
 #include "shadowgen/json/document.h"
 
+#include <cstdint>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -20,7 +21,7 @@ using Json = nlohmann::json;
 // from any event ends the scan.
 class FormatScanner {
  public:
-  explicit FormatScanner(std::string_view text) : text_(text) {}
+  explicit FormatScanner(detail::Locate locate) : locate_(std::move(locate)) {}
 
   // The outcome once the scan has stopped: the format, or why there is none.
   std::optional<std::string> format;
@@ -55,7 +56,7 @@ class FormatScanner {
   }
   bool parse_error(std::size_t position, const std::string& last_token,
                    const nlohmann::detail::exception& e) {
-    problem = detail::describe_parse_error(text_, position, last_token, e.id, e.what());
+    problem = detail::describe_parse_error(locate_, position, last_token, e.id, e.what());
     return false;
   }
 
@@ -75,7 +76,7 @@ class FormatScanner {
     return true;
   }
 
-  std::string_view text_;
+  detail::Locate locate_;
   bool open(const char* what) {
     if (!check_format_value(what)) return false;
     ++depth_;
@@ -92,13 +93,7 @@ class FormatScanner {
 
 }  // namespace
 
-std::string read_text_file(const std::filesystem::path& path, std::string_view what) {
-  std::ostringstream text;
-  if (path == "-") {
-    text << std::cin.rdbuf();
-    if (std::cin.bad()) throw InputError("-", "", "cannot read standard input");
-    return std::move(text).str();
-  }
+std::ifstream open_input_file(const std::filesystem::path& path, std::string_view what) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throw InputError(path.string(), "", "is a folder, not a file");
@@ -109,14 +104,51 @@ std::string read_text_file(const std::filesystem::path& path, std::string_view w
                      std::filesystem::exists(path, error) ? "cannot open the " + std::string(what)
                                                           : "no such file");
   }
-  text << in.rdbuf();
+  return in;
+}
+
+std::string read_text_file(const std::filesystem::path& path, std::string_view what) {
+  std::ostringstream text;
+  if (path == "-") {
+    text << std::cin.rdbuf();
+    if (std::cin.bad()) throw InputError("-", "", "cannot read standard input");
+    return std::move(text).str();
+  }
+  std::ifstream in = open_input_file(path, what);
+  std::error_code error;
+  // A regular file is read into a string of its size: a stream's growing buffer would
+  // hold up to twice a large database at once.
+  std::string whole;
+  if (std::filesystem::is_regular_file(path, error)) {
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (!error) {
+      whole.resize(static_cast<std::size_t>(size));
+      in.read(whole.data(), static_cast<std::streamsize>(size));
+      whole.resize(static_cast<std::size_t>(in.gcount()));  // shorter if it shrank meanwhile
+      if (in.bad()) throw InputError(path.string(), "", "cannot read the " + std::string(what));
+      in.clear();
+    }
+  }
+  text << in.rdbuf();  // the rest: all of a file that is not regular, what a file grew by
   if (in.bad()) throw InputError(path.string(), "", "cannot read the " + std::string(what));
-  return std::move(text).str();
+  if (whole.empty()) return std::move(text).str();
+  whole += std::move(text).str();
+  return whole;
 }
 
 std::string document_format(const std::string& json_text, const std::filesystem::path& path) {
-  FormatScanner scanner(json_text);
+  FormatScanner scanner([&json_text](std::size_t offset) {
+    return detail::line_column(std::string_view(json_text), offset);
+  });
   Json::sax_parse(json_text, &scanner);
+  if (!scanner.format) throw InputError(path.string(), "", scanner.problem);
+  return *scanner.format;
+}
+
+std::string file_format(const std::filesystem::path& path) {
+  std::ifstream in = open_input_file(path);
+  FormatScanner scanner([&in](std::size_t offset) { return detail::line_column(in, offset); });
+  Json::sax_parse(in, &scanner);
   if (!scanner.format) throw InputError(path.string(), "", scanner.problem);
   return *scanner.format;
 }

@@ -228,17 +228,29 @@ JsonDocument::JsonDocument(std::string_view text, JsonSource source)
 JsonDocument::JsonDocument(std::string_view text, JsonSource source, std::string_view streamed_key,
                            const ElementTaker& take)
     : root_(std::make_unique<Json>()), source_(std::make_unique<JsonSource>(std::move(source))) {
-  const std::string path(streamed_key);
-  const auto hand_over = [&](Json& element, std::size_t index) {
-    const JsonValue value(&element, source_.get(), path + "[" + std::to_string(index) + "]");
-    return take(root(), value);
-  };
-  const detail::ElementStream stream{streamed_key, hand_over};
+  const detail::ElementStream stream = element_stream(streamed_key, take);
   const detail::ParseOutcome outcome = detail::parse_json(text, *root_, &stream);
   if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
 }
 
+JsonDocument::JsonDocument(std::istream& in, JsonSource source, std::string_view streamed_key,
+                           const ElementTaker& take)
+    : root_(std::make_unique<Json>()), source_(std::make_unique<JsonSource>(std::move(source))) {
+  const detail::ElementStream stream = element_stream(streamed_key, take);
+  const detail::ParseOutcome outcome = detail::parse_json(in, *root_, &stream);
+  if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
+}
+
 JsonDocument::~JsonDocument() = default;
+
+detail::ElementStream JsonDocument::element_stream(std::string_view key,
+                                                   const ElementTaker& take) const {
+  return {key, [this, key, &take](Json& element, std::size_t index) {
+            const JsonValue value(&element, source_.get(),
+                                  std::string(key) + "[" + std::to_string(index) + "]");
+            return take(root(), value);
+          }};
+}
 
 JsonValue JsonDocument::root() const { return JsonValue(root_.get(), source_.get(), ""); }
 

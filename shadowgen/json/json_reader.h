@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <functional>
 #include <glm/vec3.hpp>
+#include <istream>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
@@ -28,6 +29,10 @@
 #include <vector>
 
 namespace shadowgen {
+
+namespace detail {
+struct ElementStream;
+}
 
 // Where a document comes from and how strictly it is read.
 struct JsonSource {
@@ -199,11 +204,19 @@ class JsonDocument {
   using ElementTaker = std::function<bool(const JsonValue& root, const JsonValue& element)>;
   JsonDocument(std::string_view text, JsonSource source, std::string_view streamed_key,
                const ElementTaker& take);
+  // The same from a file, read as it is parsed (the stream must seek: it is looked
+  // through for a NUL byte first): the text is never held whole.
+  JsonDocument(std::istream& in, JsonSource source, std::string_view streamed_key,
+               const ElementTaker& take);
 
   JsonValue root() const;
   const JsonSource& source() const { return *source_; }
 
  private:
+  // What the streaming constructors hand to the parser: each element of array `key` as
+  // a value, with the root as read so far, to `take`.
+  detail::ElementStream element_stream(std::string_view key, const ElementTaker& take) const;
+
   std::unique_ptr<nlohmann::json> root_;
   std::unique_ptr<JsonSource> source_;  // values point to it
 };

@@ -51,28 +51,31 @@ ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
   }
 }
 
-ShadowedScene database(const Document& document, const ReadOptions& read,
-                       const LoadOptions& options) {
+// `text`: the database's text where it was read whole (standard input); otherwise the
+// file is read as it is parsed (scene/database_reader.h).
+ShadowedScene database(const std::filesystem::path& path, const std::string* text,
+                       const ReadOptions& read, const LoadOptions& options) {
   std::vector<std::string> warnings;
-  ShadowedScene shadowed = parse_database(document.text, document.path, read, warnings);
+  ShadowedScene shadowed = text != nullptr ? parse_database(*text, path, read, warnings)
+                                           : read_database(path, read, warnings);
   pass_on(warnings, options);
   if (shadowed.shard && options.accept != Accept::kShard) {
-    throw InputError(document.path.string(), "",
+    throw InputError(path.string(), "",
                      "is shard " + std::to_string(shadowed.shard->index + 1) + " of " +
                          std::to_string(shadowed.shard->count) +
                          " of a sun-path run (generate --instants K/N), not a whole shadowed "
                          "database: join every shard with shadowgen merge first");
   }
   if (options.accept == Accept::kShard) return shadowed;  // merge takes it as it is
-  keep_lights(shadowed, options.lights, document.path.string());
+  keep_lights(shadowed, options.lights, path.string());
   if (options.instant_polygons && options.on_warning) {
-    for (const std::string& path : drop_summed_instants(shadowed, document.path.string())) {
-      options.on_warning(document.path.string() + ": sun path '" + one_line(path) +
+    for (const std::string& sun_path : drop_summed_instants(shadowed, path.string())) {
+      options.on_warning(path.string() + ": sun path '" + one_line(sun_path) +
                          "': its instants' lit polygons were summed into sun hours, not kept, "
                          "so its instants are left out (generate --keep-instants keeps them)");
     }
   } else if (options.instant_polygons) {
-    drop_summed_instants(shadowed, document.path.string());
+    drop_summed_instants(shadowed, path.string());
   }
   return shadowed;
 }
@@ -103,8 +106,13 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
   // A scene only: the scene reader's own messages, a wrong "format" included.
   if (options.accept == Accept::kScene) return generated(read_scene(path, read), path, options);
 
+  // A database file is read as it is parsed, never held whole: only its format first.
+  if (path != "-") {
+    const std::string format = file_format(path);
+    if (format == kShadowedFormat) return database(path, nullptr, read, options);
+  }
   const Document document = read_document(path);
-  if (document.format == kShadowedFormat) return database(document, read, options);
+  if (document.format == kShadowedFormat) return database(path, &document.text, read, options);
   if (document.format != kSceneFormat || options.accept == Accept::kDatabase ||
       options.accept == Accept::kShard) {
     refuse(document, options);

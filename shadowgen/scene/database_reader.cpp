@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -37,15 +38,21 @@ class DatabaseParser {
   // `stream_faces`: read each face as soon as the parser has it (see run()).
   DatabaseParser(const std::filesystem::path& path, const ReadOptions& options,
                  std::vector<std::string>& warnings, bool stream_faces)
-      : file_(path.string()), options_(options), warnings_(warnings), stream_faces_(stream_faces) {}
+      : path_(path),
+        file_(path.string()),
+        options_(options),
+        warnings_(warnings),
+        stream_faces_(stream_faces) {}
 
   // Faces come last in a database as written (shadowgen/output/database.h), and make
   // nearly all of it: each is read as soon as the parser has it and its tree dropped, so
   // reading holds the text, the scene and one face's tree, not the whole document's
   // tree (several times the text). The members before "faces" are read at its first
   // element. Where some of them come after "faces" instead (a file arranged by hand),
-  // the faces streamed were read too early, and the text is read again whole.
-  ShadowedScene run(const std::string& text) {
+  // the faces streamed were read too early, and the text is read again whole. Read from
+  // a file, the text itself is never held whole either.
+  // From `text`, or where it is null from the file, read as it is parsed.
+  ShadowedScene run(const std::string* text) {
     ShadowedScene shadowed;
     std::optional<JsonObject> top;
     bool buffered = false;  // a face came before the members it needs: the rest stay
@@ -65,11 +72,19 @@ class DatabaseParser {
       read_face(face, shadowed);
       return true;
     };
-    const JsonDocument document(text, {file_, options_.strict, &warnings_}, "faces", take);
-    const JsonValue root = document.root();
+    std::optional<std::ifstream> in;
+    std::optional<JsonDocument> document;
+    const JsonSource source{file_, options_.strict, &warnings_};
+    if (text != nullptr) {
+      document.emplace(*text, source, "faces", take);
+    } else {
+      in.emplace(open_input_file(path_));
+      document.emplace(*in, source, "faces", take);
+    }
+    const JsonValue root = document->root();
     if (top && header_present(root) != header_then) {
       warnings_.resize(warnings_before);
-      return DatabaseParser(file_, options_, warnings_, false).run(text);
+      return DatabaseParser(path_, options_, warnings_, false).run(text);
     }
     if (!root.is_object()) {
       root.fail("a shadowed database is a JSON object; found " + root.describe());
@@ -686,6 +701,7 @@ class DatabaseParser {
     return std::nullopt;
   }
 
+  const std::filesystem::path path_;
   const std::string file_;
   const ReadOptions options_;
   std::vector<std::string>& warnings_;
@@ -707,12 +723,13 @@ class DatabaseParser {
 
 ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path,
                              const ReadOptions& options, std::vector<std::string>& warnings) {
-  return DatabaseParser(path, options, warnings, true).run(json_text);
+  return DatabaseParser(path, options, warnings, true).run(&json_text);
 }
 
 ShadowedScene read_database(const std::filesystem::path& path, const ReadOptions& options,
                             std::vector<std::string>& warnings) {
-  return parse_database(read_text_file(path), path, options, warnings);
+  if (path == "-") return parse_database(read_text_file(path), path, options, warnings);
+  return DatabaseParser(path, options, warnings, true).run(nullptr);
 }
 
 ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path) {

@@ -27,7 +27,9 @@
 namespace shadowgen {
 
 // `path` names the file in messages. Warnings ("file: path: what" lines) are appended to
-// `warnings`.
+// `warnings`. read_database reads a file as it parses it, its faces one by one, so that
+// it holds the shadowed scene and one face's document, never the whole text or document
+// ("-": standard input, held whole).
 ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path,
                              const ReadOptions& options, std::vector<std::string>& warnings);
 ShadowedScene read_database(const std::filesystem::path& path, const ReadOptions& options,

@@ -9,19 +9,43 @@ namespace {
 
 using Json = nlohmann::json;
 
-// Line and column (1-based, columns in bytes) of the byte at `offset` (0-based).
-std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size_t offset) {
-  std::size_t line = 1;
-  std::size_t column = 1;
-  for (std::size_t i = 0; i < std::min(offset, text.size()); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
+// Counts lines and columns over the bytes it is shown, in order.
+class LineCounter {
+ public:
+  void add(std::string_view bytes) {
+    for (const char c : bytes) {
+      if (c == '\n') {
+        ++place_.first;
+        place_.second = 1;
+      } else {
+        ++place_.second;
+      }
     }
   }
-  return {line, column};
+  LineColumn place() const { return place_; }
+
+ private:
+  LineColumn place_{1, 1};
+};
+
+// Reads `in` from its start in chunks, showing each to `look` until it returns false.
+template <class Look>
+void read_through(std::istream& in, Look&& look) {
+  in.clear();
+  in.seekg(0);
+  std::string chunk(std::size_t{1} << 20, '\0');
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (got == 0 || !look(std::string_view(chunk.data(), got))) break;
+  }
+  in.clear();
+  in.seekg(0);
+}
+
+std::string nul_problem(LineColumn at) {
+  return "line " + std::to_string(at.first) + ", column " + std::to_string(at.second) +
+         ": invalid JSON: a NUL byte (JSON text has none; is this a binary file?)";
 }
 
 // Builds the tree as nlohmann's own DOM parser does. Every open container sits on a stack
@@ -31,8 +55,8 @@ std::pair<std::size_t, std::size_t> line_column(std::string_view text, std::size
 // object members (std::map nodes) never move.
 class DomBuilder {
  public:
-  DomBuilder(std::string_view text, Json& root, const ElementStream* stream)
-      : text_(text), root_(root), stream_(stream) {}
+  DomBuilder(Locate locate, Json& root, const ElementStream* stream)
+      : locate_(std::move(locate)), root_(root), stream_(stream) {}
 
   std::optional<std::string> problem;
 
@@ -65,7 +89,7 @@ class DomBuilder {
 
   bool parse_error(std::size_t position, const std::string& last_token,
                    const nlohmann::detail::exception& error) {
-    problem = describe_parse_error(text_, position, last_token, error.id, error.what());
+    problem = describe_parse_error(locate_, position, last_token, error.id, error.what());
     return false;
   }
 
@@ -160,7 +184,7 @@ class DomBuilder {
     return out;
   }
 
-  std::string_view text_;
+  Locate locate_;
   Json& root_;
   std::vector<Open> open_;
   Json* member_ = nullptr;
@@ -171,6 +195,29 @@ class DomBuilder {
 }  // namespace
 
 std::string describe_parse_error(std::string_view text, std::size_t position,
+                                 const std::string& last_token, int id, const std::string& what) {
+  return describe_parse_error([text](std::size_t offset) { return line_column(text, offset); },
+                              position, last_token, id, what);
+}
+
+LineColumn line_column(std::string_view text, std::size_t offset) {
+  LineCounter counter;
+  counter.add(text.substr(0, std::min(offset, text.size())));
+  return counter.place();
+}
+
+LineColumn line_column(std::istream& in, std::size_t offset) {
+  LineCounter counter;
+  std::size_t left = offset;
+  read_through(in, [&](std::string_view chunk) {
+    counter.add(chunk.substr(0, std::min(left, chunk.size())));
+    left -= std::min(left, chunk.size());
+    return left > 0;
+  });
+  return counter.place();
+}
+
+std::string describe_parse_error(const Locate& locate, std::size_t position,
                                  const std::string& last_token, int id, const std::string& what) {
   std::size_t offset = position > 0 ? position - 1 : 0;  // position counts bytes read
   std::string problem;
@@ -189,7 +236,7 @@ std::string describe_parse_error(std::string_view text, std::size_t position,
       problem = problem.substr(bracket + 2);
     }
   }
-  const auto [line, column] = line_column(text, offset);
+  const auto [line, column] = locate(offset);
   return "line " + std::to_string(line) + ", column " + std::to_string(column) +
          ": invalid JSON: " + problem;
 }
@@ -198,15 +245,34 @@ ParseOutcome parse_json(std::string_view text, Json& root, const ElementStream* 
   // nlohmann's parser takes a NUL byte for the end of the text and would accept whatever
   // came before it, ignoring the rest; JSON text has no NUL byte anywhere.
   if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
-    const auto [line, column] = line_column(text, nul);
-    ParseOutcome outcome;
-    outcome.problem = "line " + std::to_string(line) + ", column " + std::to_string(column) +
-                      ": invalid JSON: a NUL byte (JSON text has none; is this a binary file?)";
     root = Json();
-    return outcome;
+    return {nul_problem(line_column(text, nul))};
   }
-  DomBuilder builder(text, root, stream);
+  DomBuilder builder([text](std::size_t offset) { return line_column(text, offset); }, root,
+                     stream);
   Json::sax_parse(text, &builder);
+  ParseOutcome outcome;
+  outcome.problem = std::move(builder.problem);
+  if (outcome.problem) root = Json();
+  return outcome;
+}
+
+ParseOutcome parse_json(std::istream& in, Json& root, const ElementStream* stream) {
+  // As for text: the parser would take a NUL byte for the end.
+  LineCounter counter;
+  bool nul = false;
+  read_through(in, [&](std::string_view chunk) {
+    const std::size_t at = chunk.find('\0');
+    counter.add(chunk.substr(0, at));
+    nul = at != std::string_view::npos;
+    return !nul;
+  });
+  if (nul) {
+    root = Json();
+    return {nul_problem(counter.place())};
+  }
+  DomBuilder builder([&in](std::size_t offset) { return line_column(in, offset); }, root, stream);
+  Json::sax_parse(in, &builder);
   ParseOutcome outcome;
   outcome.problem = std::move(builder.problem);
   if (outcome.problem) root = Json();

@@ -8,10 +8,12 @@
 
 #include <cstddef>
 #include <functional>
+#include <istream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace shadowgen::detail {
 
@@ -40,10 +42,28 @@ struct ElementStream {
 ParseOutcome parse_json(std::string_view text, nlohmann::json& root,
                         const ElementStream* stream = nullptr);
 
+// The same from a stream that can seek (a file), read as it is parsed: the text is
+// never held whole. It is looked through once for a NUL byte first, and read again up to
+// a syntax error to place it by line and column.
+ParseOutcome parse_json(std::istream& in, nlohmann::json& root,
+                        const ElementStream* stream = nullptr);
+
+// Line and column (1-based, columns in bytes) of the byte at `offset` (0-based).
+using LineColumn = std::pair<std::size_t, std::size_t>;
+using Locate = std::function<LineColumn(std::size_t offset)>;
+
 // "line L, column C: invalid JSON: what", for a SAX parse error at `position` (bytes read,
 // as nlohmann counts them). `last_token` is the token being read, `id` nlohmann's error
 // id, `what` its message.
 std::string describe_parse_error(std::string_view text, std::size_t position,
                                  const std::string& last_token, int id, const std::string& what);
+// The same where `locate` places an offset.
+std::string describe_parse_error(const Locate& locate, std::size_t position,
+                                 const std::string& last_token, int id, const std::string& what);
+
+// Where `offset` is in `text`, or in what `in` reads from its start (the stream is left
+// at its start).
+LineColumn line_column(std::string_view text, std::size_t offset);
+LineColumn line_column(std::istream& in, std::size_t offset);
 
 }  // namespace shadowgen::detail

@@ -19,6 +19,7 @@
 #include "shadowgen/scene/scene_reader.h"
 #include "shadowgen/shadows/generate.h"
 #include "tests/shadowgen/hand_scenes.h"
+#include "tests/support/temp_folder.h"
 
 namespace shadowgen {
 namespace {
@@ -227,6 +228,46 @@ TEST(DatabaseReader, ReadsTheSameWhateverTheOrderOfItsMembers) {
     const Refusal r = refusal(in_order(keys));
     EXPECT_EQ(r.problem, "faces[0].parts: a face needs at least one polygon");
     EXPECT_EQ(r.face, "g");
+  }
+}
+
+// A database read from its file, as it is parsed, reads as its text does: the same
+// scene, the same warnings, the same errors with the same lines and columns (a syntax
+// error, a NUL byte, a face's problem, members arranged by hand).
+TEST(DatabaseReader, AFileReadsAsItsText) {
+  const test::TempFolder folder("database_reader");
+  nlohmann::ordered_json db =
+      nlohmann::ordered_json::parse(database_json(test::sun_path_by_hand()));
+  db["faces"][0]["colour"] = "red";
+  const std::string written = db.dump(1);
+  nlohmann::ordered_json faces_first = nlohmann::ordered_json::object();
+  faces_first["faces"] = db["faces"];
+  for (const auto& [key, value] : db.items()) faces_first[key] = value;
+  std::string with_nul = written;
+  with_nul[written.size() / 2] = '\0';
+  const std::vector<std::string> texts = {written, faces_first.dump(),
+                                          written.substr(0, written.size() - 40), with_nul,
+                                          database(square(0, 0, 1) + "," + square(0.5, 0.5, 1))};
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    const std::filesystem::path file = folder.write("db" + std::to_string(i) + ".json", texts[i]);
+    std::string from_text, from_file;
+    std::vector<std::string> text_warnings, file_warnings;
+    try {
+      from_text = database_json(parse_database(texts[i], file, {}, text_warnings));
+    } catch (const InputError& e) {
+      from_text = e.what();
+    }
+    try {
+      from_file = database_json(read_database(file, {}, file_warnings));
+    } catch (const InputError& e) {
+      from_file = e.what();
+    }
+    EXPECT_EQ(from_file, from_text) << i;
+    EXPECT_EQ(file_warnings, text_warnings) << i;
+    const std::vector<std::string> expected = {"", "", ": line ", "a NUL byte",
+                                               "faces[0].lit['sun'][1]: lies outside its face"};
+    EXPECT_NE(from_file.find(expected[i]), std::string::npos) << from_file;
+    EXPECT_EQ(file_warnings.size(), i < 2 ? 1u : 0u) << i;
   }
 }
 
