@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "clipper/clip.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/database.h"
 #include "shadowgen/scene/scene_reader.h"
@@ -268,6 +269,25 @@ TEST(DatabaseReader, AFileReadsAsItsText) {
                                                "faces[0].lit['sun'][1]: lies outside its face"};
     EXPECT_NE(from_file.find(expected[i]), std::string::npos) << from_file;
     EXPECT_EQ(file_warnings.size(), i < 2 ? 1u : 0u) << i;
+  }
+}
+
+// A check whose clip does not settle its snapping is the clipper's error (exit code 3 on
+// the command line), naming the file, the face and where in it: the database may be
+// right, but cannot be shown to be. The limit is lowered until an ordinary T-junction
+// between two lit polygons runs into it.
+TEST(DatabaseReader, ACheckWhoseClipDoesNotSettleNamesTheFileAndTheFace) {
+  const std::string text = database(square(0, 2.5, 1) + "," + square(1, 3, 1));
+  EXPECT_NO_THROW((void)parse_database(text, "db.json"));
+  const clipper::SnapRoundLimitForTesting limit(0, 0);
+  try {
+    (void)parse_database(text, "db.json");
+    ADD_FAILURE() << "no error";
+  } catch (const clipper::SnapRoundingError& e) {
+    EXPECT_TRUE(starts_with(e.what(),
+                            "db.json: face 'wall': faces[0].lit['sun']: the lit polygons could "
+                            "not be checked: snap rounding of "))
+        << e.what();
   }
 }
 
