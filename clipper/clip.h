@@ -53,10 +53,11 @@
 // wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
 // count such folds as they are, so the pieces are the Boolean combination of the snapped
 // operands, which differ from the input by the pixels that moved them. The snapping is
-// iterated, and nothing proves that it always ends with edges meeting only at vertices:
-// some inputs cycle. After 17 rounds of changes it stops at the first state whose edges
-// are checked exactly to meet only at vertices, within 34 rounds more; if none is
-// reached, the pieces would still be valid loops but their areas could be wrong by more
+// iterated, and nothing proves that it always ends with edges meeting only at vertices
+// (points cut out of a route stay out of it, which ended the cycles seen, and then the
+// edges are checked exactly). After 17 rounds of changes it stops at the first state
+// whose edges are checked exactly to meet only at vertices, within 34 rounds more; if
+// none is reached, the pieces would still be valid loops but their areas could be wrong by more
 // than the pixels account for (README, Limits), so the call throws SnapRoundingError
 // instead of returning them.
 //

@@ -14,14 +14,15 @@ namespace {
 
 // Rounds of changes after which the snapping looks for an end. A round looks only at
 // what the previous one changed; a second round finds something on near-degenerate input
-// only, a third was seen on adversarial input alone. Some inputs never settle: a route
-// that comes back to a point it passes cuts out the stretch between, and the point is
-// found in its way again (on self-crossing boundaries, and where dozens of rounded
-// crossings crowd within a few pixels, as the shadow edges of a sun path fanning out from
-// one corner do). Such a cycle of rounds passes through states whose edges meet only at
-// vertices (noded, snap_convergence.h), so past the limit the rounds go on until one of
-// them is reached, for kSearchRounds more at most: one that was seen lasted six rounds,
-// and half of its states were noded.
+// only, a third was seen on adversarial input alone. Inputs that cycle are known: a
+// route that came back to a point it passes had the stretch between cut out, and the
+// points cut out were found in its way again, round after round (on self-crossing
+// boundaries, and where dozens of rounded crossings crowd within a few pixels, as the
+// shadow edges of a sun path fanning out from one corner do). Points cut out of a route
+// are now kept out of it (snap_rounding.cpp). Should a cycle still arise, the ones seen
+// passed through states whose edges meet only at vertices (noded, snap_convergence.h),
+// so past the limit the rounds go on until one of them is reached, for kSearchRounds
+// more at most: one that was seen lasted six rounds, and half of its states were noded.
 constexpr int kMaxRounds = 17;
 constexpr int kSearchRounds = 34;
 

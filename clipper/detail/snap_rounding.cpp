@@ -246,6 +246,7 @@ class SnapRounder {
   struct Changes {
     std::vector<Insertion> insertions;
     std::vector<Cut> cuts;
+    bool held_back = false;  // a point found in a piece's way was not put back (plan)
   };
 
  public:
@@ -258,6 +259,7 @@ class SnapRounder {
       }
     }
     changed_.assign(segments_.size(), 1);
+    cut_out_.resize(segments_.size());
   }
 
   // `loops` are those the rounder was made from: their sizes tell write_back where each
@@ -287,7 +289,12 @@ class SnapRounder {
       Changes changes = plan(found.through);
       const bool added = !changes.insertions.empty() || !changes.cuts.empty();
       apply(changes);
-      if (!merged && !added) break;
+      if (!merged && !added) {
+        // Nothing left to change but points held back: whether the edges meet only at
+        // vertices is then checked exactly (snap_round), as where the limit stops it.
+        stats.converged = !changes.held_back;
+        break;
+      }
       ++stats.rounds;
       stats.splits += changes.insertions.size();
       if (merged) {
@@ -350,6 +357,11 @@ class SnapRounder {
         if (it != s.route.end()) place = static_cast<std::size_t>(it - s.route.begin()) + 1;
       }
       if (place == s.route.size() + 2) {
+        const std::vector<Point2>& gone = cut_out_[e.segment];
+        if (std::find(gone.begin(), gone.end(), r) != gone.end()) {
+          changes.held_back = true;
+          continue;
+        }
         insertions.push_back({e.segment, e.position, r, found_point.crossing && r == point,
                               found_point.f0, found_point.f1});
         continue;
@@ -380,6 +392,9 @@ class SnapRounder {
     insert(changes.insertions);
     for (const Cut& cut : changes.cuts) {
       Loop2& route = segments_[cut.segment].route;
+      std::vector<Point2>& gone = cut_out_[cut.segment];
+      gone.insert(gone.end(), route.begin() + static_cast<std::ptrdiff_t>(cut.first),
+                  route.begin() + static_cast<std::ptrdiff_t>(cut.last));
       route.erase(route.begin() + static_cast<std::ptrdiff_t>(cut.first),
                   route.begin() + static_cast<std::ptrdiff_t>(cut.last));
       changed_[cut.segment] = 1;
@@ -521,6 +536,7 @@ class SnapRounder {
 
   std::vector<Segment> segments_;
   std::vector<char> changed_;
+  std::vector<std::vector<Point2>> cut_out_;  // per segment, the points cuts took out of its route
   std::vector<Piece> pieces_;
   std::unordered_map<Point2, Point2, Point2Hash> to_;  // merged vertex -> the one it became
 };

@@ -12,7 +12,11 @@
 // with doubles for the grid and hot pixels of six ulps of each point's own
 // magnitude. Each input edge keeps its route, the points it passes through in order; a
 // point found in the way of a piece goes into that piece, and into a route at most once,
-// so no two points can take turns splitting each other.
+// so no two points can take turns splitting each other. A route found passing a point a
+// second time has the stretch between cut out (a sliver loop narrower than the pixels
+// it passes), and the points cut out never go back into that route: put back, they
+// made the same cut again, round after round, where dozens of rounded crossings crowd
+// within a few pixels (the shadow edges of a sun path fanning out from one corner).
 //
 // Vertices in each other's pixels are merged (the one with the wider pixel stays), never
 // along a chain. A piece routed through a vertex off its input edge may lie that far from
@@ -46,7 +50,8 @@ struct SnapRoundingStats {
   int rounds = 0;             // rounds that changed a route or merged vertices
   std::size_t crossings = 0;  // rounded crossing points made
   std::size_t splits = 0;     // points put into routes
-  bool converged = true;      // false when the round limit stopped it
+  bool converged = true;      // false when the round limit stopped it, or it ended
+                              // with points held out of routes they were cut from
   bool separated = false;     // decided by the shortcut, without rounds
 };
 
@@ -61,12 +66,12 @@ enum class SnapPath { kShortcutWhereShown, kRoundsOnly };
 // repeated vertices or edges run both ways (a needle of its region closed by the
 // snapping); a loop snapped to a single point comes back empty, in its place.
 //
-// Where the round limit stops the snapping (stats->converged false), the snapped edges
-// are checked exactly: meeting only at common vertices or as the very same segment, they
-// are a plane graph, and the loops come back snapped as far as the rounds went. Otherwise
-// it throws SnapRoundingError (clipper/clip.h), after filling `stats`, and the loops are
-// left as they came: a graph that is not noded would give every caller pieces whose areas
-// could be wrong, so none gets one.
+// Where the round limit stops the snapping, or it ends with points held out of routes
+// (stats->converged false), the snapped edges are checked exactly: meeting only at common
+// vertices or as the very same segment, they are a plane graph, and the loops come back
+// snapped as far as the rounds went. Otherwise it throws SnapRoundingError (clipper/
+// clip.h), after filling `stats`, and the loops are left as they came: a graph that is
+// not noded would give every caller pieces whose areas could be wrong, so none gets one.
 void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats = nullptr,
                 SnapPath path = SnapPath::kShortcutWhereShown);
 
