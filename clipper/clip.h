@@ -53,13 +53,14 @@
 // wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
 // count such folds as they are, so the pieces are the Boolean combination of the snapped
 // operands, which differ from the input by the pixels that moved them. The snapping is
-// iterated, and nothing proves that it always ends with edges meeting only at vertices
-// (points cut out of a route stay out of it, which ended the cycles seen, and then the
-// edges are checked exactly). After 17 rounds of changes it stops at the first state
-// whose edges are checked exactly to meet only at vertices, within 34 rounds more; if
-// none is reached, the pieces would still be valid loops but their areas could be wrong by more
-// than the pixels account for (README, Limits), so the call throws SnapRoundingError
-// instead of returning them.
+// iterated, and nothing proves that it always ends with edges meeting only at vertices:
+// it can cycle, cutting sliver loops out of routes and putting their points back. The
+// rounds first keep such points out, then, where that leaves edges crossing, run again
+// putting them back, stopping after 17 rounds of changes at the first state whose edges
+// are checked exactly to meet only at vertices, within 34 rounds more. Where neither
+// way ends noded, the pieces would still be valid loops but their areas could be wrong
+// by more than the pixels account for (README, Limits), so the call throws
+// SnapRoundingError instead of returning them.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges

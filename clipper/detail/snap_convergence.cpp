@@ -18,11 +18,12 @@ namespace {
 // route that came back to a point it passes had the stretch between cut out, and the
 // points cut out were found in its way again, round after round (on self-crossing
 // boundaries, and where dozens of rounded crossings crowd within a few pixels, as the
-// shadow edges of a sun path fanning out from one corner do). Points cut out of a route
-// are now kept out of it (snap_rounding.cpp). Should a cycle still arise, the ones seen
-// passed through states whose edges meet only at vertices (noded, snap_convergence.h),
-// so past the limit the rounds go on until one of them is reached, for kSearchRounds
-// more at most: one that was seen lasted six rounds, and half of its states were noded.
+// shadow edges of a sun path fanning out from one corner do). The rounds first keep
+// points cut out of a route out of it (snap_rounding.h); where they run again putting
+// them back, the cycles seen passed through states whose edges meet only at vertices
+// (noded, snap_convergence.h), so past the limit the rounds go on until one of them is
+// reached, for kSearchRounds more at most: one that was seen lasted six rounds, and half
+// of its states were noded.
 constexpr int kMaxRounds = 17;
 constexpr int kSearchRounds = 34;
 

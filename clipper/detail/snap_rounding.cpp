@@ -250,7 +250,8 @@ class SnapRounder {
   };
 
  public:
-  explicit SnapRounder(const std::vector<Loop2> (&loops)[2]) {
+  // `hold_back`: points cut out of a route stay out of it (snap_rounding.h).
+  SnapRounder(const std::vector<Loop2> (&loops)[2], bool hold_back) : hold_back_(hold_back) {
     for (int side = 0; side < 2; ++side) {
       for (const Loop2& loop : loops[side]) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -358,7 +359,7 @@ class SnapRounder {
       }
       if (place == s.route.size() + 2) {
         const std::vector<Point2>& gone = cut_out_[e.segment];
-        if (std::find(gone.begin(), gone.end(), r) != gone.end()) {
+        if (hold_back_ && std::find(gone.begin(), gone.end(), r) != gone.end()) {
           changes.held_back = true;
           continue;
         }
@@ -536,6 +537,7 @@ class SnapRounder {
 
   std::vector<Segment> segments_;
   std::vector<char> changed_;
+  const bool hold_back_;
   std::vector<std::vector<Point2>> cut_out_;  // per segment, the points cuts took out of its route
   std::vector<Piece> pieces_;
   std::unordered_map<Point2, Point2, Point2Hash> to_;  // merged vertex -> the one it became
@@ -545,26 +547,34 @@ class SnapRounder {
 
 void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats, SnapPath path) {
   if (path == SnapPath::kShortcutWhereShown && snap_round_separated(loops, stats)) return;
-  SnapRounder rounder(loops);
-  const SnapRoundingStats local = rounder.run(loops);
-  if (stats != nullptr) *stats = local;
-  if (local.converged) {
-    rounder.write_back(loops);
-    return;
-  }
-  std::vector<Loop2> snapped[2] = {loops[0], loops[1]};
-  rounder.write_back(snapped);
-  if (!noded(snapped)) {
-    std::size_t edges = 0;
-    for (const auto& side : loops) {
-      for (const Loop2& loop : side) edges += loop.size();
+  // Points cut out of routes held back first: that ends the cycles of cuts. Where it
+  // leaves edges crossing, the rounds again putting points back, cycles and all, which
+  // pass through noded states (snap_convergence.cpp): each way settled inputs the other
+  // did not.
+  SnapRoundingStats local;
+  for (const bool hold_back : {true, false}) {
+    SnapRounder rounder(loops, hold_back);
+    local = rounder.run(loops);
+    if (stats != nullptr) *stats = local;
+    if (local.converged) {
+      rounder.write_back(loops);
+      return;
     }
-    throw SnapRoundingError("snap rounding of " + std::to_string(edges) +
-                            " edges did not settle within " + std::to_string(local.rounds) +
-                            " rounds: edges still meet elsewhere than at common vertices");
+    std::vector<Loop2> snapped[2] = {loops[0], loops[1]};
+    rounder.write_back(snapped);
+    if (noded(snapped)) {
+      loops[0] = std::move(snapped[0]);
+      loops[1] = std::move(snapped[1]);
+      return;
+    }
   }
-  loops[0] = std::move(snapped[0]);
-  loops[1] = std::move(snapped[1]);
+  std::size_t edges = 0;
+  for (const auto& side : loops) {
+    for (const Loop2& loop : side) edges += loop.size();
+  }
+  throw SnapRoundingError("snap rounding of " + std::to_string(edges) +
+                          " edges did not settle within " + std::to_string(local.rounds) +
+                          " rounds: edges still meet elsewhere than at common vertices");
 }
 
 }  // namespace shadowgen::clipper::detail

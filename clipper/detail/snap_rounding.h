@@ -14,9 +14,12 @@
 // point found in the way of a piece goes into that piece, and into a route at most once,
 // so no two points can take turns splitting each other. A route found passing a point a
 // second time has the stretch between cut out (a sliver loop narrower than the pixels
-// it passes), and the points cut out never go back into that route: put back, they
-// made the same cut again, round after round, where dozens of rounded crossings crowd
-// within a few pixels (the shadow edges of a sun path fanning out from one corner).
+// it passes). Put back, the points cut out can make the same cut again, round after
+// round, where dozens of rounded crossings crowd within a few pixels (the shadow edges
+// of a sun path fanning out from one corner), so the rounds first keep them out of that
+// route; where that leaves edges crossing, the rounds run again putting them back, and
+// such cycles pass through states whose edges meet only at vertices (snap_convergence.h).
+// Each way settled inputs the other did not.
 //
 // Vertices in each other's pixels are merged (the one with the wider pixel stays), never
 // along a chain. A piece routed through a vertex off its input edge may lie that far from

@@ -137,13 +137,10 @@ TEST(SnapRoundingError, AFanOfShadowTrianglesSettles) {
   EXPECT_NEAR(test::exact_union_area(outside), 400.0 - in.b_union, 1e-11);
 }
 
-// What regressions/sun-hours-regions-cycling-in-many-fans.clips says: several cycles at
-// once, never all in a noded state together. With points cut out of a route kept out of
-// it, the clip settles, and its inside is the regions' union, the whole part.
-TEST(SnapRoundingError, ManyFansOfSunHoursRegionsSettle) {
-  std::ifstream in(std::string(SHADOWGEN_REGRESSION_DIR) +
-                   "/sun-hours-regions-cycling-in-many-fans.clips");
-  ASSERT_TRUE(in);
+// A `.clips` file of regressions/: a subject and the clips clip(subject, clips) takes.
+std::vector<PolygonWithHoles2> read_clips(const std::string& name, PolygonWithHoles2& subject) {
+  std::ifstream in(std::string(SHADOWGEN_REGRESSION_DIR) + "/" + name);
+  EXPECT_TRUE(in) << name;
   std::vector<PolygonWithHoles2> sets[2];
   std::string word;
   for (auto& set : sets) {
@@ -168,13 +165,28 @@ TEST(SnapRoundingError, ManyFansOfSunHoursRegionsSettle) {
       set.push_back(std::move(polygon));
     }
   }
-  ASSERT_EQ(sets[0].size(), 1u);
-  ASSERT_EQ(sets[1].size(), 724u);
-  const ClipResult result = clip(sets[0][0], sets[1]);
-  const std::vector<PolygonSet2> part = {{sets[0][0]}}, inside = {result.inside};
-  const double whole = test::exact_union_area(part);
-  EXPECT_NEAR(test::exact_union_area(inside), whole, 1e-11 * whole);
-  EXPECT_LT(area(result.outside), 1e-11 * whole);
+  EXPECT_EQ(sets[0].size(), 1u) << name;
+  subject = sets[0].empty() ? PolygonWithHoles2{} : sets[0][0];
+  return sets[1];
+}
+
+// Two grounds' sun-hours regions on the 100,000-face city's day, clipped together to
+// check that they do not overlap (the regression files say how each failed): one settles
+// only with the points cut out of routes held back, the other only with them put back.
+// Either way the inside is the regions' union, the whole part.
+TEST(SnapRoundingError, SunHoursRegionsOfGroundsInManyFansSettle) {
+  for (const auto& [name, regions] :
+       {std::pair<std::string, std::size_t>{"sun-hours-regions-cycling-in-many-fans.clips", 724},
+        {"sun-hours-regions-settled-only-putting-points-back.clips", 1090}}) {
+    PolygonWithHoles2 part;
+    const std::vector<PolygonWithHoles2> clips = read_clips(name, part);
+    ASSERT_EQ(clips.size(), regions) << name;
+    const ClipResult result = clip(part, clips);
+    const std::vector<PolygonSet2> whole_part = {{part}}, inside = {result.inside};
+    const double whole = test::exact_union_area(whole_part);
+    EXPECT_NEAR(test::exact_union_area(inside), whole, 1e-11 * whole) << name;
+    EXPECT_LT(area(result.outside), 1e-11 * whole) << name;
+  }
 }
 
 // The rounds an input takes are enough; one fewer stops the snapping before its last
