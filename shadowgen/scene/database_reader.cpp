@@ -62,7 +62,8 @@ class DatabaseParser {
     const auto take = [&](const JsonValue& root, const JsonValue& face) {
       if (!top && !buffered) {
         header_then = header_present(root);
-        if (!stream_faces_ || !header_then[0] || !header_then[2] || !header_then[3]) {
+        if (!stream_faces_ || !header_then[kFormat] || !header_then[kLights] ||
+            !header_then[kViews]) {
           buffered = true;
         } else {
           top.emplace(root.object());
@@ -95,7 +96,7 @@ class DatabaseParser {
       read_header(*top, shadowed);
     }
     const JsonArray faces = top->get("faces").array();
-    if (buffered || faces.empty()) {  // an empty array, or one that is not there, never streamed
+    if (buffered) {  // otherwise every face was read as it came, or there is none
       for (std::size_t i = 0; i < faces.size(); ++i) read_face(faces.at(i), shadowed);
     }
     top->finish();
@@ -107,6 +108,7 @@ class DatabaseParser {
  private:
   // The members read before the faces, in this order: which of them the root has.
   static constexpr const char* kHeader[] = {"format", "shard", "lights", "views", "sun_paths"};
+  static constexpr std::size_t kFormat = 0, kLights = 2, kViews = 3;  // required ones in it
   static std::vector<bool> header_present(const JsonValue& root) {
     std::vector<bool> present;
     if (!root.is_object()) return present;
