@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "shadowgen/output/atomic_file.h"
@@ -13,6 +14,44 @@ void refuse_input_as_output(const std::string& option, const std::string& output
   if (same_file(output, input)) {
     throw UsageError(option + " " + output + ": is the input " + input + "; it would be replaced");
   }
+}
+
+Method MethodArgs::method() const {
+  const MethodKind kind = method_kind(name).value_or(MethodKind::kExact);
+  if (kind == MethodKind::kExact && samples_option && samples_option->count() > 0) {
+    throw UsageError("--samples applies only to a sampled method (--method rays or shadow-map)");
+  }
+  if (kind != MethodKind::kShadowMap && resolution_option && resolution_option->count() > 0) {
+    throw UsageError("--resolution applies only to --method shadow-map");
+  }
+  Method method{kind};
+  if (kind != MethodKind::kExact) method.samples = samples;
+  if (kind == MethodKind::kShadowMap) method.resolution = resolution;
+  return method;
+}
+
+void add_method_options(CLI::App& command, MethodArgs& args) {
+  command
+      .add_option("--method", args.name,
+                  "how lit areas are found: exact (default; the lit regions themselves), rays "
+                  "(stratified points per face, a shadow ray from each, cast with Embree) or "
+                  "shadow-map (the same points looked up in depth maps from each light). A "
+                  "sampled method estimates lit areas and makes no lit polygon; its database and "
+                  "JSON report name it")
+      ->check(CLI::IsMember({"exact", "rays", "shadow-map"}));
+  args.samples_option =
+      command
+          .add_option("--samples", args.samples,
+                      "with a sampled method: points per face, stratified over its area "
+                      "(default " +
+                          std::to_string(kDefaultSamples) + ")")
+          ->check(CLI::Range(1, kMaxSamples));
+  args.resolution_option =
+      command
+          .add_option("--resolution", args.resolution,
+                      "with --method shadow-map: texels along each side of a depth map (default " +
+                          std::to_string(kDefaultResolution) + ")")
+          ->check(CLI::Range(1, kMaxResolution));
 }
 
 void add_lights_option(CLI::App& command, std::vector<std::string>& ids) {

@@ -4,7 +4,7 @@
 // the reading options (--strict, --threads, --quiet) and -o/--output, and the error for
 // arguments that parse but do not fit together. main.cpp wires the subcommands
 // (generate_command.cpp, report_command.cpp, export_command.cpp, render_command.cpp,
-// sun_command.cpp)
+// sun_command.cpp, merge_command.cpp, compare_command.cpp)
 // and turns their errors into exit codes.
 
 #include <CLI/CLI.hpp>
@@ -55,6 +55,7 @@ Command add_export_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_sun_command(CLI::App& app);
 Command add_merge_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 
 // How an input is read and its shadows generated.
 struct ReadingArgs {
@@ -70,6 +71,22 @@ struct ReadingArgs {
 // computes no shadow), no --threads.
 void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress = false,
                          bool generates = true);
+
+// How lit areas are found (--method, --samples, --resolution; LoadOptions::method).
+struct MethodArgs {
+  std::string name = "exact";
+  int samples = kDefaultSamples;
+  int resolution = kDefaultResolution;
+  CLI::Option* samples_option = nullptr;
+  CLI::Option* resolution_option = nullptr;
+
+  // The method asked for; a UsageError where --samples or --resolution comes with a
+  // method that takes none.
+  Method method() const;
+};
+
+// --method, --samples and --resolution on `command`.
+void add_method_options(CLI::App& command, MethodArgs& args);
 
 // --lights on `command`: the ids of the only lights a run takes (LoadOptions::lights).
 void add_lights_option(CLI::App& command, std::vector<std::string>& ids);

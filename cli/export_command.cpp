@@ -58,6 +58,7 @@ void run_export(const ExportArgs& args) {
   // A sun-hours export writes a path's sums, not its instants' lit polygons; a scene
   // without that path is refused before its shadows are computed.
   load.instant_polygons = args.sun_hours.path.empty();
+  load.draws = true;
   if (!args.sun_hours.path.empty()) {
     load.on_scene = [&args, check = load.on_scene](const Scene& scene) {
       if (check) check(scene);

@@ -40,6 +40,7 @@ struct GenerateArgs {
   bool keep_instants = false;  // LoadOptions::instant_polygons
   std::string instants;        // --instants K/N: LoadOptions::shard
   bool areas_only = false;     // --areas-only: not LoadOptions::sun_hours_regions
+  MethodArgs method;           // LoadOptions::method
 };
 
 // Upper bound of N in --instants K/N, the database reader's (far more than any scheduler
@@ -122,6 +123,7 @@ ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std:
   LoadOptions options = load_options(args.reading, Accept::kScene, {{"-o", database.string()}});
   options.instant_polygons = args.keep_instants;
   options.sun_hours_regions = !args.areas_only;
+  options.method = args.method.method();
   if (!args.instants.empty()) {
     options.shard = parse_shard(args.instants);
     options.on_scene = [&, check = options.on_scene](const Scene& scene) {
@@ -163,6 +165,15 @@ void run_generate(const GenerateArgs& args) {
       throw UsageError("--instants and --keep-instants: a shard keeps its instants' sums only");
     }
   }
+  const Method method = args.method.method();  // a usage error before any scene is read
+  if (!method.exact() && !args.instants.empty()) {
+    throw UsageError(
+        "--instants shares out exact sums; a sampled method's lit areas need no "
+        "shards");
+  }
+  if (!method.exact() && args.keep_instants) {
+    throw UsageError("--keep-instants keeps lit polygons, which a sampled method does not make");
+  }
   const std::vector<fs::path> paths = database_paths(args.scenes, args.output);
   const bool show_progress = !args.reading.quiet && stderr_is_terminal();
   for (std::size_t i = 0; i < args.scenes.size(); ++i) {
@@ -186,6 +197,7 @@ void add_generate_options(CLI::App& command, GenerateArgs& args) {
                     "(made when missing) that gets NAME.shadowed.json for each scene NAME.json")
       ->required();
   add_reading_options(command, args.reading, /*progress=*/true);
+  add_method_options(command, args.method);
   command.add_flag("--keep-instants", args.keep_instants,
                    "keep the lit polygons of every instant of a sun path, not only their sun "
                    "hours and lit areas (export and render draw only lights with polygons)");

@@ -85,7 +85,8 @@ int main(int argc, char** argv) {
   const shadowgen::cli::Command commands[] = {
       shadowgen::cli::add_generate_command(app), shadowgen::cli::add_report_command(app),
       shadowgen::cli::add_export_command(app),   shadowgen::cli::add_render_command(app),
-      shadowgen::cli::add_sun_command(app),      shadowgen::cli::add_merge_command(app)};
+      shadowgen::cli::add_sun_command(app),      shadowgen::cli::add_merge_command(app),
+      shadowgen::cli::add_compare_command(app)};
 
   try {
     app.parse(argc, argv);

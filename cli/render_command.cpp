@@ -120,6 +120,7 @@ void run_render(const RenderArgs& args) {
   load.lights = args.lights;
   // A sun-hours map draws a path's sums, not its instants' lit polygons.
   load.instant_polygons = args.sun_hours.path.empty();
+  load.draws = true;
   load.on_warning = [](const std::string& warning) {
     std::cerr << "shadowgen: warning: " << warning << '\n';
   };

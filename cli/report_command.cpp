@@ -33,6 +33,7 @@ struct ReportArgs {
   std::vector<double> thresholds{2.0};  // sun-hours: hours the areas are counted at
   std::string weather;                  // irradiation: an EPW file, else the scene's
   ReadingArgs reading;
+  MethodArgs method;  // a scene's (LoadOptions::method)
 };
 
 // The weather file irradiation reads: --weather, else the scene's `weather`.
@@ -59,6 +60,11 @@ std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
   }
   if (args.format == "table") return report_table(shadowed, args.top);
   if (args.format == "sun-hours") {
+    if (!shadowed.method.exact()) {
+      throw InputError(args.input, "",
+                       "holds the lit areas a sampled method estimated, without the exact "
+                       "sun-hours regions a sun-hours report needs");
+    }
     return sun_hours_csv(shadowed, args.thresholds,
                          args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
   }
@@ -75,6 +81,13 @@ void run_report(const ReportArgs& args) {
   LoadOptions options = load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs));
   // From a scene, a sun path's regions are made only for the report that reads them.
   options.sun_hours_regions = args.format == "sun-hours";
+  options.method = args.method.method();
+  if (!options.method.exact() && args.format == "sun-hours") {
+    throw UsageError(
+        "--format sun-hours reports exact sun-hours regions, which a sampled "
+        "method does not make (its lit areas give --format energyplus and "
+        "irradiation)");
+  }
   const ShadowedScene shadowed = load_shadowed(args.input, options);
   const std::string report = report_text(shadowed, args);
   if (args.output.empty()) {
@@ -125,6 +138,7 @@ Command add_report_command(CLI::App& app) {
   add_output_option(*command, args->output,
                     "file to write (replaced whole); default: standard output");
   add_reading_options(*command, args->reading);
+  add_method_options(*command, args->method);
   // Run at the end of parsing, so that the error is reported as a parse error is.
   command->callback([args, top, csv_safe, threshold, weather] {
     if (weather->count() > 0 && args->format != "irradiation") {

@@ -114,6 +114,7 @@ LitAreas::LitAreas(const ShadowedScene& shadowed)
 double LitAreas::operator()(std::size_t face, std::size_t light) const {
   const Place& place = place_.at(light);
   if (place.path) return place.path->lit_area.at(face).at(place.instant);
+  if (!shadowed_.method.exact()) return shadowed_.estimated_lit_area.at(light).at(face);
   return lit_area(shadowed_.lit.at(face, light));
 }
 

@@ -14,6 +14,7 @@
 #include "clipper/polygon.h"
 #include "hsr/polygon3.h"
 #include "shadowgen/model/lit_table.h"
+#include "shadowgen/model/method.h"
 #include "shadowgen/model/scene.h"
 
 namespace shadowgen {
@@ -90,6 +91,13 @@ struct ShadowedScene {
   // Set in a shard of a sun-path run, which only `merge` reads: lights that are not
   // instants of a path are lit in shard 0 alone.
   std::optional<ShardPlace> shard;
+  // How the lit areas were found. A sampled method leaves `lit` without polygons (no light
+  // kept) and its sun paths without regions: it has areas alone, estimated_lit_area's for
+  // the lights that are no instant of a path, the paths' lit_area for their instants.
+  Method method;
+  // [light][face]: a sampled method's lit area of every face, for each light that is no
+  // instant of a sun path (empty for those); empty for the exact method.
+  std::vector<std::vector<double>> estimated_lit_area;
 };
 
 // The sun path whose id is `id`. Throws InputError naming `file` where there is none,
@@ -115,7 +123,8 @@ void check_lit_shape(const ShadowedScene& shadowed, std::string_view who);
 std::string scene_file_of(const ShadowedScene& shadowed);
 
 // Lit area of every (face, light): from its lit polygons or, for an instant of a sun path
-// that keeps only its instants' lit areas, from the path's.
+// that keeps only its instants' lit areas, from the path's, or a sampled method's estimate
+// (ShadowedScene::estimated_lit_area).
 class LitAreas {
  public:
   explicit LitAreas(const ShadowedScene& shadowed);

@@ -10,6 +10,7 @@
 #include <unordered_set>
 #include <utility>
 
+#include "detail/method_json.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/output/atomic_file.h"
@@ -86,6 +87,14 @@ void check_writable(const ShadowedScene& shadowed) {
   check_unique_ids(scene.lights, "light");
   check_unique_ids(scene.views, "view");
   check_lit_shape(shadowed, "shadowed database");
+  if (!shadowed.method.exact()) {
+    const WriteCheck check("a sampled method's lit areas");
+    if (shadowed.estimated_lit_area.size() != scene.lights.size()) check.fail("not per light");
+    for (const std::vector<double>& column : shadowed.estimated_lit_area) {
+      if (!column.empty() && column.size() != scene.faces.size()) check.fail("not per face");
+      for (const double a : column) check.finite(a, "a lit area");
+    }
+  }
   for (const Light& light : scene.lights) {
     const WriteCheck check("light '" + light.id + "'");
     check.finite(light.direction, "direction");
@@ -311,14 +320,23 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
   out.key("parts").begin_array(Layout::kLines);
   for (const Polygon3& part : face.parts) write_polygon(out, part);
   out.end_array();
-  out.key("lit").begin_object(Layout::kLines);
   const bool with_part = face.parts.size() > 1;
-  for (std::size_t l = 0; l < lights.size(); ++l) {
-    if (lit[l].empty()) continue;
-    out.key(lights[l].id);
-    write_lit_polygons(out, lit[l], with_part);
+  if (!shadowed.method.exact()) {  // areas alone, of every light that is no path's instant
+    out.key("lit_area").begin_object();
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+      const std::vector<double>& column = shadowed.estimated_lit_area[l];
+      if (!column.empty()) out.key(lights[l].id).value(column[f]);
+    }
+    out.end_object();
+  } else {
+    out.key("lit").begin_object(Layout::kLines);
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+      if (lit[l].empty()) continue;
+      out.key(lights[l].id);
+      write_lit_polygons(out, lit[l], with_part);
+    }
+    out.end_object();
   }
-  out.end_object();
   if (!shadowed.sun_paths.empty()) write_sun_hours(out, f, shadowed.sun_paths, with_part);
   out.end_object();
 }
@@ -335,6 +353,7 @@ void write_database_to(const ShadowedScene& shadowed, JsonWriter& out) {
     out.key("shard").begin_object().key("index").value(std::uint64_t{shadowed.shard->index + 1});
     out.key("count").value(std::uint64_t{shadowed.shard->count}).end_object();
   }
+  if (!shadowed.method.exact()) detail::write_method(out, shadowed.method);
   out.key("lights").begin_array(Layout::kLines);
   for (const Light& light : scene.lights) write_light(out, light);
   out.end_array();

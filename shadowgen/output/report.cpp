@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "detail/csv_fields.h"
+#include "detail/method_json.h"
+#include "detail/text_table.h"
 #include "hsr/area.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/model/input_error.h"
@@ -58,46 +60,6 @@ std::string readable_area(double value) {
 std::string readable_fraction(double value) {
   return number_text(value, std::chars_format::fixed, 4);
 }
-
-// Columns as wide as their widest cell, counted in UTF-8 code points (continuation bytes
-// 10xxxxxx take no room), so ids in any script line up in a monospaced terminal.
-std::size_t display_width(std::string_view text) {
-  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
-    return (static_cast<unsigned char>(c) & 0xc0) != 0x80;
-  }));
-}
-
-class TextTable {
- public:
-  // One entry per column: true where the column is right-aligned (numbers).
-  explicit TextTable(std::vector<bool> right_aligned) : right_aligned_(std::move(right_aligned)) {}
-
-  void add(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
-
-  void append_to(std::string& out) const {
-    std::vector<std::size_t> width(right_aligned_.size(), 0);
-    for (const auto& row : rows_) {
-      for (std::size_t c = 0; c < row.size(); ++c) {
-        width[c] = std::max(width[c], display_width(row[c]));
-      }
-    }
-    for (const auto& row : rows_) {
-      std::string line;
-      for (std::size_t c = 0; c < row.size(); ++c) {
-        const std::string padding(width[c] - display_width(row[c]), ' ');
-        if (c > 0) line += "  ";
-        line += right_aligned_[c] ? padding + row[c] : row[c] + padding;
-      }
-      line.erase(line.find_last_not_of(' ') + 1);
-      out += line;
-      out += '\n';
-    }
-  }
-
- private:
-  std::vector<bool> right_aligned_;
-  std::vector<std::vector<std::string>> rows_;
-};
 
 // The lit polygons are the lit region up to rounding, which can put a fully lit face's
 // polygons a hair over the face's own area (lit fraction 1.0000000000000007). An excess
@@ -210,6 +172,7 @@ std::string report_json(const ShadowedScene& shadowed) {
 
   JsonWriter out;
   out.begin_object(Layout::kLines).key("format").value("shadowgen-report/1");
+  detail::write_method(out, shadowed.method);
   out.key("rows").begin_array(Layout::kLines);
   for (const ReportRow& row : rows) {
     out.begin_object();
@@ -241,7 +204,15 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
   const Totals sums = totals_of(scene, rows);
 
   std::string out;
-  TextTable totals({false, true, true, true, true, true});
+  if (!shadowed.method.exact()) {  // never to be read as the exact answer
+    out += "lit areas estimated by the " + std::string(method_name(shadowed.method.kind)) +
+           " method, " + std::to_string(shadowed.method.samples) + " samples per face";
+    if (shadowed.method.kind == MethodKind::kShadowMap) {
+      out += ", depth maps of " + std::to_string(shadowed.method.resolution) + " texels a side";
+    }
+    out += "\n";
+  }
+  detail::TextTable totals({false, true, true, true, true, true});
   totals.add({"light_id", "faces", "lit_faces", "area", "lit_area", "lit_fraction"});
   for (std::size_t l = 0; l < lights; ++l) {
     const double area_value = sums.light_area[l];
@@ -268,7 +239,7 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
     out += "\nmost shadowed faces under " + one_line(scene.lights[l].id) +
            " (lowest lit fraction first, " + std::to_string(shown) + " of " +
            std::to_string(shadowed_rows.size()) + ")\n";
-    TextTable faces({false, true, true, true});
+    detail::TextTable faces({false, true, true, true});
     faces.add({"face_id", "area", "lit_area", "lit_fraction"});
     for (std::size_t i = 0; i < shown; ++i) {
       const ReportRow& row = *shadowed_rows[i];

@@ -91,6 +91,7 @@ void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const s
   shadowed.sun_paths = std::move(paths);
   keep_marked(shadowed.scene.lights, keep);
   shadowed.lit.keep_lights(keep);
+  if (!shadowed.estimated_lit_area.empty()) keep_marked(shadowed.estimated_lit_area, keep);
 }
 
 }  // namespace

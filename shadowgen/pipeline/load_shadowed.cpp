@@ -8,6 +8,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/pipeline/light_choice.h"
+#include "shadowgen/pipeline/method_run.h"
 #include "shadowgen/scene/database_reader.h"
 #include "shadowgen/scene/scene_reader.h"
 
@@ -44,11 +45,23 @@ ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
   generate.sun_hours_regions = options.sun_hours_regions;
   generate.on_light_done = options.on_light_done;
   try {
-    return generate_shadows(scene, generate).shadowed;
+    return shadows_by_method(scene, options.method, std::move(generate)).shadowed;
   } catch (const GenerationError& e) {
     // Only here is the file known.
     throw GenerationError(path.string(), e.face_id(), e.light_id(), e.problem());
   }
+}
+
+// "method rays, 256 samples per face", as messages name a database's method.
+std::string method_text(const ShadowedScene& shadowed) {
+  const Method& method = shadowed.method;
+  std::string text = "method " + std::string(method_name(method.kind));
+  if (method.exact()) return text;
+  text += ", " + std::to_string(method.samples) + " samples per face";
+  if (method.kind == MethodKind::kShadowMap) {
+    text += ", maps of " + std::to_string(method.resolution) + " texels a side";
+  }
+  return text;
 }
 
 // `text`: the database's text where it was read whole (standard input); otherwise the
@@ -67,6 +80,16 @@ ShadowedScene database(const std::filesystem::path& path, const std::string* tex
                          "database: join every shard with shadowgen merge first");
   }
   if (options.accept == Accept::kShard) return shadowed;  // merge takes it as it is
+  if (!options.method.exact()) {
+    throw InputError(path.string(), "",
+                     "is a shadowed database, read as it was made (" + method_text(shadowed) +
+                         "): a method applies to a scene only");
+  }
+  if (options.draws && !shadowed.method.exact()) {
+    throw InputError(path.string(), "",
+                     "holds the lit areas a sampled method estimated (" + method_text(shadowed) +
+                         "), no lit polygons to draw: generate it with --method exact");
+  }
   keep_lights(shadowed, options.lights, path.string());
   if (options.instant_polygons && options.on_warning) {
     for (const std::string& sun_path : drop_summed_instants(shadowed, path.string())) {

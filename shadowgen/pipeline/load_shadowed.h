@@ -40,6 +40,14 @@ struct LoadOptions {
   // paths keep their instants' polygons (GenerateOptions::keep_instant_polygons); a
   // database's sun paths that kept only lit areas are dropped, with a warning.
   bool instant_polygons = false;
+  // How a scene's lit areas are found (generate, report): a sampled method estimates them
+  // (shadowgen/sampled/estimate.h) and makes no lit polygon. A database is read as it is
+  // made: with a sampled method asked for, it is refused, as it is where the caller draws
+  // (`draws`) and the database holds a sampled method's areas.
+  Method method;
+  // Whether the caller draws lit polygons or sun-hours regions (export, render), which a
+  // sampled method does not make: a scene is generated exactly, a sampled database refused.
+  bool draws = false;
   // When not empty, only these of the input's lights (light_choice.h): a scene's others
   // are not generated, a database's are dropped.
   std::vector<std::string> lights;

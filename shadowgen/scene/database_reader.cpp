@@ -107,8 +107,9 @@ class DatabaseParser {
 
  private:
   // The members read before the faces, in this order: which of them the root has.
-  static constexpr const char* kHeader[] = {"format", "shard", "lights", "views", "sun_paths"};
-  static constexpr std::size_t kFormat = 0, kLights = 2, kViews = 3;  // required ones in it
+  static constexpr const char* kHeader[] = {"format", "shard", "method",
+                                            "lights", "views", "sun_paths"};
+  static constexpr std::size_t kFormat = 0, kLights = 3, kViews = 4;  // required ones in it
   static std::vector<bool> header_present(const JsonValue& root) {
     std::vector<bool> present;
     if (!root.is_object()) return present;
@@ -127,6 +128,12 @@ class DatabaseParser {
     if (const std::optional<JsonValue> shard = top.find("shard")) {
       shadowed.shard = read_shard(*shard);
     }
+    if (const std::optional<JsonValue> method = top.find("method")) {
+      shadowed.method = read_method(*method);
+      if (shadowed.shard && !shadowed.method.exact()) {
+        method->fail("a shard is made by the exact method only");
+      }
+    }
     const JsonArray lights = top.get("lights").array();
     detail::IdRegistry light_ids;
     for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -143,13 +150,57 @@ class DatabaseParser {
     if (const std::optional<JsonValue> paths = top.find("sun_paths")) {
       read_sun_paths(*paths, shadowed);
     }
+    if (!shadowed.method.exact()) {
+      for (const SunPathHours& path : shadowed.sun_paths) {
+        if (path.regions_kept || path.lit_polygons_kept) {
+          top.get("sun_paths")
+              .fail("sun path '" + one_line(path.id) +
+                    "': a sampled method keeps lit areas alone: \"regions\" "
+                    "and \"instant_polygons\" must be \"dropped\"");
+        }
+      }
+    }
     shadowed.lit = LitTable(0, shadowed.scene.lights.size(), kept_lights(shadowed));
+    if (!shadowed.method.exact()) {
+      shadowed.estimated_lit_area.resize(shadowed.scene.lights.size());
+      instant_.assign(shadowed.scene.lights.size(), 0);
+      for (const SunPathHours& path : shadowed.sun_paths) {
+        for (const std::size_t l : path.instants) instant_[l] = 1;
+      }
+    }
+  }
+
+  // "method": {"name": "rays" | "shadow-map" | "exact", "samples": N, "resolution": R}
+  // (samples for a sampled method, resolution for the shadow map alone).
+  static Method read_method(const JsonValue& value) {
+    JsonObject entry = value.object();
+    const JsonValue name = entry.get("name");
+    const std::optional<MethodKind> kind = method_kind(name.string());
+    if (!kind) name.fail("unknown method '" + name.string() + "' (exact, rays, shadow-map)");
+    Method method{*kind};
+    if (!method.exact()) {
+      const JsonValue samples = entry.get("samples");
+      if (samples.index() < 1 || samples.index() > std::size_t{kMaxSamples}) {
+        samples.fail("expected sample points per face from 1 to " + std::to_string(kMaxSamples));
+      }
+      method.samples = static_cast<int>(samples.index());
+    }
+    if (method.kind == MethodKind::kShadowMap) {
+      const JsonValue resolution = entry.get("resolution");
+      if (resolution.index() < 1 || resolution.index() > std::size_t{kMaxResolution}) {
+        resolution.fail("expected texels per side from 1 to " + std::to_string(kMaxResolution));
+      }
+      method.resolution = static_cast<int>(resolution.index());
+    }
+    entry.finish();
+    return method;
   }
 
   // Per light, whether faces may list its lit polygons: not for the instants of a path
-  // whose instant polygons were dropped (only their lit areas are kept).
+  // whose instant polygons were dropped (only their lit areas are kept), and for no light
+  // of a sampled method.
   static std::vector<bool> kept_lights(const ShadowedScene& shadowed) {
-    std::vector<bool> kept(shadowed.scene.lights.size(), true);
+    std::vector<bool> kept(shadowed.scene.lights.size(), shadowed.method.exact());
     for (const SunPathHours& path : shadowed.sun_paths) {
       if (path.lit_polygons_kept) continue;
       for (const std::size_t l : path.instants) kept[l] = false;
@@ -415,6 +466,13 @@ class DatabaseParser {
     const std::size_t f = shadowed.lit.size();
     shadowed.lit.add_face();
     lists_of_face_.push_back(lists_.size());
+    if (!shadowed.method.exact()) {
+      read_estimated(entry, face, shadowed);
+      read_sun_hours(entry, face, shadowed);
+      entry.finish();
+      shadowed.scene.faces.push_back(std::move(face));
+      return;
+    }
     for (const auto& [light_id, list] : entry.get("lit").object().entries()) {
       const auto light = light_index_.find(light_id);
       if (light == light_index_.end()) list.fail("no light has this id");
@@ -429,6 +487,44 @@ class DatabaseParser {
     read_sun_hours(entry, face, shadowed);
     entry.finish();
     shadowed.scene.faces.push_back(std::move(face));
+  }
+
+  // A sampled method's "lit_area": {"light id": area, ...}, one for every light that is no
+  // instant of a sun path (an instant's area is in the face's "sun_hours"), each from 0 to
+  // the face's area.
+  void read_estimated(JsonObject& entry, const Face& face, ShadowedScene& shadowed) const {
+    if (const std::optional<JsonValue> lit = entry.find("lit")) {
+      lit->fail("a database made by the " + std::string(method_name(shadowed.method.kind)) +
+                " method holds lit areas (\"lit_area\"), not lit polygons");
+    }
+    const JsonValue areas_value = entry.get("lit_area");
+    const std::size_t face_index = shadowed.scene.faces.size();
+    const double face_area = hsr::area(face.parts);
+    const double tolerance = detail::LitChecker(face).area_tolerance({});
+    std::vector<bool> given(shadowed.scene.lights.size(), false);
+    for (const auto& [light_id, value] : areas_value.object().entries()) {
+      const auto light = light_index_.find(light_id);
+      if (light == light_index_.end()) value.fail("no light has this id");
+      const std::size_t l = light->second;
+      if (instant_[l]) {
+        value.fail("the light is an instant of sun path '" + one_line(path_of(shadowed, l)) +
+                   "', whose lit areas are in the face's \"sun_hours\"");
+      }
+      const double a = value.number();
+      if (a < 0.0 || a > face_area + tolerance) {
+        value.fail("a lit area of " + shortest(a) + " is not between 0 and the face's area of " +
+                   shortest(face_area));
+      }
+      std::vector<double>& column = shadowed.estimated_lit_area[l];
+      column.resize(face_index + 1, 0.0);
+      column[face_index] = a;
+      given[l] = true;
+    }
+    for (std::size_t l = 0; l < given.size(); ++l) {
+      if (!given[l] && !instant_[l]) {
+        areas_value.fail("no lit area for light '" + one_line(shadowed.scene.lights[l].id) + "'");
+      }
+    }
   }
 
   static const std::string& path_of(const ShadowedScene& shadowed, std::size_t light) {
@@ -739,6 +835,7 @@ class DatabaseParser {
   std::vector<std::size_t> lists_of_face_;
   std::vector<LitList> lists_;
   std::vector<std::vector<JsonPlace>> path_values_;  // [path][face]: faces[f].sun_hours.<path>
+  std::vector<char> instant_;  // a sampled method's: per light, whether it is a path's instant
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <new>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 #include "clipper/clip.h"
 #include "detail/face_parts.h"
@@ -139,19 +140,32 @@ class PathSums {
   bool summed_here(std::size_t light) const { return place_[light].has_value(); }
 
   // Adds the lit polygons of lights `batch`, lit[i][face] for light batch[i], to their
-  // paths, in light order, each face on its own.
+  // paths, in light order, each face on its own; or, for a sampled method, the lit areas
+  // estimated[i][face][part].
   void add(const std::vector<std::size_t>& batch,
-           const std::vector<std::vector<std::vector<LitPolygon>>>& lit) {
+           const std::vector<std::vector<std::vector<LitPolygon>>>& lit,
+           const std::vector<std::vector<std::vector<double>>>& estimated) {
     hsr::for_each_in_parallel(scene_.faces.size(), [&](std::size_t f) {
       for (std::size_t i = 0; i < batch.size(); ++i) {
         const std::size_t l = batch[i];
         if (!place_[l]) continue;
         const std::size_t p = place_[l]->path, k = place_[l]->instant;
         PathState& state = state_[p];
-        const std::vector<LitPolygon>& polygons = lit[i][f];
         const std::size_t own = k - state.first;
+        const bool by_part = !paths_[p].part_lit_area[f].empty();
+        if (!estimated.empty()) {
+          const std::vector<double>& parts = estimated[i][f];
+          double sum = 0.0;
+          for (std::size_t part = 0; part < parts.size(); ++part) {
+            sum += parts[part];
+            if (by_part) paths_[p].part_lit_area[f].at(part)[own] = parts[part];
+          }
+          paths_[p].lit_area[f][own] = sum;
+          continue;
+        }
+        const std::vector<LitPolygon>& polygons = lit[i][f];
         paths_[p].lit_area[f][own] = lit_area(polygons);
-        if (!paths_[p].part_lit_area[f].empty()) {
+        if (by_part) {
           for (const LitPolygon& lit_polygon : polygons) {
             paths_[p].part_lit_area[f].at(lit_polygon.part)[own] += hsr::area(lit_polygon.polygon);
           }
@@ -231,19 +245,26 @@ class PathSums {
 }  // namespace
 
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options) {
+  const bool sampled = static_cast<bool>(options.estimate);
+  if (sampled && (options.method.exact() || options.shard)) {
+    throw std::invalid_argument(
+        "generate_shadows: an estimate needs a sampled method and no shard");
+  }
   GenerateResult result;
   result.shadowed.scene = scene;
   result.shadowed.shard = options.shard;
+  result.shadowed.method = options.method;
   const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
   result.stats.resize(lights);
   result.shadowed.sun_paths = sun_paths_of(scene);
-  PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons,
-                options.sun_hours_regions, options.shard);
+  PathSums sums(scene, result.shadowed.sun_paths, options.keep_instant_polygons && !sampled,
+                options.sun_hours_regions && !sampled, options.shard);
   std::vector<bool> kept(lights);
   for (std::size_t l = 0; l < lights; ++l) {
-    kept[l] = !sums.in_path(l) || options.keep_instant_polygons;
+    kept[l] = !sampled && (!sums.in_path(l) || options.keep_instant_polygons);
   }
   result.shadowed.lit = LitTable(faces, lights, std::move(kept));
+  if (sampled) result.shadowed.estimated_lit_area.resize(lights);
   // The lights this run works out: in a shard, its own instants, and the lights that are
   // no instant in shard 0 alone.
   std::vector<std::size_t> todo;
@@ -272,11 +293,16 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
       const std::vector<std::size_t> batch(
           todo.begin() + static_cast<std::ptrdiff_t>(first),
           todo.begin() + static_cast<std::ptrdiff_t>(std::min(todo.size(), first + batch_size)));
-      std::vector<std::vector<std::vector<LitPolygon>>> per_light(batch.size());
+      std::vector<std::vector<std::vector<LitPolygon>>> per_light(sampled ? 0 : batch.size());
+      std::vector<std::vector<std::vector<double>>> estimated(sampled ? batch.size() : 0);
       hsr::for_each_in_parallel(batch.size(), [&](std::size_t i) {
         const std::size_t l = batch[i];
         const auto start = std::chrono::steady_clock::now();
-        per_light[i] = light_one_named(scene, parts, l, options, result.stats[l]);
+        if (sampled) {
+          estimated[i] = options.estimate(scene.lights[l]);
+        } else {
+          per_light[i] = light_one_named(scene, parts, l, options, result.stats[l]);
+        }
         result.stats[l].seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (options.on_light_done) {
@@ -284,9 +310,18 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
           options.on_light_done(l, result.stats[l]);
         }
       });
-      sums.add(batch, per_light);
+      sums.add(batch, per_light, estimated);
       for (std::size_t i = 0; i < batch.size(); ++i) {
         const std::size_t l = batch[i];
+        if (sampled) {
+          if (sums.in_path(l)) continue;
+          std::vector<double>& column = result.shadowed.estimated_lit_area[l];
+          column.assign(faces, 0.0);
+          for (std::size_t f = 0; f < faces; ++f) {
+            for (const double a : estimated[i].at(f)) column[f] += a;
+          }
+          continue;
+        }
         if (!result.shadowed.lit.kept(l)) continue;
         for (std::size_t f = 0; f < faces; ++f)
           result.shadowed.lit[f][l] = std::move(per_light[i][f]);

@@ -73,6 +73,12 @@ struct GenerateOptions {
   std::optional<ShardPlace> shard;
   // Called after each light is done (from the worker that finished it); for progress.
   std::function<void(std::size_t light, const LightStats&)> on_light_done;
+  // A sampled method (ShadowedScene::method) in place of the exact one: where set, each
+  // light's lit areas are `estimate`'s, [face][part], called from any thread, and no
+  // lit polygon is made. Sun paths then keep lit areas alone (sun_hours_regions is not
+  // taken), and a shard is refused (std::invalid_argument).
+  Method method;
+  std::function<std::vector<std::vector<double>>(const Light&)> estimate;
 };
 
 struct GenerateResult {

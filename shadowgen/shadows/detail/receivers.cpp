@@ -1,43 +1,28 @@
 #include "receivers.h"
 
-#include <algorithm>
-#include <glm/geometric.hpp>
-
-#include "shadowgen/shadows/light_views.h"
+#include "shadowgen/shadows/light_scope.h"
 
 namespace shadowgen::detail {
 
 Receivers::Receivers(const FaceParts& parts, const Light& light, LightStats& stats)
     : parts_(parts), light_(light) {
   const std::size_t n = parts.size();
-  // A point light with a range receives on the parts that reach inside range.end. Those
-  // still take the shadows of everything between them and the light (the spec's meaning
-  // of lit), and a segment from the light to a receiver's point is no longer than the
-  // receiver's farthest vertex: a part nearer than that farthest distance over all
-  // receivers may occlude, one beyond it cannot.
-  const bool ranged = light.type == LightType::kPoint && light.range.has_value();
-  std::vector<double> distance(ranged ? n : 0);
-  double reach = 0.0;  // the farthest receiver vertex from the light
-  for (std::size_t i = 0; ranged && i < n; ++i) {
-    distance[i] = distance_to_polygon(light.position, parts.polygons[i], parts.planes[i]);
-    if (distance[i] > light.range->end) continue;
-    for (const glm::dvec3& v : parts.polygons[i].outer) {
-      reach = std::max(reach, glm::length(v - light.position));
-    }
-  }
+  // The light's scope (light_scope.h): a point light with a range receives on the parts
+  // that reach inside range.end; those still take the shadows of every part near enough to
+  // stand between them and the light, kept as occluders that receive nothing.
+  const std::vector<PartRole> roles = part_roles(parts.polygons, parts.planes, light);
   part_.reserve(n);
   lit_side_.reserve(n);
   coplanar_.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    bool receives = true;
-    if (ranged && distance[i] > light.range->end) {
+    const PartRole role = roles[i];
+    if (!receives(role)) {
       ++stats.faces_culled_range;
-      if (!(distance[i] <= reach)) continue;
-      receives = false;  // beyond the range, but between the light and some receiver
+      if (!occludes(role)) continue;
     }
-    const bool lit = receives && faces_light(parts.planes[i], light);
-    if (receives && !lit) ++stats.faces_facing_away;
-    if (receives) ++stats.faces_considered;
+    const bool lit = role == PartRole::kFacing;
+    if (role == PartRole::kTurnedAway) ++stats.faces_facing_away;
+    if (receives(role)) ++stats.faces_considered;
     part_.push_back(i);
     lit_side_.push_back(lit ? 1 : 0);
     coplanar_.push_back(parts.coplanar[i]);

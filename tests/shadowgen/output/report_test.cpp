@@ -199,6 +199,7 @@ TEST(ReportJson, LayoutToTheByte) {
   const ShadowedScene s = scene_with_ids("ground", "sun");
   EXPECT_EQ(report_json(s), R"({
   "format": "shadowgen-report/1",
+  "method": {"name":"exact"},
   "rows": [
     {"face_id":"ground","light_id":"sun","area":98.0,"lit_area":82.0,"lit_fraction":0.8367346938775511},
     {"face_id":"ground","light_id":"lamp","area":98.0,"lit_area":1.0,"lit_fraction":0.01020408163265306},

@@ -1,0 +1,21 @@
+#pragma once
+
+// Methods measured against one another on the user's own scene (`shadowgen compare`): each
+// run in turn on the same scene, its time taken, its lit fractions compared with the exact
+// method's, and the runs that no other beats on both time and error marked.
+
+#include <span>
+
+#include "shadowgen/model/method.h"
+#include "shadowgen/model/scene.h"
+#include "shadowgen/shadows/generate.h"
+
+namespace shadowgen {
+
+// Runs the exact method, then each of `methods` (an exact one among them is the first
+// trial, not run again), with `options` (sun paths summed into lit areas alone: regions
+// take no part in a lit fraction). Throws what shadows_by_method throws.
+MethodComparison compare_methods(const Scene& scene, std::span<const Method> methods,
+                                 GenerateOptions options);
+
+}  // namespace shadowgen

@@ -1,0 +1,63 @@
+#pragma once
+
+// Depth maps rendered from a light (Williams 1978), looked up with 3×3 percentage-closer
+// filtering (Reeves, Salesin and Cook 1987).
+//
+// Views: a directional light gets one orthographic map along its direction, fitted to
+// the box of the occluders in its frame; a point light a cube of six 90° perspective maps
+// around it (each storing 1/z, which is affine in the image), so that it may stand
+// anywhere, inside the scene included. The occluders' triangles (every part the light
+// takes into account, front or back, receivers included) are rasterised in software at
+// `resolution` × `resolution` texels per map, a texel covered where its centre lies in a
+// triangle's image (edges included), the nearest depth kept, in floats; triangles that a
+// point light sees edge-on (its position in their plane) cover nothing; a triangle
+// reaching behind a perspective map's eye is clipped at a near distance of 1e-9 of the
+// occluders' box.
+//
+// Lookup: the 3×3 texels around the one the sample falls in (clamped at the map's edge),
+// each a tap. A tap passes where it is empty or where the sample's part, extended in its
+// own plane to the tap's centre, is no farther from the light than the depth stored there
+// plus a constant bias of kDepthBiasTexels texel widths (at that depth). Taking the part's
+// own plane at each tap is the slope-scaled bias made exact: the part's own texels and
+// those of every part coplanar with it pass whatever the slope, so a part seen at a
+// grazing angle neither shadows itself (acne) nor needs a bias so large that shadows of
+// nearby occluders leak away; the constant covers the floats the map stores (2^-24 of a
+// depth, far below a texel up to kMaxResolution). A tap whose ray from a point light
+// misses the part's plane (beyond its horizon) passes. The sample's lit weight is the
+// fraction of its 9 taps that pass; as the resolution grows, the filter's footprint and
+// the bias shrink with the texel, and the estimate tends to the exact one.
+
+#include <glm/vec3.hpp>
+#include <memory>
+#include <span>
+
+#include "shadowgen/model/scene.h"
+#include "shadowgen/sampled/part_triangles.h"
+
+namespace shadowgen::sampled {
+
+// The constant part of the depth bias, in texel widths at the tap's depth.
+inline constexpr double kDepthBiasTexels = 0.5;
+
+class ShadowMap {
+ public:
+  // Renders the maps of `light` over `occluders`; resolution ≥ 1.
+  ShadowMap(const Light& light, std::span<const Triangle3> occluders, int resolution);
+  ~ShadowMap();
+  ShadowMap(const ShadowMap&) = delete;
+  ShadowMap& operator=(const ShadowMap&) = delete;
+
+  // The lit fraction in [0, 1] (a multiple of 1/9) of `point`, on a part whose unit front
+  // normal is `normal` and whose front side the light reaches. Safe to call from several
+  // threads at once.
+  double lit(const glm::dvec3& point, const glm::dvec3& normal) const;
+
+ private:
+  struct View;
+  std::unique_ptr<View[]> views_;
+  int view_count_ = 0;
+  bool perspective_ = false;
+  glm::dvec3 eye_{0.0};
+};
+
+}  // namespace shadowgen::sampled

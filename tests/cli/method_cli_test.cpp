@@ -1,0 +1,156 @@
+// End-to-end tests of the sampled methods (docs/scene-format.md, "Methods"): `generate` and
+// `report` take --method, the database and the JSON report name it, a sampled database
+// reads back and is refused by what draws lit polygons; `compare` measures every method
+// against the exact one on the scene, its exact row without error.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_harness.h"
+
+namespace shadowgen::test {
+namespace {
+
+// A 10 × 10 ground under a 4 × 4 roof at z = 1, the sun straight down: the ground's lit
+// fraction is 84/100, the roof's 1.
+const std::string kRoof = R"({
+  "format": "shadowgen-scene/1",
+  "polygons": [
+    {"id": "ground", "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
+    {"id": "roof", "outer": [[2,3,1],[6,3,1],[6,7,1],[2,7,1]]}
+  ],
+  "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
+})";
+
+class MethodCli : public CliFolderTest<> {
+ protected:
+  MethodCli() : CliFolderTest("shadowgen-method") {}
+};
+
+TEST_F(MethodCli, ReportEstimatesWithEachMethodAndNamesIt) {
+  const fs::path scene = write("roof.json", kRoof);
+  for (const std::vector<std::string>& method :
+       {std::vector<std::string>{"--method", "rays", "--samples", "4096"},
+        std::vector<std::string>{"--method", "shadow-map", "--samples", "4096", "--resolution",
+                                 "1024"}}) {
+    std::vector<std::string> args{"report", scene.string()};
+    args.insert(args.end(), method.begin(), method.end());
+    const Outcome csv = run(args);
+    ASSERT_EQ(csv.code, 0) << csv.err;
+    const std::vector<ReportRow> rows = parse_report(csv.out);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_NEAR(rows[0].lit_fraction, 0.84, 0.01) << method[1];
+    EXPECT_EQ(rows[1].lit_fraction, 1.0) << method[1];  // nothing over the roof: every point lit
+
+    args.insert(args.end(), {"--format", "json"});
+    const Outcome json = run(args);
+    ASSERT_EQ(json.code, 0) << json.err;
+    const nlohmann::json report = nlohmann::json::parse(json.out);
+    EXPECT_EQ(report["method"]["name"], method[1]);
+    EXPECT_EQ(report["method"]["samples"], 4096);
+    EXPECT_EQ(report["method"].contains("resolution"), method[1] == "shadow-map");
+  }
+}
+
+TEST_F(MethodCli, SampledDatabaseReadsBackAndCannotBeDrawn) {
+  const fs::path scene = write("roof.json", kRoof);
+  const fs::path db = dir_ / "roof.db.json";
+  const Outcome generated =
+      run({"generate", scene.string(), "-o", db.string(), "--method", "rays", "--samples", "64"});
+  ASSERT_EQ(generated.code, 0) << generated.err;
+  const nlohmann::json database = nlohmann::json::parse(contents(db));
+  EXPECT_EQ(database["method"], (nlohmann::json{{"name", "rays"}, {"samples", 64}}));
+  EXPECT_FALSE(database["faces"][0].contains("lit"));
+  EXPECT_EQ(database["faces"][1]["lit_area"]["sun"], 16.0);
+
+  const Outcome direct = run({"report", scene.string(), "--method", "rays", "--samples", "64"});
+  const Outcome from_db = run({"report", db.string()});
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  EXPECT_EQ(from_db.out, direct.out);  // the same points, the same estimate
+
+  const Outcome exported = run({"export", db.string(), "--obj", (dir_ / "roof.obj").string()});
+  EXPECT_EQ(exported.code, 1);
+  EXPECT_NE(exported.err.find("no lit polygons to draw: generate it with --method exact"),
+            std::string::npos)
+      << exported.err;
+  EXPECT_FALSE(fs::exists(dir_ / "roof.obj"));
+  const Outcome rendered = run({"render", db.string(), "--svg", (dir_ / "roof.svg").string(),
+                                "--eye", "5,-20,20", "--target", "5,5,0"});
+  EXPECT_EQ(rendered.code, 1) << rendered.err;
+  EXPECT_NE(rendered.err.find("no lit polygons to draw"), std::string::npos) << rendered.err;
+
+  const Outcome again = run({"report", db.string(), "--method", "rays"});
+  EXPECT_EQ(again.code, 1);
+  EXPECT_NE(again.err.find("a method applies to a scene only"), std::string::npos) << again.err;
+}
+
+TEST_F(MethodCli, OptionsThatDoNotFitAreUsageErrors) {
+  const fs::path scene = write("roof.json", kRoof);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"report", scene.string(), "--samples", "4"}, "--samples applies only to a sampled method"},
+      {{"report", scene.string(), "--method", "rays", "--resolution", "64"},
+       "--resolution applies only to --method shadow-map"},
+      {{"report", scene.string(), "--method", "rays", "--samples", "0"}, "--samples"},
+      {{"report", scene.string(), "--method", "stencil"}, "--method"},
+      {{"report", scene.string(), "--method", "rays", "--format", "sun-hours"},
+       "sun-hours regions, which a sampled method does not make"},
+      {{"generate", scene.string(), "-o", "x.json", "--method", "rays", "--keep-instants"},
+       "--keep-instants keeps lit polygons"},
+      {{"compare", scene.string(), "--methods", "rays:0"}, "expected exact, rays[:SAMPLES]"},
+      {{"compare", scene.string(), "--methods", "exact:4"}, "expected exact, rays[:SAMPLES]"},
+      {{"compare", scene.string(), "--methods", "shadow-map:4:4:4"}, "expected exact"},
+  };
+  for (const auto& [args, message] : cases) {
+    const Outcome outcome = run(args);
+    EXPECT_EQ(outcome.code, 2) << args.back() << "\n" << outcome.err;
+    EXPECT_NE(outcome.err.find(message), std::string::npos) << outcome.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"roof.json"});
+  }
+}
+
+TEST_F(MethodCli, CompareMeasuresEveryMethodAgainstExact) {
+  const fs::path scene = write("roof.json", kRoof);
+  const fs::path plot = dir_ / "plot.svg";
+  const Outcome outcome =
+      run({"compare", scene.string(), "--methods", "rays:16,rays:1024,shadow-map:64:256",
+           "--format", "csv", "--plot", plot.string(), "--threads", "1"});
+  ASSERT_EQ(outcome.code, 0) << outcome.err;
+  std::istringstream in(outcome.out);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "method,samples,resolution,seconds,mean_error,max_error,worst_face,worst_light,pareto");
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(in, line)) rows.push_back(csv_fields(line));
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0][0], "exact");
+  EXPECT_EQ(rows[0][4], "0");  // the exact row has no error
+  EXPECT_EQ(rows[0][5], "0");
+  EXPECT_EQ(rows[1][0] + ":" + rows[1][1], "rays:16");
+  EXPECT_EQ(rows[2][0] + ":" + rows[2][1], "rays:1024");
+  EXPECT_EQ(rows[3][0] + ":" + rows[3][1] + ":" + rows[3][2], "shadow-map:64:256");
+  // Only the ground is partly shadowed: the roof is lit whole by every method.
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    EXPECT_EQ(rows[r][6], "ground") << rows[r][0];
+    EXPECT_LT(std::stod(rows[r][5]), 0.1) << rows[r][0];
+    EXPECT_NEAR(std::stod(rows[r][4]), std::stod(rows[r][5]) / 2, 1e-12);  // two pairs
+  }
+  EXPECT_LT(std::stod(rows[2][5]), std::stod(rows[1][5]));  // more samples, less error
+  ExpectWellFormedXml(plot, dir_ / "xmllint.txt");
+  const std::string svg = contents(plot);
+  EXPECT_NE(svg.find(R"(data-method="exact")"), std::string::npos);
+  EXPECT_NE(svg.find(R"(data-method="rays 1024")"), std::string::npos);
+  EXPECT_NE(svg.find(R"(data-method="shadow-map 64 @ 256")"), std::string::npos);
+
+  const Outcome table = run({"compare", scene.string(), "--methods", "rays:16"});
+  ASSERT_EQ(table.code, 0) << table.err;
+  EXPECT_NE(table.out.find("over 2 (face, light) pairs"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("\nexact "), std::string::npos) << table.out;
+}
+
+}  // namespace
+}  // namespace shadowgen::test
