@@ -16,11 +16,12 @@
 // medians.
 //
 // For timing the command line on the same databases:
-//   output_bench --write-database=city:FACES:PATH   (or suns:COUNT:PATH)
+//   output_bench --write-database=city:FACES:PATH   (or suns:COUNT:PATH, cubes:COUNT:PATH)
 // writes the workload's database to PATH (shadowgen-shadowed/1) and exits.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -34,6 +35,7 @@
 #include "bench/bench_main.h"
 #include "bench/scenes/box.h"
 #include "bench/scenes/city.h"
+#include "bench/scenes/cube_grid.h"
 #include "shadowgen/output/database.h"
 #include "shadowgen/output/obj_export.h"
 #include "shadowgen/shadows/generate.h"
@@ -156,18 +158,29 @@ BENCHMARK(BM_CityRender)
 BENCHMARK(BM_SunsExport)->Arg(10)->Arg(30)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_SunsRender)->Arg(10)->Arg(30)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
 
-// --write-database=WORKLOAD:SIZE:PATH, WORKLOAD city or suns.
+// --write-database=WORKLOAD:SIZE:PATH, WORKLOAD city (SIZE faces), suns (SIZE suns) or
+// cubes (Thakur, Cheng and Miura's grid of SIZE cubes, 2n × n × n, on a ground, with its
+// sun and lamp: bench/scenes/cube_grid.h).
 int write_workload(const std::string& spec) {
   char workload[16] = {};
   std::size_t size = 0;
   int path_at = 0;
   if (std::sscanf(spec.c_str(), "%15[a-z]:%zu:%n", workload, &size, &path_at) != 2 ||
-      path_at == 0 || (std::strcmp(workload, "city") != 0 && std::strcmp(workload, "suns") != 0)) {
+      path_at == 0 ||
+      (std::strcmp(workload, "city") != 0 && std::strcmp(workload, "suns") != 0 &&
+       std::strcmp(workload, "cubes") != 0)) {
     std::fprintf(stderr, "bad --write-database=%s\n", spec.c_str());
     return 2;
   }
+  const std::string path = spec.substr(path_at);
+  if (std::strcmp(workload, "cubes") == 0) {
+    const int n =
+        std::max(1, static_cast<int>(std::lround(std::cbrt(static_cast<double>(size) / 2.0))));
+    write_database(generate_shadows(cubes_on_ground({2 * n, n, n})).shadowed, path);
+    return 0;
+  }
   const bool is_city = std::strcmp(workload, "city") == 0;
-  write_database(is_city ? city(size) : suns(static_cast<int>(size)), spec.substr(path_at));
+  write_database(is_city ? city(size) : suns(static_cast<int>(size)), path);
   return 0;
 }
 

@@ -18,7 +18,8 @@ namespace {
 
 constexpr CommandText kCompareText{
     "compare",
-    "Run the methods on a scene, one after another, and print each one's time and the error "
+    "Run the methods on a scene (or a database's scene), one after another, and print each one's "
+    "time and the error "
     "of its lit fractions against the exact method's (mean and largest over every face and "
     "light), marking those no other method beats on both time and error (Pareto-optimal). "
     "--plot draws error against time."};
@@ -103,8 +104,8 @@ void run_compare(const CompareArgs& args) {
     refuse_input_as_output("--plot", args.plot, args.input);
     outputs.push_back({"--plot", args.plot});
   }
-  const Scene scene =
-      load_scene(args.input, load_options(args.reading, Accept::kScene, std::move(outputs)));
+  const Scene scene = load_scene(
+      args.input, load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs)));
   GenerateOptions options;
   options.threads = args.reading.threads;
   MethodComparison comparison;
@@ -128,7 +129,11 @@ void run_compare(const CompareArgs& args) {
 }
 
 void add_compare_options(CLI::App& command, CompareArgs& args) {
-  command.add_option("input", args.input, "scene (shadowgen-scene/1)")->required();
+  command
+      .add_option("input", args.input,
+                  "scene (shadowgen-scene/1), or a shadowed database whose scene is taken (its "
+                  "faces and lights; its lit polygons are not used)")
+      ->required();
   command
       .add_option("--methods", args.methods,
                   "the methods to run, comma-separated: exact, rays[:SAMPLES], "

@@ -144,6 +144,17 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
 }
 
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+  if (options.accept == Accept::kSceneOrDatabase && path != "-" &&
+      file_format(path) == kShadowedFormat) {
+    std::vector<std::string> warnings;
+    ShadowedScene shadowed = read_database(path, read_options(options), warnings);
+    if (shadowed.shard) {
+      throw InputError(path.string(), "",
+                       "is a shard of a sun-path run, not a whole shadowed database: join every "
+                       "shard with shadowgen merge first");
+    }
+    return prepared({std::move(shadowed.scene), std::move(warnings)}, path, options);
+  }
   return prepared(read_scene(path, read_options(options)), path, options);
 }
 

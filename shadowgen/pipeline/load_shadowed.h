@@ -66,8 +66,9 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
 
 // A scene read as load_shadowed reads one (warnings passed on, lights kept, on_scene
 // called), without generating its shadows: for what needs the scene alone (the sun's
-// instants). `accept`, `threads` and `on_light_done` are not used; a database is an
-// error, as for Accept::kScene.
+// instants). `threads` and `on_light_done` are not used. With `accept` kSceneOrDatabase, a
+// shadowed database gives the scene it holds (its faces, lights and views, as read and
+// checked); with any other, a database is an error, as for Accept::kScene.
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 
 }  // namespace shadowgen

@@ -146,7 +146,9 @@ TEST_F(MethodCli, CompareMeasuresEveryMethodAgainstExact) {
   EXPECT_NE(svg.find(R"(data-method="rays 1024")"), std::string::npos);
   EXPECT_NE(svg.find(R"(data-method="shadow-map 64 @ 256")"), std::string::npos);
 
-  const Outcome table = run({"compare", scene.string(), "--methods", "rays:16"});
+  const fs::path db = dir_ / "roof.db.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const Outcome table = run({"compare", db.string(), "--methods", "rays:16"});  // its scene
   ASSERT_EQ(table.code, 0) << table.err;
   EXPECT_NE(table.out.find("over 2 (face, light) pairs"), std::string::npos) << table.out;
   EXPECT_NE(table.out.find("\nexact "), std::string::npos) << table.out;
