@@ -421,6 +421,31 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
   EXPECT_GE(seen.size(), 2u);  // the view shows more than one face
 }
 
+// compare finishes on every example, its exact row first and without error, every sampled
+// row with an error no larger than a lit fraction can be wrong by.
+TEST_P(ExampleCli, CompareFinishesWithAnExactRowWithoutError) {
+  const fs::path scene = kExamples / "scenes" / (GetParam() + ".json");
+  const Outcome outcome = run({"compare", scene.string(), "--methods", "rays:4,shadow-map:4:128",
+                               "--format", "csv", "--quiet"});
+  ASSERT_EQ(outcome.code, 0) << outcome.err;
+  std::istringstream in(outcome.out);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(in, line)) rows.push_back(csv_fields(line));
+  ASSERT_EQ(rows.size(), 3u) << outcome.out;
+  EXPECT_EQ(rows[0][0], "exact");
+  EXPECT_EQ(rows[0][4], "0");
+  EXPECT_EQ(rows[0][5], "0");
+  EXPECT_EQ(rows[0][8], "1");  // nothing is more accurate
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const double mean = std::stod(rows[r][4]), max = std::stod(rows[r][5]);
+    EXPECT_GE(mean, 0.0);
+    EXPECT_LE(mean, max);
+    EXPECT_LE(max, 1.0);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleCli, ::testing::ValuesIn(example_names()), test_name);
 
 }  // namespace
