@@ -1,12 +1,15 @@
-// Exact against Embree on real meshes: shadowgen's generate_shadows next to Intel Embree 3
-// casting 1024 stratified shadow rays per face, one core each, on the same scenes in the
-// same run.
+// Exact against Embree on real meshes: shadowgen's generate_shadows next to its own rays
+// estimator (shadowgen/sampled/estimate.h: Intel Embree 3 casting 1024 stratified shadow
+// rays per face), one core each, on the same scenes in the same run.
 //
 //   BM_Exact/mesh/light    generate_shadows, GenerateOptions::threads = 1, the one light;
-//   BM_Embree/mesh/light   bench/sampled/embree_rays.h, 32 × 32 strata per face, one
-//                          rtcOccluded1 per ray, the hierarchy built inside the timing;
-//   BM_Embree16/mesh/light the same rays in packets of 16 (rtcOccluded16): the same
-//                          answers, the faster way to ask.
+//   BM_Embree/mesh/light   the rays estimator (Method rays 1024: 32 rows of 32 strata per
+//                          face), one rtcOccluded1 per ray, on one thread, estimator and
+//                          hierarchy made inside the timing (bench/estimate_one_thread.h);
+//   BM_Embree16/mesh/light the same rays in packets of 16 (rtcOccluded16, the width Embree
+//                          traverses natively on an AVX-512 CPU; 8 or 4 elsewhere,
+//                          shadowgen/sampled/ray_caster.h): the same answers, the faster way
+//                          to ask, and what the product casts.
 //
 // Meshes (kMeshes below): files of Debian's assimp-testmodels and of the CGAL data shipped
 // by libcgal-demo (extracted by bench/CMakeLists.txt), each of 1k to 4k faces, standing
@@ -35,19 +38,20 @@
 #include <vector>
 
 #include "bench/bench_main.h"
+#include "bench/estimate_one_thread.h"
 #include "bench/exact_one_thread.h"
 #include "bench/guarded.h"
 #include "bench/once_per_case.h"
-#include "bench/sampled/embree_rays.h"
-#include "bench/sampled/light_scope.h"
 #include "bench/sampled/shadow_rays.h"
 #include "bench/scenes/mesh_on_ground.h"
 #include "bench/scenes/scene_lit_areas.h"
+#include "hsr/polygon3.h"
+#include "shadowgen/shadows/light_scope.h"
 
 namespace shadowgen::bench {
 namespace {
 
-constexpr int kStrata = 32;  // 32 × 32 = 1024 rays per face
+constexpr int kSamples = 1024;  // rays per face: 32 rows of 32 strata
 
 struct MeshFile {
   const char* folder;  // SHADOWGEN_ASSIMP_MODELS or SHADOWGEN_CGAL_MESHES
@@ -83,9 +87,24 @@ const Reference& reference(int mesh, int light) {
   return once_per_case(mesh, light, [&] {
     const Scene& scene = scene_with_light(mesh, light);
     Reference ref{checked_lit_areas(exact_one_thread(scene).shadowed), {}};
-    const LightScope scope = light_scope(scene, scene.lights[0]);
-    for (std::size_t f = 0; f < scope.faces.size(); ++f) {
-      ref.facing.push_back(scope.receives[f] && ref.areas.face_area[f] > 0.0);
+    // The light's roles of every part (shadowgen/shadows/light_scope.h): a face faces the
+    // light where one of its parts does.
+    std::vector<hsr::Polygon3> polygons;
+    std::vector<hsr::Plane3> planes;
+    for (const Face& face : scene.faces) {
+      for (const hsr::Polygon3& part : face.parts) {
+        polygons.push_back(part);
+        planes.push_back(hsr::plane_of(part));
+      }
+    }
+    const std::vector<PartRole> roles = part_roles(polygons, planes, scene.lights[0]);
+    std::size_t part = 0;
+    for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+      bool facing = false;
+      for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k, ++part) {
+        facing = facing || roles[part] == PartRole::kFacing;
+      }
+      ref.facing.push_back(facing && ref.areas.face_area[f] > 0.0);
     }
     return ref;
   });
@@ -142,33 +161,31 @@ void BM_Exact(benchmark::State& state) {
   });
 }
 
-void time_embree(benchmark::State& state, RayCasting casting) {
+void time_embree(benchmark::State& state, sampled::Casting casting) {
   guarded(state, [&] {
-    static const EmbreeShadowRays embree;
     const Scene& scene = scene_with_light(arg(state, 0), arg(state, 1));
     const Reference& ref = reference(arg(state, 0), arg(state, 1));
     std::vector<double> lit;
     for (auto _ : state) {
-      lit = embree.lit_areas(scene, scene.lights[0], kStrata, casting);
+      lit = estimate_one_thread(scene, {MethodKind::kRays, kSamples, 0}, casting);
       benchmark::DoNotOptimize(lit.data());
     }
     report_error(state, ref, lit);
   });
 }
 
-void BM_Embree(benchmark::State& state) { time_embree(state, RayCasting::kOneByOne); }
-void BM_Embree16(benchmark::State& state) { time_embree(state, RayCasting::kPackets16); }
+void BM_Embree(benchmark::State& state) { time_embree(state, sampled::Casting::kOneByOne); }
+void BM_Embree16(benchmark::State& state) { time_embree(state, sampled::Casting::kPackets); }
 
 // --worst=MESH:LIGHT prints the ten faces facing the light whose lit fraction Embree
-// gets furthest from the exact one, with a third opinion: the double-precision shadow
-// rays of bench/sampled/shadow_rays.h (64 × 64 grid), which share neither Embree's
+// gets furthest from the exact one, with a third opinion: double-precision shadow rays from
+// the same sample points (bench/sampled/shadow_rays.h), which share neither Embree's
 // single precision and origin offset nor the exact generator's clipping.
 int print_worst(const std::string& spec) {
   const int mesh = std::stoi(spec), light = std::stoi(spec.substr(spec.find(':') + 1));
   const Scene& scene = scene_with_light(mesh, light);
   const Reference& ref = reference(mesh, light);
-  const std::vector<double> embree = EmbreeShadowRays().lit_areas(scene, scene.lights[0], kStrata);
-  const std::vector<double> rays = shadow_ray_lit_areas(scene, scene.lights[0], 64);
+  const std::vector<double> embree = estimate_one_thread(scene, {MethodKind::kRays, kSamples, 0});
   auto fraction = [&](const std::vector<double>& lit, std::size_t f) {
     return lit_fraction(ref, f, lit[f]);
   };
@@ -182,10 +199,12 @@ int print_worst(const std::string& spec) {
   std::sort(faces.begin(), faces.end(),
             [&](std::size_t a, std::size_t b) { return error(a) > error(b); });
   faces.resize(std::min<std::size_t>(faces.size(), 10));
+  const std::vector<double> rays = double_ray_lit_areas(scene, scene.lights[0], faces, kSamples);
   std::printf("face, area, lit fraction: exact, Embree, double-precision rays\n");
-  for (std::size_t f : faces) {
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const std::size_t f = faces[i];
     std::printf("%s %.3e %.4f %.4f %.4f\n", scene.faces[f].id.c_str(), ref.areas.face_area[f],
-                fraction(ref.areas.lit[0], f), fraction(embree, f), fraction(rays, f));
+                fraction(ref.areas.lit[0], f), fraction(embree, f), lit_fraction(ref, f, rays[i]));
   }
   return 0;
 }

@@ -11,7 +11,8 @@
 # build/release) must hold cli/shadowgen and bench/output_bench (SHADOWGEN_BENCH=ON).
 # Environment: THREADS (default "1 2"), the thread counts to run in turn; SUMS=areas runs
 # generate --areas-only (lit areas alone, no sun-hours regions) and sums the EnergyPlus
-# schedule instead of the sun-hours report.
+# schedule instead of the sun-hours report; GENERATE_ARGS adds arguments to generate (e.g.
+# "--method rays --samples 64", whose lit areas alone go with SUMS=areas).
 set -euo pipefail
 
 faces=${1:-10000}
@@ -44,9 +45,10 @@ echo "| threads | wall s | peak MB | database MB |"
 echo "|---:|---:|---:|---:|"
 sums=()
 [ "${SUMS:-regions}" = areas ] && sums=(--areas-only)
+read -r -a extra <<<"${GENERATE_ARGS:-}"
 for threads in ${THREADS:-1 2}; do
   /usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" generate "$work/scene.json" \
-    -o "$work/db.json" --threads "$threads" --quiet "${sums[@]}"
+    -o "$work/db.json" --threads "$threads" --quiet "${sums[@]}" "${extra[@]}"
   read -r wall kb <"$work/time"
   mb=$(du -m --apparent-size "$work/db.json" | cut -f1)
   echo "| $threads | $wall | $((kb / 1024)) | $mb |"

@@ -1,21 +1,23 @@
 // The accuracy ladder (docs/architecture.md): time against lit-area error,
-// shadowgen's exact result next to two sampled estimators with a resolution knob, on the
-// same scenes and lights, in one run.
+// shadowgen's exact result next to its two sampled estimators (shadowgen/sampled/estimate.h)
+// with a resolution knob, on the same scenes and lights, in one run.
 //
 //   BM_Exact/scene/light            generate_shadows, one thread, the one light;
-//   BM_ShadowMap/scene/light/N/k    shadow map of N × N texels (a cube map of six for the
-//                                   lamp), k × k samples per face (bench/sampled/shadow_map.h);
-//   BM_ShadowRays/scene/light/k     a shadow ray per sample, k × k samples per face
-//                                   (bench/sampled/shadow_rays.h).
+//   BM_ShadowMap/scene/light/N/k    the shadow-map estimator (Method shadow-map k² @ N): maps
+//                                   of N × N texels (a cube of six for the lamp), k × k
+//                                   = k² stratified samples per face;
+//   BM_ShadowRays/scene/light/k     the rays estimator (Method rays k²): an Embree shadow ray
+//                                   per sample, k² samples per face, in packets.
 //
 // scene 0: the procedural city of about 1e3 faces (bench/scenes/city.h, 1014 faces);
 // scene 1: Thakur, Cheng and Miura's 2000 cubes on a tiled ground (bench/scenes/cube_grid.h,
 // 13271 faces). light 0: the scene's sun; light 1: its point light with a range.
 //
-// Timed: the whole estimate from the scene (maps or hierarchy built, samples placed and
-// tested). Counter lit_area_err = Σ_faces |estimated lit area − exact lit area| / Σ face
-// areas, the exact lit areas from generate_shadows (checked to lie in [0, face area]),
-// computed once per scene and light outside the timing; samples = sample points tested.
+// Timed: the whole estimate from the scene on one thread (bench/estimate_one_thread.h:
+// estimator made, parts triangulated, maps or hierarchy built, samples placed and tested). Counter
+// lit_area_err = Σ_faces |estimated lit area − exact lit area| / Σ face areas, the exact lit areas
+// from generate_shadows (checked to lie in [0, face area]), computed once per scene and light
+// outside the timing; samples = sample points tested.
 //
 // Run with --benchmark_repetitions=3 --benchmark_report_aggregates_only=true and read
 // the medians (bench/run_sampled_bench.sh does).
@@ -25,11 +27,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bench/estimate_one_thread.h"
 #include "bench/exact_one_thread.h"
 #include "bench/guarded.h"
 #include "bench/once_per_case.h"
-#include "bench/sampled/shadow_map.h"
-#include "bench/sampled/shadow_rays.h"
 #include "bench/scenes/city.h"
 #include "bench/scenes/cube_grid.h"
 #include "bench/scenes/scene_lit_areas.h"
@@ -87,7 +88,8 @@ void BM_ShadowMap(benchmark::State& state) {
     const LitAreas& ref = reference(arg(state, 0), arg(state, 1));
     std::vector<double> lit;
     for (auto _ : state) {
-      lit = shadow_map_lit_areas(scene, scene.lights[0], arg(state, 2), arg(state, 3));
+      const int k = arg(state, 3);
+      lit = estimate_one_thread(scene, {MethodKind::kShadowMap, k * k, arg(state, 2)});
       benchmark::DoNotOptimize(lit.data());
     }
     report_error(state, ref, lit);
@@ -100,7 +102,8 @@ void BM_ShadowRays(benchmark::State& state) {
     const LitAreas& ref = reference(arg(state, 0), arg(state, 1));
     std::vector<double> lit;
     for (auto _ : state) {
-      lit = shadow_ray_lit_areas(scene, scene.lights[0], arg(state, 2));
+      const int k = arg(state, 2);
+      lit = estimate_one_thread(scene, {MethodKind::kRays, k * k, 0});
       benchmark::DoNotOptimize(lit.data());
     }
     report_error(state, ref, lit);

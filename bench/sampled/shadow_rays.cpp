@@ -6,8 +6,10 @@
 #include <limits>
 #include <numeric>
 
-#include "bench/sampled/face_samples.h"
-#include "bench/sampled/light_scope.h"
+#include "hsr/polygon3.h"
+#include "shadowgen/sampled/face_samples.h"
+#include "shadowgen/sampled/part_triangles.h"
+#include "shadowgen/shadows/light_scope.h"
 
 namespace shadowgen::bench {
 namespace {
@@ -33,6 +35,8 @@ class Bvh {
     for (int i : order_) sorted.push_back(triangles_[static_cast<std::size_t>(i)]);
     triangles_ = std::move(sorted);
   }
+
+  bool empty() const { return nodes_.empty(); }
 
   // Does the segment o + t·d, t in (tmin, tmax), cross a triangle?
   bool any_hit(const glm::dvec3& o, const glm::dvec3& d, double tmin, double tmax) const {
@@ -130,25 +134,58 @@ class Bvh {
 
 }  // namespace
 
-std::vector<double> shadow_ray_lit_areas(const Scene& scene, const Light& light, int k) {
-  const LightScope scope = light_scope(scene, light);
+std::vector<double> double_ray_lit_areas(const Scene& scene, const Light& light,
+                                         std::span<const std::size_t> faces, int samples) {
+  std::vector<hsr::Polygon3> polygons;
+  std::vector<hsr::Plane3> planes;
+  std::vector<sampled::PartTriangles> parts;
+  std::vector<std::size_t> first{0};  // face f's parts: [first[f], first[f + 1])
+  for (const Face& face : scene.faces) {
+    for (const hsr::Polygon3& part : face.parts) {
+      polygons.push_back(part);
+      planes.push_back(hsr::plane_of(part));
+      parts.push_back(sampled::part_triangles(part));
+    }
+    first.push_back(parts.size());
+  }
+  const std::vector<PartRole> roles = part_roles(polygons, planes, light);
   std::vector<Triangle> triangles;
-  for (std::size_t f = 0; f < scope.faces.size(); ++f) {
-    if (!scope.present[f]) continue;
-    const std::vector<glm::dvec3>& loop = scope.faces[f].loop;
-    for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-      triangles.push_back({loop[0], loop[i] - loop[0], loop[i + 1] - loop[0]});
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (!occludes(roles[i])) continue;
+    for (const sampled::Triangle3& t : parts[i].triangles) {
+      triangles.push_back({t.a, t.b - t.a, t.c - t.a});
+      for (const glm::dvec3& v : {t.a, t.b, t.c}) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+      }
     }
   }
   const Bvh bvh(std::move(triangles));
-  // A directional light's ray runs twice the scope's diagonal: past every occluder.
-  const double reach = 2.0 * glm::length(scope.hi - scope.lo) + 1.0;
+  // A directional light's ray runs twice the occluders' diagonal: past every one of them.
+  const double reach = bvh.empty() ? 1.0 : 2.0 * glm::length(hi - lo) + 1.0;
 
-  return sampled_lit_areas(scope, k, [&](const glm::dvec3& p, const ConvexFace&) {
-    glm::dvec3 d = towards_light(light, p);
-    if (light.type == LightType::kDirectional) d = glm::normalize(d) * reach;
-    return !bvh.any_hit(p, d, 1e-9, 1.0);
-  });
+  std::vector<double> areas;
+  std::vector<sampled::FaceSample> points;
+  std::vector<double> lit;
+  for (std::size_t f : faces) {
+    const std::span<const sampled::PartTriangles> face(parts.data() + first[f],
+                                                       first[f + 1] - first[f]);
+    sampled::face_samples(face, samples, f, points);
+    lit.assign(points.size(), 0.0);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (roles[first[f] + points[i].part] != PartRole::kFacing) continue;
+      const glm::dvec3& p = points[i].point;
+      const glm::dvec3 d = light.type == LightType::kDirectional
+                               ? glm::normalize(-light.direction) * reach
+                               : light.position - p;
+      lit[i] = bvh.any_hit(p, d, 1e-9, 1.0) ? 0.0 : 1.0;
+    }
+    double area = 0.0;
+    for (double a : sampled::part_lit_areas(face, points, lit)) area += a;
+    areas.push_back(area);
+  }
+  return areas;
 }
 
 }  // namespace shadowgen::bench

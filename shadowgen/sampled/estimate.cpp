@@ -55,6 +55,9 @@ struct Estimator::Impl {
   // a point light without range, or one whose range takes in the whole scene) and shared
   // by all such lights.
   RTCDevice device = nullptr;
+  // A face's rays go to Embree in packets: the same answers as one by one, faster
+  // (ray_caster.h); set_casting changes it.
+  Casting casting = Casting::kPackets;
   std::once_flag whole_once;
   std::unique_ptr<RayCaster> whole;
 
@@ -91,9 +94,9 @@ struct Estimator::Impl {
     return triangles;
   }
 
-  // Every face's part estimates, `lit(point, normal)` the lit fraction of a sample (called
-  // from several threads at once). Faces are independent: in parallel, the same numbers
-  // on any number of threads.
+  // Every face's part estimates, `lit(points, normals, out)` the lit fractions of a face's
+  // sample points on parts facing the light (called from several threads at once). Faces
+  // are independent: in parallel, the same numbers on any number of threads.
   template <typename Lit>
   PartLitAreas estimate(const std::vector<PartRole>& roles, Lit lit) const {
     PartLitAreas areas(scene.faces.size());
@@ -107,13 +110,25 @@ struct Estimator::Impl {
         return;
       }
       thread_local std::vector<FaceSample> samples;
-      thread_local std::vector<double> fraction;
+      thread_local std::vector<glm::dvec3> points, normals;
+      thread_local std::vector<std::size_t> which;
+      thread_local std::vector<double> decided, fraction;
       face_samples(face, method.samples, f, samples);
-      fraction.assign(samples.size(), 0.0);
+      points.clear();
+      normals.clear();
+      which.clear();
       for (std::size_t i = 0; i < samples.size(); ++i) {
         const std::size_t k = samples[i].part;
-        if (role(k) == PartRole::kFacing) fraction[i] = lit(samples[i].point, face[k].normal);
+        if (role(k) != PartRole::kFacing) continue;
+        points.push_back(samples[i].point);
+        normals.push_back(face[k].normal);
+        which.push_back(i);
       }
+      decided.resize(points.size());
+      lit(std::span<const glm::dvec3>(points), std::span<const glm::dvec3>(normals),
+          std::span<double>(decided));
+      fraction.assign(samples.size(), 0.0);
+      for (std::size_t j = 0; j < which.size(); ++j) fraction[which[j]] = decided[j];
       areas[f] = part_lit_areas(face, samples, fraction);
     });
     return areas;
@@ -132,8 +147,10 @@ PartLitAreas Estimator::lit_areas(const Light& light) const {
   const std::vector<PartRole> roles = part_roles(impl.polygons, impl.planes, light);
   if (impl.method.kind == MethodKind::kShadowMap) {
     const ShadowMap map(light, impl.occluders(roles), impl.method.resolution);
-    return impl.estimate(roles,
-                         [&](const glm::dvec3& p, const glm::dvec3& n) { return map.lit(p, n); });
+    return impl.estimate(roles, [&](std::span<const glm::dvec3> points,
+                                    std::span<const glm::dvec3> normals, std::span<double> out) {
+      for (std::size_t i = 0; i < points.size(); ++i) out[i] = map.lit(points[i], normals[i]);
+    });
   }
   const bool everything = std::all_of(roles.begin(), roles.end(), occludes);
   std::optional<RayCaster> own;
@@ -146,8 +163,12 @@ PartLitAreas Estimator::lit_areas(const Light& light) const {
   } else {
     caster = &own.emplace(impl.device, impl.occluders(roles));
   }
-  return impl.estimate(
-      roles, [&](const glm::dvec3& p, const glm::dvec3& n) { return caster->lit(light, p, n); });
+  return impl.estimate(roles, [&](std::span<const glm::dvec3> points,
+                                  std::span<const glm::dvec3> normals, std::span<double> out) {
+    caster->lit(light, points, normals, out, impl.casting);
+  });
 }
+
+void set_casting(Estimator& estimator, Casting casting) { estimator.impl_->casting = casting; }
 
 }  // namespace shadowgen::sampled

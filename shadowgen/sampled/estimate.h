@@ -24,6 +24,9 @@
 
 namespace shadowgen::sampled {
 
+// How shadow rays are handed to Embree (ray_caster.h).
+enum class Casting : unsigned char;
+
 // The estimated lit area of every part of every face, [face][part], in Scene::faces order.
 using PartLitAreas = std::vector<std::vector<double>>;
 
@@ -42,6 +45,11 @@ class Estimator {
   PartLitAreas lit_areas(const Light& light) const;
 
  private:
+  // Internal, for the benchmarks (ray_caster.h): whether a rays estimator casts a face's
+  // rays in packets (the default) or one by one, the same numbers either way. Call it before
+  // any lit_areas; found by argument-dependent lookup.
+  friend void set_casting(Estimator& estimator, Casting casting);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
