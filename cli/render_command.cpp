@@ -1,4 +1,4 @@
-// `shadowgen render`: a picture of a shadowed database, as SVG.
+// `shadowgen render`: a picture of a shadowed database, as SVG and/or PNG.
 
 #include <array>
 #include <charconv>
@@ -19,7 +19,11 @@
 #include "shadowgen/model/coordinate_range.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
+#include "shadowgen/output/atomic_file.h"
 #include "shadowgen/view/camera.h"
+#include "shadowgen/view/pixel_shadows.h"
+#include "shadowgen/view/png_writer.h"
+#include "shadowgen/view/raster_render.h"
 #include "shadowgen/view/render.h"
 #include "shadowgen/view/sun_hours_map.h"
 #include "shadowgen/view/svg_writer.h"
@@ -32,7 +36,9 @@ constexpr CommandText kRenderText{
     "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
     "eye, each visible face split by the lights reaching it, flat shaded; or, with "
     "--sun-hours, split by a sun path's sun hours, coloured by band, with a legend. Reads "
-    "only the database; no shadows are recomputed."};
+    "only the database; no shadows are recomputed. --png draws the lit picture pixel by pixel "
+    "instead or as well, its shadows found by --shadows: the database's (exact), shadow maps "
+    "or shadow volumes."};
 
 // A picture of a shadowed database (never a scene: no shadow pass runs) from the
 // database's view `view` or from eye/target/up/fov.
@@ -44,6 +50,10 @@ struct RenderArgs {
   bool ortho = false;
   double scale = 0.0;  // orthographic pixels per scene unit; 0 fits the scene
   std::string svg;
+  std::string png;
+  std::string shadows = "exact";  // --png: how the pixels' shadows are found
+  int resolution = kDefaultResolution;
+  const CLI::Option* resolution_option = nullptr;
   int width = 800;
   int height = 600;
   std::vector<std::string> lights;  // --lights: only these are drawn
@@ -114,7 +124,33 @@ Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
   return camera;
 }
 
+// The --png picture's view method (shadowgen/view/pixel_shadows.h). The names --shadows
+// accepts are checked by the parser.
+PixelShadowOptions pixel_shadows_of(const RenderArgs& args) {
+  PixelShadowOptions options;
+  options.method = pixel_shadows_named(args.shadows).value_or(PixelShadows::kExact);
+  if (options.method != PixelShadows::kShadowMap && args.resolution_option != nullptr &&
+      args.resolution_option->count() > 0) {
+    throw UsageError("--resolution applies only to --shadows shadow-map");
+  }
+  options.resolution = args.resolution;
+  return options;
+}
+
+// The --png picture, its shadows found by the method --shadows names.
+RgbImage raster_picture(const RenderArgs& args, const ShadowedScene& shadowed, const Camera& camera,
+                        const RenderOptions& options) {
+  RasterOptions raster;
+  raster.picture = options;
+  raster.shadows = pixel_shadows_of(args);
+  return render_raster(shadowed, camera, raster);
+}
+
 void run_render(const RenderArgs& args) {
+  if (args.svg.empty() && args.png.empty()) {
+    throw UsageError("--svg or --png is required (or both)");
+  }
+  if (!args.png.empty()) pixel_shadows_of(args);  // its usage errors before any work
   LoadOptions load;
   load.accept = Accept::kDatabase;
   load.lights = args.lights;
@@ -124,7 +160,11 @@ void run_render(const RenderArgs& args) {
   load.on_warning = [](const std::string& warning) {
     std::cerr << "shadowgen: warning: " << warning << '\n';
   };
-  refuse_input_as_output("--svg", args.svg, args.database);
+  if (!args.svg.empty()) refuse_input_as_output("--svg", args.svg, args.database);
+  if (!args.png.empty()) refuse_input_as_output("--png", args.png, args.database);
+  if (!args.svg.empty() && !args.png.empty() && same_file(args.svg, args.png)) {
+    throw UsageError("--svg " + args.svg + " and --png " + args.png + " name the same file");
+  }
   const ShadowedScene shadowed = load_shadowed(args.database, load);
   std::optional<SunHoursMap> map;
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.database);
@@ -132,17 +172,26 @@ void run_render(const RenderArgs& args) {
   RenderOptions options;
   options.width = args.width;
   options.height = args.height;
-  Picture picture;
+  std::string svg, png;
   try {
-    picture = map ? render_sun_hours(shadowed, *map->path, map->bands, camera, options)
-                  : render(shadowed, camera, options);
+    if (!args.svg.empty()) {
+      const Picture picture =
+          map ? render_sun_hours(shadowed, *map->path, map->bands, camera, options)
+              : render(shadowed, camera, options);
+      svg = svg_document(picture);
+    }
+    if (!args.png.empty()) png = png_bytes(raster_picture(args, shadowed, camera, options));
   } catch (const std::invalid_argument& e) {
     // A camera the database's view or the arguments describe badly (eye == target): the
     // camera does not know which of them it came from.
     throw InputError(args.view.empty() ? std::string("--eye/--target") : args.database, "",
                      e.what());
   }
-  write_svg(picture, args.svg);
+  // Both pictures are made before either is written, and then written as one.
+  std::vector<OutputText> files;
+  if (!args.svg.empty()) files.push_back({args.svg, svg});
+  if (!args.png.empty()) files.push_back({args.png, png});
+  write_files_atomically(files);
 }
 
 void add_camera_options(CLI::App& command, RenderArgs& args) {
@@ -177,14 +226,39 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
   command.add_option("database", args.database, "shadowed database (shadowgen-shadowed/1)")
       ->required();
   add_camera_options(command, args);
-  command.add_option("--svg", args.svg, "SVG file to write")->required();
+  CLI::Option* png = command.add_option(
+      "--png", args.png,
+      "PNG file to write: the lit picture pixel by pixel, each pixel sampled at its centre "
+      "(--svg, --png or both)");
+  command.add_option("--svg", args.svg, "SVG file to write (--svg, --png or both)");
+  // The view methods --png takes (shadowgen/view/pixel_shadows.h).
+  command
+      .add_option("--shadows", args.shadows,
+                  "with --png: how each pixel's shadows are found: exact (default; the "
+                  "database's lit polygons), shadow-map (depth maps from each light), volumes "
+                  "(Bergeron's shadow volumes counted along each eye ray) or stencil "
+                  "(Heidmann's shadow volumes in the stencil buffer of OpenGL, run on the CPU "
+                  "by Mesa)")
+      ->check(CLI::IsMember({"exact", "shadow-map", "volumes", "stencil"}))
+      ->needs(png);
+  args.resolution_option =
+      command
+          .add_option("--resolution", args.resolution,
+                      "with --png --shadows shadow-map: texels along each side of a depth map "
+                      "(default " +
+                          std::to_string(kDefaultResolution) + ")")
+          ->check(CLI::Range(1, kMaxResolution))
+          ->needs(png);
   command.add_option("--width", args.width, "picture width in pixels (default 800)")
       ->check(CLI::Range(1, 1 << 20));
   command.add_option("--height", args.height, "picture height in pixels (default 600)")
       ->check(CLI::Range(1, 1 << 20));
   add_lights_option(command, args.lights);
   // A sun-hours map draws one path whole: there is nothing for --lights to choose.
-  add_sun_hours_options(command, args.sun_hours, "draw")->excludes(command.get_option("--lights"));
+  CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "draw");
+  sun_hours->excludes(command.get_option("--lights"));
+  // A sun-hours map is drawn as SVG only.
+  sun_hours->excludes(png);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <span>
 #include <stdexcept>
+#include <utility>
 
 #include "detail/painter.h"
 #include "shadowgen/shadows/light_regions.h"
@@ -52,11 +53,17 @@ class LightSetTiling : public detail::FaceTiling {
 
 }  // namespace
 
-Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm::dvec3& point,
-          const glm::dvec3& normal, const RenderOptions& options) {
+namespace {
+
+// Σ weight_L · intensity_L · max(0, n·l_L) · f_L over the lights `weight` gives a weight.
+template <typename Weight>
+Rgb shade_sum(const Scene& scene, std::size_t count, Weight weight, const glm::dvec3& point,
+              const glm::dvec3& normal, const RenderOptions& options) {
   Rgb sum;
-  for (const std::size_t index : lights) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [index, w] = weight(i);
     const Light& light = scene.lights.at(index);
+    if (w == 0.0) continue;
     glm::dvec3 toward;
     double falloff = 1.0;
     if (light.type == LightType::kDirectional) {
@@ -76,16 +83,35 @@ Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm:
     const double length = glm::length(toward);
     if (!(length > 0.0)) continue;
     const double cosine = std::max(0.0, glm::dot(normal, toward) / length);
-    const double k = cosine * falloff;
+    const double k = w * cosine * falloff;
     sum.r += light.intensity.x * k;
     sum.g += light.intensity.y * k;
     sum.b += light.intensity.z * k;
   }
-  const double weight =
+  const double weight_all =
       (1.0 - options.ambient) / static_cast<double>(std::max<std::size_t>(1, scene.lights.size()));
-  return {clamp01(options.albedo.r * (options.ambient + weight * sum.r)),
-          clamp01(options.albedo.g * (options.ambient + weight * sum.g)),
-          clamp01(options.albedo.b * (options.ambient + weight * sum.b))};
+  return {clamp01(options.albedo.r * (options.ambient + weight_all * sum.r)),
+          clamp01(options.albedo.g * (options.ambient + weight_all * sum.g)),
+          clamp01(options.albedo.b * (options.ambient + weight_all * sum.b))};
+}
+
+}  // namespace
+
+Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm::dvec3& point,
+          const glm::dvec3& normal, const RenderOptions& options) {
+  return shade_sum(
+      scene, lights.size(), [&](std::size_t i) { return std::pair(lights[i], 1.0); }, point, normal,
+      options);
+}
+
+Rgb shade_weighted(const Scene& scene, std::span<const double> weights, const glm::dvec3& point,
+                   const glm::dvec3& normal, const RenderOptions& options) {
+  if (weights.size() != scene.lights.size()) {
+    throw std::invalid_argument("shade_weighted: one weight per light of the scene is needed");
+  }
+  return shade_sum(
+      scene, weights.size(), [&](std::size_t i) { return std::pair(i, weights[i]); }, point, normal,
+      options);
 }
 
 Picture render(const ShadowedScene& shadowed, const Camera& camera, const RenderOptions& options) {

@@ -50,6 +50,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -126,5 +127,12 @@ Picture render(const ShadowedScene& shadowed, const Camera& camera,
 // The shading formula above for one point of a face's front side lit by `lights`.
 Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm::dvec3& point,
           const glm::dvec3& normal, const RenderOptions& options);
+
+// The same formula with each light's term weighted: weights[L] in [0, 1] for every light
+// of the scene (a pixel's share of it that is lit, raster_render.h); weights of 0 and 1
+// give shade() of the lights weighted 1. Throws std::invalid_argument where there is not
+// one weight per light.
+Rgb shade_weighted(const Scene& scene, std::span<const double> weights, const glm::dvec3& point,
+                   const glm::dvec3& normal, const RenderOptions& options);
 
 }  // namespace shadowgen

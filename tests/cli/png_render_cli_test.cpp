@@ -1,0 +1,139 @@
+// End-to-end tests of `shadowgen render --png`: the courtyard example's database drawn
+// pixel by pixel by each view method, read back with libpng; the PNG written atomically
+// (a failed run leaves the old file and no temporary file); usage errors.
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_harness.h"
+
+namespace shadowgen::test {
+namespace {
+
+struct Png {
+  bool ok = false;
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+
+Png read_png(const fs::path& path) {
+  Png result;
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) return result;
+  png.format = PNG_FORMAT_RGB;
+  result.rgb.resize(PNG_IMAGE_SIZE(png));
+  result.width = static_cast<int>(png.width);
+  result.height = static_cast<int>(png.height);
+  result.ok = png_image_finish_read(&png, nullptr, result.rgb.data(), 0, nullptr) != 0;
+  return result;
+}
+
+class PngRenderCli : public CliFolderTest<> {
+ protected:
+  PngRenderCli() : CliFolderTest("shadowgen-png") {}
+
+  void SetUp() override {
+    CliFolderTest::SetUp();
+    const fs::path scene = dir_ / "courtyard.json";
+    fs::copy_file(fs::path(SHADOWGEN_EXAMPLES_DIR) / "scenes" / "courtyard.json", scene);
+    db_ = dir_ / "courtyard.shadowed.json";
+    const Outcome generated = run({"generate", scene.string(), "-o", db_.string(), "--quiet"});
+    ASSERT_EQ(generated.code, 0) << generated.err;
+    fs::remove(scene);
+  }
+
+  Outcome render(const std::vector<std::string>& more) {
+    std::vector<std::string> args{"render",  db_.string(), "--view",   "main",
+                                  "--width", "96",         "--height", "72"};
+    args.insert(args.end(), more.begin(), more.end());
+    return run(args);
+  }
+
+  fs::path db_;
+};
+
+TEST_F(PngRenderCli, EachMethodWritesAValidPng) {
+  std::vector<Png> pictures;
+  for (const std::string method : {"exact", "shadow-map", "volumes", "stencil"}) {
+    const fs::path png = dir_ / (method + ".png");
+    const Outcome out = render({"--png", png.string(), "--shadows", method});
+    ASSERT_EQ(out.code, 0) << method << ": " << out.err;
+    EXPECT_EQ(out.out, "");
+    const Png read = read_png(png);
+    ASSERT_TRUE(read.ok) << method;
+    EXPECT_EQ(read.width, 96);
+    EXPECT_EQ(read.height, 72);
+    pictures.push_back(read);
+  }
+  // Exact is the default; volumes and stencil agree with it on most pixels.
+  const fs::path plain = dir_ / "plain.png";
+  ASSERT_EQ(render({"--png", plain.string()}).code, 0);
+  EXPECT_EQ(contents(plain), contents(dir_ / "exact.png"));
+  for (const std::size_t other : {std::size_t{2}, std::size_t{3}}) {
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < pictures[0].rgb.size(); ++i) {
+      differ += pictures[0].rgb[i] != pictures[other].rgb[i];
+    }
+    EXPECT_LE(differ, pictures[0].rgb.size() / 50) << other;
+  }
+
+  // --svg and --png together: both written.
+  const Outcome both =
+      render({"--svg", (dir_ / "both.svg").string(), "--png", (dir_ / "both.png").string(),
+              "--shadows", "shadow-map", "--resolution", "256"});
+  ASSERT_EQ(both.code, 0) << both.err;
+  EXPECT_TRUE(fs::exists(dir_ / "both.svg"));
+  EXPECT_TRUE(read_png(dir_ / "both.png").ok);
+  EXPECT_EQ(sorted_names(dir_, dir_ / "run"),
+            (std::vector<std::string>{"both.png", "both.svg", "courtyard.shadowed.json",
+                                      "exact.png", "plain.png", "shadow-map.png", "stencil.png",
+                                      "volumes.png"}));
+}
+
+TEST_F(PngRenderCli, AFailedRunLeavesTheOldFile) {
+  const fs::path png = dir_ / "out.png";
+  write_file(png, "old");
+  // eye == target: bad input, exit 1, nothing written.
+  const Outcome bad = run({"render", db_.string(), "--eye", "1,1,1", "--target", "1,1,1", "--png",
+                           png.string(), "--shadows", "volumes"});
+  EXPECT_EQ(bad.code, 1) << bad.err;
+  EXPECT_EQ(contents(png), "old");
+  EXPECT_EQ(sorted_names(dir_, dir_ / "run"),
+            (std::vector<std::string>{"courtyard.shadowed.json", "out.png"}));
+  // A good run replaces it whole.
+  ASSERT_EQ(render({"--png", png.string()}).code, 0);
+  EXPECT_TRUE(read_png(png).ok);
+  EXPECT_EQ(sorted_names(dir_, dir_ / "run"),
+            (std::vector<std::string>{"courtyard.shadowed.json", "out.png"}));
+}
+
+TEST_F(PngRenderCli, UsageErrors) {
+  const std::string png = (dir_ / "u.png").string();
+  const std::string svg = (dir_ / "u.svg").string();
+  auto expect_usage = [&](const std::vector<std::string>& more, const std::string& says) {
+    const Outcome out = render(more);
+    EXPECT_EQ(out.code, 2) << out.err;
+    EXPECT_NE(out.err.find(says), std::string::npos) << out.err;
+  };
+  expect_usage({"--svg", svg, "--shadows", "volumes"}, "--png");
+  expect_usage({"--png", png, "--shadows", "stencils"}, "stencils");
+  expect_usage({"--png", png, "--shadows", "rays"}, "rays");
+  expect_usage({"--png", png, "--resolution", "64"}, "--resolution applies only");
+  expect_usage({"--png", png, "--shadows", "volumes", "--resolution", "64"},
+               "--resolution applies only");
+  expect_usage({}, "--svg or --png is required");
+  expect_usage({"--png", db_.string()}, "is the input");
+  expect_usage({"--png", png, "--svg", png}, "name the same file");
+  EXPECT_FALSE(fs::exists(png));
+  EXPECT_FALSE(fs::exists(svg));
+}
+
+}  // namespace
+}  // namespace shadowgen::test
