@@ -89,15 +89,8 @@ const Reference& reference(int mesh, int light) {
     Reference ref{checked_lit_areas(exact_one_thread(scene).shadowed), {}};
     // The light's roles of every part (shadowgen/shadows/light_scope.h): a face faces the
     // light where one of its parts does.
-    std::vector<hsr::Polygon3> polygons;
-    std::vector<hsr::Plane3> planes;
-    for (const Face& face : scene.faces) {
-      for (const hsr::Polygon3& part : face.parts) {
-        polygons.push_back(part);
-        planes.push_back(hsr::plane_of(part));
-      }
-    }
-    const std::vector<PartRole> roles = part_roles(polygons, planes, scene.lights[0]);
+    const ScenePartPlanes all(scene);
+    const std::vector<PartRole> roles = part_roles(all.polygons, all.planes, scene.lights[0]);
     std::size_t part = 0;
     for (std::size_t f = 0; f < scene.faces.size(); ++f) {
       bool facing = false;

@@ -136,19 +136,11 @@ class Bvh {
 
 std::vector<double> double_ray_lit_areas(const Scene& scene, const Light& light,
                                          std::span<const std::size_t> faces, int samples) {
-  std::vector<hsr::Polygon3> polygons;
-  std::vector<hsr::Plane3> planes;
+  const ScenePartPlanes all(scene);
+  const std::vector<std::size_t>& first = all.first;  // face f's parts: [first[f], first[f + 1])
   std::vector<sampled::PartTriangles> parts;
-  std::vector<std::size_t> first{0};  // face f's parts: [first[f], first[f + 1])
-  for (const Face& face : scene.faces) {
-    for (const hsr::Polygon3& part : face.parts) {
-      polygons.push_back(part);
-      planes.push_back(hsr::plane_of(part));
-      parts.push_back(sampled::part_triangles(part));
-    }
-    first.push_back(parts.size());
-  }
-  const std::vector<PartRole> roles = part_roles(polygons, planes, light);
+  for (const hsr::Polygon3& part : all.polygons) parts.push_back(sampled::part_triangles(part));
+  const std::vector<PartRole> roles = part_roles(all.polygons, all.planes, light);
   std::vector<Triangle> triangles;
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (std::size_t i = 0; i < parts.size(); ++i) {

@@ -45,11 +45,9 @@ struct Estimator::Impl {
   const Scene& scene;
   Method method;
   // Every part of every face, face by face: what the light's scope is decided on
-  // (light_scope.h), and each part's triangles. Face f's are [first[f], first[f + 1]).
-  std::vector<hsr::Polygon3> polygons;
-  std::vector<hsr::Plane3> planes;
+  // (light_scope.h), and each part's triangles, in the same order.
+  ScenePartPlanes all;
   std::vector<PartTriangles> parts;
-  std::vector<std::size_t> first{0};
   // Rays: one Embree device for every light (its thread pool and settings), and the
   // hierarchy over every part, built at the first light that leaves no part out (a sun,
   // a point light without range, or one whose range takes in the whole scene) and shared
@@ -61,18 +59,15 @@ struct Estimator::Impl {
   std::once_flag whole_once;
   std::unique_ptr<RayCaster> whole;
 
-  Impl(const Scene& s, const Method& m) : scene(s), method(m) {
+  Impl(const Scene& s, const Method& m) : scene(s), method(m), all(s) {
     for (const Face& face : scene.faces) {
       for (const hsr::Polygon3& part : face.parts) {
-        polygons.push_back(part);
-        planes.push_back(hsr::plane_of(part));
         try {
           parts.push_back(part_triangles(part));
         } catch (const std::runtime_error& e) {
           throw std::runtime_error("face " + face.id + ": " + e.what());
         }
       }
-      first.push_back(parts.size());
     }
     if (method.kind == MethodKind::kRays) {
       device = rtcNewDevice(nullptr);
@@ -101,8 +96,9 @@ struct Estimator::Impl {
   PartLitAreas estimate(const std::vector<PartRole>& roles, Lit lit) const {
     PartLitAreas areas(scene.faces.size());
     hsr::for_each_in_parallel(scene.faces.size(), [&](std::size_t f) {
-      const std::span<const PartTriangles> face(parts.data() + first[f], first[f + 1] - first[f]);
-      const auto role = [&](std::size_t k) { return roles[first[f] + k]; };
+      const std::size_t first = all.first[f];
+      const std::span<const PartTriangles> face(parts.data() + first, all.first[f + 1] - first);
+      const auto role = [&](std::size_t k) { return roles[first + k]; };
       bool any = false;
       for (std::size_t k = 0; k < face.size(); ++k) any = any || role(k) == PartRole::kFacing;
       if (!any) {
@@ -144,7 +140,7 @@ Estimator::~Estimator() = default;
 
 PartLitAreas Estimator::lit_areas(const Light& light) const {
   Impl& impl = *impl_;
-  const std::vector<PartRole> roles = part_roles(impl.polygons, impl.planes, light);
+  const std::vector<PartRole> roles = part_roles(impl.all.polygons, impl.all.planes, light);
   if (impl.method.kind == MethodKind::kShadowMap) {
     const ShadowMap map(light, impl.occluders(roles), impl.method.resolution);
     return impl.estimate(roles, [&](std::span<const glm::dvec3> points,

@@ -8,16 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "shadowgen/sampled/embree_triangles.h"
+
 namespace shadowgen::sampled {
 namespace {
-
-void check(RTCDevice device, const char* what) {
-  const RTCError error = rtcGetDeviceError(device);
-  if (error != RTC_ERROR_NONE) {
-    throw std::runtime_error(std::string("embree: ") + what + " failed (error " +
-                             std::to_string(static_cast<int>(error)) + ")");
-  }
-}
 
 // The widest packet Embree traverses natively on this CPU (1: none).
 int native_packet_width(RTCDevice device) {
@@ -97,48 +91,12 @@ void cast_in_packets(RTCScene scene, std::span<const RTCRay> rays, std::span<dou
 
 }  // namespace
 
-RayCaster::RayCaster(RTCDevice device, std::span<const Triangle3> occluders)
-    : scene_(rtcNewScene(device)) {
-  if (scene_ == nullptr) check(device, "making a scene");
-  // Robust: watertight edges, at a small cost in speed.
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-  double magnitude = 0.0;
-  if (!occluders.empty()) {
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* xyz = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                            RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                            3 * occluders.size()));
-    auto* index = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(unsigned), occluders.size()));
-    if (xyz == nullptr || index == nullptr) {
-      rtcReleaseGeometry(geometry);
-      rtcReleaseScene(scene_);
-      check(device, "geometry buffers");
-      throw std::runtime_error("embree: geometry buffers failed");
-    }
-    unsigned next = 0;
-    for (const Triangle3& t : occluders) {
-      for (const glm::dvec3* v : {&t.a, &t.b, &t.c}) {
-        magnitude = std::max({magnitude, std::fabs(v->x), std::fabs(v->y), std::fabs(v->z)});
-        *xyz++ = static_cast<float>(v->x);
-        *xyz++ = static_cast<float>(v->y);
-        *xyz++ = static_cast<float>(v->z);
-        *index++ = next++;
-      }
-    }
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene_, geometry);
-    rtcReleaseGeometry(geometry);
-  }
-  rtcCommitScene(scene_);
-  try {
-    check(device, "building the hierarchy");
-  } catch (...) {
-    rtcReleaseScene(scene_);
-    throw;
-  }
-  offset_ = kOffsetUlps * 0x1.0p-23 * magnitude;
+RayCaster::RayCaster(RTCDevice device, std::span<const Triangle3> occluders) {
+  // Stored as they are (centre 0): the offset below is relative to the scene's own
+  // coordinates.
+  const EmbreeTriangles built = embree_triangles(device, occluders, glm::dvec3(0.0));
+  scene_ = built.scene;
+  offset_ = kOffsetUlps * 0x1.0p-23 * built.magnitude;
   packet_width_ = native_packet_width(device);
 }
 

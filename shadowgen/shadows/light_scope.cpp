@@ -8,6 +8,16 @@
 
 namespace shadowgen {
 
+ScenePartPlanes::ScenePartPlanes(const Scene& scene) {
+  for (const Face& face : scene.faces) {
+    for (const hsr::Polygon3& part : face.parts) {
+      polygons.push_back(part);
+      planes.push_back(hsr::plane_of(part));
+    }
+    first.push_back(polygons.size());
+  }
+}
+
 std::vector<PartRole> part_roles(std::span<const hsr::Polygon3> polygons,
                                  std::span<const hsr::Plane3> planes, const Light& light) {
   const std::size_t n = polygons.size();

@@ -15,6 +15,7 @@
 //     in its plane, a directional light parallel to it), or that has no plane (no area),
 //     gets no lit area, and still occludes.
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -36,6 +37,17 @@ inline bool receives(PartRole role) {
 }
 // Whether the part stands in the light's way: everything but kLeftOut.
 inline bool occludes(PartRole role) { return role != PartRole::kLeftOut; }
+
+// Every part of every face of a scene, face by face, with its plane (hsr::plane_of): what
+// part_roles takes. Face f's parts are [first[f], first[f + 1]).
+struct ScenePartPlanes {
+  std::vector<hsr::Polygon3> polygons;
+  std::vector<hsr::Plane3> planes;
+  std::vector<std::size_t> first{0};
+
+  explicit ScenePartPlanes(const Scene& scene);
+  std::size_t index(std::size_t face, std::size_t part) const { return first[face] + part; }
+};
 
 // The role of every part under `light`; `planes` are the parts' hsr::plane_of, in parallel.
 std::vector<PartRole> part_roles(std::span<const hsr::Polygon3> polygons,

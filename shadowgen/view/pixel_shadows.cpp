@@ -19,23 +19,11 @@
 namespace shadowgen {
 namespace {
 
-// Every part of every face, face by face, with its plane: what a light's scope is decided
-// on. Face f's parts are [first[f], first[f + 1]).
-struct SceneParts {
-  std::vector<hsr::Polygon3> polygons;
-  std::vector<hsr::Plane3> planes;
-  std::vector<std::size_t> first{0};
-
-  explicit SceneParts(const Scene& scene) {
-    for (const Face& face : scene.faces) {
-      for (const hsr::Polygon3& part : face.parts) {
-        polygons.push_back(part);
-        planes.push_back(hsr::plane_of(part));
-      }
-      first.push_back(polygons.size());
-    }
-  }
-  std::size_t index(const PixelSurface& pixel) const { return first[pixel.face] + pixel.part; }
+// The scene's parts (light_scope.h), found by the pixel that sees one.
+struct SceneParts : ScenePartPlanes {
+  using ScenePartPlanes::index;
+  using ScenePartPlanes::ScenePartPlanes;
+  std::size_t index(const PixelSurface& pixel) const { return index(pixel.face, pixel.part); }
 };
 
 // Whether the light's weight can be other than 0 at the pixel: a part seen from its front,
@@ -217,9 +205,8 @@ std::string_view pixel_shadows_name(PixelShadows method) {
 }
 
 std::optional<PixelShadows> pixel_shadows_named(std::string_view name) {
-  for (const PixelShadows method :
-       {PixelShadows::kExact, PixelShadows::kShadowMap, PixelShadows::kVolumes,
-        PixelShadows::kStencil}) {
+  for (const PixelShadows method : {PixelShadows::kExact, PixelShadows::kShadowMap,
+                                    PixelShadows::kVolumes, PixelShadows::kStencil}) {
     if (pixel_shadows_name(method) == name) return method;
   }
   return std::nullopt;

@@ -107,15 +107,9 @@ bool may_meet_hull(const sampled::Triangle3& tri, const std::vector<dvec3>& hull
 // ---- The scene under the light ---------------------------------------------------------
 
 std::vector<PartInfo> scene_parts(const Scene& scene, const Light& light) {
-  std::vector<hsr::Polygon3> polygons;
-  std::vector<hsr::Plane3> planes;
-  for (const Face& face : scene.faces) {
-    for (const hsr::Polygon3& part : face.parts) {
-      polygons.push_back(part);
-      planes.push_back(hsr::plane_of(part));
-    }
-  }
-  const std::vector<PartRole> roles = part_roles(polygons, planes, light);
+  const ScenePartPlanes all(scene);
+  const std::vector<PartRole> roles = part_roles(all.polygons, all.planes, light);
+  const std::vector<hsr::Plane3>& planes = all.planes;
   std::vector<PartInfo> parts;
   std::size_t k = 0;
   for (const Face& face : scene.faces) {

@@ -6,16 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "shadowgen/sampled/embree_triangles.h"
+
 namespace shadowgen::detail {
 namespace {
-
-void check(RTCDevice device, const char* what) {
-  const RTCError error = rtcGetDeviceError(device);
-  if (error != RTC_ERROR_NONE) {
-    throw std::runtime_error(std::string("embree: ") + what + " failed (error " +
-                             std::to_string(static_cast<int>(error)) + ")");
-  }
-}
 
 // The query's own context: Embree's, then where the hits go.
 struct HitContext {
@@ -44,46 +38,11 @@ EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
 
 TriangleScene::TriangleScene(RTCDevice device, std::span<const sampled::Triangle3> triangles,
                              const glm::dvec3& centre)
-    : scene_(rtcNewScene(device)), centre_(centre) {
-  if (scene_ == nullptr) check(device, "making a scene");
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-  if (!triangles.empty()) {
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* xyz = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                            RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                            3 * triangles.size()));
-    auto* index = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                3 * sizeof(unsigned), triangles.size()));
-    if (xyz == nullptr || index == nullptr) {
-      rtcReleaseGeometry(geometry);
-      rtcReleaseScene(scene_);
-      check(device, "geometry buffers");
-      throw std::runtime_error("embree: geometry buffers failed");
-    }
-    unsigned next = 0;
-    for (const sampled::Triangle3& t : triangles) {
-      for (const glm::dvec3* v : {&t.a, &t.b, &t.c}) {
-        const glm::dvec3 p = *v - centre_;
-        magnitude_ = std::max({magnitude_, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-        *xyz++ = static_cast<float>(p.x);
-        *xyz++ = static_cast<float>(p.y);
-        *xyz++ = static_cast<float>(p.z);
-        *index++ = next++;
-      }
-    }
-    rtcSetGeometryIntersectFilterFunction(geometry, record_and_reject);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene_, geometry);
-    rtcReleaseGeometry(geometry);
-  }
-  rtcCommitScene(scene_);
-  try {
-    check(device, "building the hierarchy");
-  } catch (...) {
-    rtcReleaseScene(scene_);
-    throw;
-  }
+    : centre_(centre) {
+  const sampled::EmbreeTriangles built =
+      sampled::embree_triangles(device, triangles, centre, record_and_reject);
+  scene_ = built.scene;
+  magnitude_ = built.magnitude;
 }
 
 TriangleScene::~TriangleScene() { rtcReleaseScene(scene_); }
