@@ -94,15 +94,21 @@ class DepthMap {
 struct ShadowMap::View {
   Frame frame;
   glm::dvec3 origin{0.0};    // orthographic: the occluders' box's middle; perspective: the light
-  bool perspective = false;  // image (x/z, y/z) in [−1, 1]², else (x, y) / texel
+  bool perspective = false;  // image (x/z, y/z) / spread in [−1, 1]², else (x, y) / texel
   double texel = 1.0;        // orthographic: a texel's width
+  double spread = 1.0;       // perspective: the map's half-width in x/z (a margin past 1)
   double half = 0.0;         // half the resolution
   DepthMap map{1};
 
   glm::dvec2 image(const glm::dvec3& e) const {
-    if (perspective) return {(e.x / e.z + 1.0) * half, (e.y / e.z + 1.0) * half};
+    if (perspective) {
+      return {(e.x / (e.z * spread) + 1.0) * half, (e.y / (e.z * spread) + 1.0) * half};
+    }
     return {e.x / texel + half, e.y / texel + half};
   }
+
+  // A texel's width at depth z.
+  double texel_at(double z) const { return perspective ? z * spread / half : texel; }
 
   // The triangle (in the frame, relative to the origin) drawn into the map. `near`: the
   // perspective view's near distance.
@@ -129,25 +135,31 @@ struct ShadowMap::View {
         poly[count++] = image(p + (q - p) * ((near - p.z) / (q.z - p.z)));
     }
     if (count < 3) return;
-    // 1/z = (nrm.x·x' + nrm.y·y' + nrm.z) / off on the plane, x' = x / half − 1.
-    map.draw(std::span(poly.data(), count), nrm.x / (half * off), nrm.y / (half * off),
-             (nrm.z - nrm.x - nrm.y) / off);
+    // 1/z = (nrm.x·x' + nrm.y·y' + nrm.z) / off on the plane, x' = (x / half − 1)·spread.
+    const double s = spread / (half * off);
+    map.draw(std::span(poly.data(), count), nrm.x * s, nrm.y * s,
+             (nrm.z - (nrm.x + nrm.y) * spread) / off);
   }
 
-  // Whether the tap at texel (i, j) passes for a part whose plane is nrm · e = off.
-  bool passes(int i, int j, const glm::dvec3& nrm, double off, double sample_depth) const {
-    const float stored = map.at(i, j);
-    if (stored == kEmpty) return true;
+  // The depth of the plane nrm · e = off on the ray (orthographic: the line) through the
+  // centre of texel (i, j); +∞ where the ray misses it (beyond its horizon) or runs in it.
+  double plane_depth(int i, int j, const glm::dvec3& nrm, double off) const {
     const double x = i + 0.5, y = j + 0.5;
     if (!perspective) {
-      const double ex = (x - half) * texel, ey = (y - half) * texel;
-      const double depth = nrm.z != 0.0 ? (off - nrm.x * ex - nrm.y * ey) / nrm.z : sample_depth;
-      return depth <= -static_cast<double>(stored) + kDepthBiasTexels * texel;
+      if (nrm.z == 0.0) return INFINITY;
+      return (off - nrm.x * (x - half) * texel - nrm.y * (y - half) * texel) / nrm.z;
     }
-    const double denominator = nrm.x * (x / half - 1.0) + nrm.y * (y / half - 1.0) + nrm.z;
+    const double denominator =
+        (nrm.x * (x / half - 1.0) + nrm.y * (y / half - 1.0)) * spread + nrm.z;
     const double depth = off / denominator;
-    if (!(depth > 0.0) || !std::isfinite(depth)) return true;  // beyond the part's horizon
-    return depth <= 1.0 / static_cast<double>(stored) + kDepthBiasTexels * depth / half;
+    return depth > 0.0 && std::isfinite(depth) ? depth : INFINITY;
+  }
+
+  // The depth stored at texel (i, j); +∞ where empty.
+  double stored_depth(int i, int j) const {
+    const float nearness = map.at(i, j);
+    if (nearness == kEmpty) return INFINITY;
+    return perspective ? 1.0 / static_cast<double>(nearness) : -static_cast<double>(nearness);
   }
 };
 
@@ -163,6 +175,11 @@ ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, i
     }
   }
   const double diagonal = occluders.empty() ? 0.0 : glm::length(hi - lo);
+  // Each map reaches kMarginTexels past what it must show (the box of the occluders, a
+  // cube face's 90°), as a fraction of its half-width: so that a sample at its edge, at a
+  // cube map's seam included, is filtered with texels that hold what the light sees there
+  // rather than the edge's own texels repeated.
+  const double margin = 2.0 * kMarginTexels / resolution;
   if (perspective_) {
     eye_ = light.position;
     static const std::array<glm::dvec3, 6> kAxes = {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0),
@@ -173,6 +190,7 @@ ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, i
       view.frame = frame_along(kAxes[k]);
       view.origin = eye_;
       view.perspective = true;
+      view.spread = 1.0 + margin;
     }
   } else {
     View& view = views_[0];
@@ -185,8 +203,9 @@ ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, i
         extent = std::max({extent, std::fabs(e.x), std::fabs(e.y)});
       }
     }
-    // A hair wider than the box, so that its outermost vertices fall inside the last texel.
-    if (extent > 0.0) view.texel = 2.0 * extent * (1.0 + 1e-9) / resolution;
+    // A hair wider than the box, so that its outermost vertices fall inside the last texel,
+    // and the margin.
+    if (extent > 0.0) view.texel = 2.0 * extent * (1.0 + 1e-9) * (1.0 + margin) / resolution;
   }
   const double near = std::max(1e-9 * diagonal, DBL_MIN);
   for (int k = 0; k < view_count_; ++k) {
@@ -218,6 +237,10 @@ double ShadowMap::lit(const glm::dvec3& point, const glm::dvec3& normal) const {
   if (view.perspective && !(e.z > 0.0)) return 1.0;  // the sample at the light
   const glm::dvec3 nrm = view.frame.to(normal);
   const double off = glm::dot(nrm, e);  // the part's plane: nrm · e = off
+  const double texel = view.texel_at(e.z);
+  // The part's plane is followed to a tap no farther than kPlaneReachTexels behind the
+  // sample (the slope clamp), all the way towards the light.
+  const double farthest = e.z + kPlaneReachTexels * texel, bias = kDepthBiasTexels * texel;
   const glm::dvec2 at = view.image(e);
   const int n = view.map.size();
   const int ib =
@@ -228,7 +251,11 @@ double ShadowMap::lit(const glm::dvec3& point, const glm::dvec3& normal) const {
   for (int dj = -1; dj <= 1; ++dj) {
     for (int di = -1; di <= 1; ++di) {
       const int i = std::clamp(ib + di, 0, n - 1), j = std::clamp(jb + dj, 0, n - 1);
-      if (view.passes(i, j, nrm, off, e.z)) ++passed;
+      const double stored = view.stored_depth(i, j);
+      if (stored == INFINITY ||
+          std::min(view.plane_depth(i, j, nrm, off), farthest) <= stored + bias) {
+        ++passed;
+      }
     }
   }
   return passed / 9.0;

@@ -14,18 +14,35 @@
 // reaching behind a perspective map's eye is clipped at a near distance of 1e-9 of the
 // occluders' box.
 //
+// Each map reaches kMarginTexels past what it must show (the occluders' box; a cube face's
+// 90°, its image x/z, y/z in [−spread, spread] with spread a little over 1), so that a
+// sample at its edge, at a cube map's seams included, is filtered with texels that hold
+// what the light sees there, not the edge texels repeated.
+//
 // Lookup: the 3×3 texels around the one the sample falls in (clamped at the map's edge),
 // each a tap. A tap passes where it is empty or where the sample's part, extended in its
 // own plane to the tap's centre, is no farther from the light than the depth stored there
-// plus a constant bias of kDepthBiasTexels texel widths (at that depth). Taking the part's
-// own plane at each tap is the slope-scaled bias made exact: the part's own texels and
-// those of every part coplanar with it pass whatever the slope, so a part seen at a
-// grazing angle neither shadows itself (acne) nor needs a bias so large that shadows of
-// nearby occluders leak away; the constant covers the floats the map stores (2^-24 of a
-// depth, far below a texel up to kMaxResolution). A tap whose ray from a point light
-// misses the part's plane (beyond its horizon) passes. The sample's lit weight is the
-// fraction of its 9 taps that pass; as the resolution grows, the filter's footprint and
-// the bias shrink with the texel, and the estimate tends to the exact one.
+// plus a constant bias of kDepthBiasTexels texel widths (at the sample's depth) — but the
+// plane is followed away from the light at most kPlaneReachTexels texel widths behind the
+// sample (receiver-plane depth bias with a slope clamp, Isidoro 2006). Taking the part's
+// own plane at each tap makes the part's own texels, those of every part coplanar with
+// it, and those of a neighbour that rises towards the light from a convex edge pass
+// whatever the slope, so a part seen at a grazing angle neither shadows itself (acne) nor
+// needs a bias so large that shadows of nearby occluders leak away. The clamp is what a
+// part nearly edge-on to the light needs: its image is a sliver narrower than a texel, so
+// most of its taps fall beside it, and its plane, steep there, runs hundreds of texels
+// behind the sample one texel away. Unclamped, every tap beyond its silhouette (the
+// ground far behind it, say) failed, and a wholly lit face was estimated about half in
+// shadow at every resolution; clamped, a tap fails only where something stands in front
+// of the sample itself or of its plane towards the light. A tap whose ray from a point
+// light misses the part's plane (beyond its horizon) counts as the plane at its farthest.
+// The constant covers the floats the map stores (2^-24 of a depth, far below a texel up
+// to kMaxResolution). The sample's lit weight is the fraction of its 9 taps that pass; as
+// the resolution grows, the filter's footprint and the bias shrink with the texel, and
+// the estimate tends to the exact one wherever a part's image is wider than a few texels.
+// What it cannot see stays wrong until the texels are small enough: a part nearly edge-on
+// (narrower in the image than a texel) shadowed by a neighbour folded over it, or an
+// occluder nearer to it than the reach of its plane towards the light across one texel.
 
 #include <glm/vec3.hpp>
 #include <memory>
@@ -38,6 +55,11 @@ namespace shadowgen::sampled {
 
 // The constant part of the depth bias, in texel widths at the tap's depth.
 inline constexpr double kDepthBiasTexels = 0.5;
+// How far behind the sample (away from the light) its plane is followed to a tap, in
+// texel widths at the sample's depth: the slope clamp of the receiver-plane bias.
+inline constexpr double kPlaneReachTexels = 1.0;
+// How far each map reaches past what it must show, in texels.
+inline constexpr double kMarginTexels = 2.0;
 
 class ShadowMap {
  public:
