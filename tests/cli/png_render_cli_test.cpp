@@ -91,10 +91,10 @@ TEST_F(PngRenderCli, EachMethodWritesAValidPng) {
   ASSERT_EQ(both.code, 0) << both.err;
   EXPECT_TRUE(fs::exists(dir_ / "both.svg"));
   EXPECT_TRUE(read_png(dir_ / "both.png").ok);
-  EXPECT_EQ(sorted_names(dir_, dir_ / "run"),
-            (std::vector<std::string>{"both.png", "both.svg", "courtyard.shadowed.json",
-                                      "exact.png", "plain.png", "shadow-map.png", "stencil.png",
-                                      "volumes.png"}));
+  EXPECT_EQ(
+      sorted_names(dir_, dir_ / "run"),
+      (std::vector<std::string>{"both.png", "both.svg", "courtyard.shadowed.json", "exact.png",
+                                "plain.png", "shadow-map.png", "stencil.png", "volumes.png"}));
 }
 
 TEST_F(PngRenderCli, AFailedRunLeavesTheOldFile) {
