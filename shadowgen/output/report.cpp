@@ -226,16 +226,21 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
   if (top == 0) return out;
 
   for (std::size_t l = 0; l < lights; ++l) {
-    // report_rows lists faces in scene order for each light, so a stable sort keeps ties
-    // in scene order.
+    // report_rows holds one row per (face, light), face by face: light l's are every
+    // lights-th. Only the `top` most shadowed are ordered (ties in scene order), so a sun
+    // path of thousands of instants costs lights × faces, not lights² × faces.
     std::vector<const ReportRow*> shadowed_rows;
-    for (const ReportRow& row : rows) {
-      if (row.light == l && row.area > 0.0) shadowed_rows.push_back(&row);
+    for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+      const ReportRow& row = rows[f * lights + l];
+      if (row.area > 0.0) shadowed_rows.push_back(&row);
     }
-    std::stable_sort(
-        shadowed_rows.begin(), shadowed_rows.end(),
-        [](const ReportRow* a, const ReportRow* b) { return a->lit_fraction < b->lit_fraction; });
     const std::size_t shown = std::min(top, shadowed_rows.size());
+    std::partial_sort(shadowed_rows.begin(),
+                      shadowed_rows.begin() + static_cast<std::ptrdiff_t>(shown),
+                      shadowed_rows.end(), [](const ReportRow* a, const ReportRow* b) {
+                        return a->lit_fraction < b->lit_fraction ||
+                               (a->lit_fraction == b->lit_fraction && a->face < b->face);
+                      });
     out += "\nmost shadowed faces under " + one_line(scene.lights[l].id) +
            " (lowest lit fraction first, " + std::to_string(shown) + " of " +
            std::to_string(shadowed_rows.size()) + ")\n";
