@@ -8,10 +8,15 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/model/one_line.h"
+#include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/method_table.h"
 #include "shadowgen/pipeline/method_comparison.h"
 #include "shadowgen/view/method_plot.h"
+#include "shadowgen/view/pixel_shadows.h"
+#include "shadowgen/view/view_comparison.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -22,7 +27,10 @@ constexpr CommandText kCompareText{
     "time and the error "
     "of its lit fractions against the exact method's (mean and largest over every face and "
     "light), marking those no other method beats on both time and error (Pareto-optimal). "
-    "--plot draws error against time."};
+    "--plot draws error against time. --view ID also draws the scene from its view ID "
+    "pixel by pixel with the view methods (as render --png --shadows does) and prints each "
+    "one's time and the share of (pixel, light) pairs, off region boundaries, whose lit state "
+    "differs from the exact method's."};
 
 // The default trials: three sample counts of each sampled method.
 constexpr const char* kDefaultMethods[] = {"rays:16",
@@ -32,6 +40,10 @@ constexpr const char* kDefaultMethods[] = {"rays:16",
                                            "shadow-map:64:1024",
                                            "shadow-map:256:2048"};
 
+// The default view methods of --view.
+constexpr const char* kDefaultViewMethods[] = {
+    "shadow-map:1024", "shadow-map:2048", "shadow-map:4096", "volumes", "stencil", "angular"};
+
 struct CompareArgs {
   std::string input;  // a scene
   std::vector<std::string> methods{std::begin(kDefaultMethods), std::end(kDefaultMethods)};
@@ -39,6 +51,10 @@ struct CompareArgs {
   bool csv_safe = false;
   std::string output;  // empty: standard output
   std::string plot;    // an SVG file, or none
+  std::string view;    // a view id of the scene, or none
+  int width = 400, height = 300;
+  std::vector<std::string> view_methods{std::begin(kDefaultViewMethods),
+                                        std::end(kDefaultViewMethods)};
   ReadingArgs reading;
 };
 
@@ -92,9 +108,60 @@ Method parse_method(const std::string& text) {
   return method;
 }
 
+// A view method of --view-methods: exact, volumes, stencil, shadow-map[:RESOLUTION] or
+// angular[:ROWS].
+// Throws UsageError.
+PixelShadowOptions parse_view_method(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  PixelShadowOptions options;
+  // The methods --view-methods takes, by name.
+  constexpr PixelShadows kTaken[] = {PixelShadows::kExact, PixelShadows::kShadowMap,
+                                     PixelShadows::kVolumes, PixelShadows::kStencil,
+                                     PixelShadows::kAngular};
+  bool known = false;
+  for (const PixelShadows method : kTaken) {
+    if (pixel_shadows_name(method) == name) {
+      options.method = method;
+      known = true;
+    }
+  }
+  std::optional<int> resolution = kDefaultResolution;
+  if (colon != std::string::npos) resolution = count(text.substr(colon + 1), kMaxResolution);
+  if (!known || !resolution ||
+      (colon != std::string::npos && options.method != PixelShadows::kShadowMap &&
+       options.method != PixelShadows::kAngular)) {
+    throw UsageError("--view-methods " + text +
+                     ": expected exact, volumes, stencil, shadow-map[:RESOLUTION] or "
+                     "angular[:ROWS], resolution from 1 to " +
+                     std::to_string(kMaxResolution));
+  }
+  options.resolution = *resolution;
+  return options;
+}
+
+// The scene's view `id`. Throws InputError naming `file` and the views there are.
+const ViewSpec& view_named(const Scene& scene, const std::string& id, const std::string& file) {
+  std::string known;
+  for (const ViewSpec& view : scene.views) {
+    if (view.id == id) return view;
+    known += (known.empty() ? "'" : ", '") + one_line(view.id) + "'";
+  }
+  throw InputError(file, "",
+                   "has no view '" + one_line(id) + "' (" +
+                       (known.empty() ? std::string("it has no views") : "its views: " + known) +
+                       ")");
+}
+
 void run_compare(const CompareArgs& args) {
   std::vector<Method> methods;
   for (const std::string& text : args.methods) methods.push_back(parse_method(text));
+  std::vector<PixelShadowOptions> view_methods;
+  if (!args.view.empty()) {
+    for (const std::string& text : args.view_methods) {
+      view_methods.push_back(parse_view_method(text));
+    }
+  }
   std::vector<OutputFile> outputs;
   if (!args.output.empty()) {
     refuse_input_as_output("-o", args.output, args.input);
@@ -106,19 +173,32 @@ void run_compare(const CompareArgs& args) {
   }
   const Scene scene = load_scene(
       args.input, load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs)));
+  // A view the scene does not have is refused before any work.
+  const ViewSpec* view = args.view.empty() ? nullptr : &view_named(scene, args.view, args.input);
   GenerateOptions options;
   options.threads = args.reading.threads;
   MethodComparison comparison;
+  ShadowedScene exact;
   try {
-    comparison = compare_methods(scene, methods, options);
+    comparison = compare_methods(scene, methods, options, view ? &exact : nullptr);
   } catch (const GenerationError& e) {
     throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
   }
+  std::optional<ViewComparison> view_comparison;
+  if (view != nullptr) {
+    try {
+      view_comparison = compare_view_methods(exact, *view, args.width, args.height, view_methods);
+    } catch (const std::invalid_argument& e) {
+      // A view the scene describes badly (eye == target).
+      throw InputError(args.input, "", "view '" + one_line(view->id) + "': " + e.what());
+    }
+  }
+  const ViewComparison* shown = view_comparison ? &*view_comparison : nullptr;
   const std::string text =
       args.format == "csv"
           ? comparison_csv(comparison, scene,
-                           args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact)
-          : comparison_table(comparison, scene);
+                           args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact, shown)
+          : comparison_table(comparison, scene, shown);
   if (!args.plot.empty()) write_comparison_svg(comparison, args.plot);
   if (args.output.empty()) {
     std::cout << text << std::flush;
@@ -150,6 +230,29 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
   command.add_option("--plot", args.plot,
                      "SVG file to draw: mean error against time, log-log, the Pareto-optimal "
                      "methods joined");
+  CLI::Option* view =
+      command.add_option("--view", args.view,
+                         "id of one of the scene's views: also draw the scene from it pixel by "
+                         "pixel with each of --view-methods, and print each one's time and "
+                         "the share of (pixel, light) pairs off region boundaries whose lit "
+                         "state differs from the exact method's");
+  command.add_option("--width", args.width, "with --view: picture width in pixels (default 400)")
+      ->check(CLI::Range(1, 1 << 14))
+      ->needs(view);
+  command
+      .add_option("--height", args.height, "with --view: picture height in pixels (default 300)")
+      ->check(CLI::Range(1, 1 << 14))
+      ->needs(view);
+  command
+      .add_option("--view-methods", args.view_methods,
+                  "with --view: the view methods to measure, comma-separated: exact, "
+                  "shadow-map[:RESOLUTION] (texels a side of each depth map, default " +
+                      std::to_string(kDefaultResolution) +
+                      "), volumes, stencil, angular[:ROWS] (rows of the angular span table) "
+                      "(default: shadow-map:1024,shadow-map:2048,shadow-map:4096,volumes,"
+                      "stencil,angular)")
+      ->delimiter(',')
+      ->needs(view);
   add_output_option(command, args.output,
                     "file to write the table to (replaced whole); default: standard output");
   add_reading_options(command, args.reading);

@@ -129,9 +129,9 @@ Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
 PixelShadowOptions pixel_shadows_of(const RenderArgs& args) {
   PixelShadowOptions options;
   options.method = pixel_shadows_named(args.shadows).value_or(PixelShadows::kExact);
-  if (options.method != PixelShadows::kShadowMap && args.resolution_option != nullptr &&
-      args.resolution_option->count() > 0) {
-    throw UsageError("--resolution applies only to --shadows shadow-map");
+  if (options.method != PixelShadows::kShadowMap && options.method != PixelShadows::kAngular &&
+      args.resolution_option != nullptr && args.resolution_option->count() > 0) {
+    throw UsageError("--resolution applies only to --shadows shadow-map and angular");
   }
   options.resolution = args.resolution;
   return options;
@@ -238,14 +238,15 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
                   "database's lit polygons), shadow-map (depth maps from each light), volumes "
                   "(Bergeron's shadow volumes counted along each eye ray) or stencil "
                   "(Heidmann's shadow volumes in the stencil buffer of OpenGL, run on the CPU "
-                  "by Mesa)")
-      ->check(CLI::IsMember({"exact", "shadow-map", "volumes", "stencil"}))
+                  "by Mesa) or angular (Thakur, Cheng and Miura's ridge-edge loops and angular "
+                  "span table; closed objects)")
+      ->check(CLI::IsMember({"exact", "shadow-map", "volumes", "stencil", "angular"}))
       ->needs(png);
   args.resolution_option =
       command
           .add_option("--resolution", args.resolution,
-                      "with --png --shadows shadow-map: texels along each side of a depth map "
-                      "(default " +
+                      "with --png --shadows shadow-map: texels along each side of a depth map; "
+                      "with --shadows angular: rows of the angular span table (default " +
                           std::to_string(kDefaultResolution) + ")")
           ->check(CLI::Range(1, kMaxResolution))
           ->needs(png);

@@ -30,4 +30,10 @@ std::string method_label(const Method& method) {
   return label;
 }
 
+std::string view_trial_label(const ViewTrial& trial) {
+  std::string label = trial.method;
+  if (trial.resolution > 0) label.append(" @ ").append(std::to_string(trial.resolution));
+  return label;
+}
+
 }  // namespace shadowgen

@@ -58,6 +58,62 @@ struct MethodComparison {
   unsigned threads = 0;             // as options.threads (0: one per hardware thread)
 };
 
+// A view method's lit states against the exact method's over the pixels of a picture
+// (shadowgen/view/view_comparison.h counts them): a pixel is lit for a light where its
+// weight is at least 1/2. Pairs on a region boundary are left out: a pixel seen from the
+// front whose 3 × 3 neighbourhood (clamped at the picture's edge) is not uniform in the
+// face seen or in exact's lit state for that light.
+struct LitAgreement {
+  std::size_t compared = 0;           // (pixel, light) pairs off boundaries
+  std::size_t disagreeing = 0;        // of those, the ones whose lit state differs
+  std::size_t boundary = 0;           // pairs left out, on boundaries
+  std::size_t lit = 0, shadowed = 0;  // exact's, among those compared
+
+  // disagreeing / compared; 0 where nothing is compared.
+  double share() const {
+    return compared ? static_cast<double>(disagreeing) / static_cast<double>(compared) : 0.0;
+  }
+};
+
+// One view method (shadowgen/view/pixel_shadows.h) measured against the exact one from a
+// view of the scene (`compare --view`).
+struct ViewTrial {
+  std::string method;    // "exact", "shadow-map", "volumes" or "stencil"
+  int resolution = 0;    // shadow-map: texels a side of each depth map; angular: rows; else 0
+  double seconds = 0.0;  // wall time of its lit weights (the surfaces seen found before all)
+  LitAgreement agreement;
+  // No other view trial is at least as fast and agrees at least as often (by share), and
+  // better in one of the two.
+  bool pareto = false;
+};
+
+struct ViewComparison {
+  std::string view;               // the id of the scene's view
+  int width = 0, height = 0;      // pixels
+  double surfaces_seconds = 0.0;  // wall time of finding the surfaces seen, once for all
+  std::vector<ViewTrial> trials;  // in the order given
+};
+
+// "shadow-map @ 1024", "volumes": a view trial's name in tables.
+std::string view_trial_label(const ViewTrial& trial);
+
+// Sets `pareto` on each of `trials` that no other beats: at least as fast and at least as
+// good by `error(trial)`, and better in one of the two.
+template <typename Trial, typename Error>
+void mark_pareto(std::vector<Trial>& trials, Error error) {
+  for (Trial& t : trials) {
+    t.pareto = true;
+    for (const Trial& other : trials) {
+      const bool no_worse = other.seconds <= t.seconds && error(other) <= error(t);
+      const bool better = other.seconds < t.seconds || error(other) < error(t);
+      if (&other != &t && no_worse && better) {
+        t.pareto = false;
+        break;
+      }
+    }
+  }
+}
+
 // "exact", "rays", "shadow-map".
 std::string_view method_name(MethodKind kind);
 // The kind named `name`; nullopt for any other text.

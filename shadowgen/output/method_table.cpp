@@ -17,7 +17,8 @@ std::string scientific(double value) {
 
 }  // namespace
 
-std::string comparison_table(const MethodComparison& comparison, const Scene& scene) {
+std::string comparison_table(const MethodComparison& comparison, const Scene& scene,
+                             const ViewComparison* view) {
   std::string out = "errors of lit fractions over " + std::to_string(comparison.pairs) +
                     " (face, light) pairs, against the exact method; " +
                     (comparison.threads == 0 ? std::string("one thread per core")
@@ -34,10 +35,25 @@ std::string comparison_table(const MethodComparison& comparison, const Scene& sc
                worst ? one_line(scene.lights[t.worst_light].id) : "", t.pareto ? "*" : ""});
   }
   table.append_to(out);
+  if (view == nullptr) return out;
+  out += "\nview " + one_line(view->view) + ", " + std::to_string(view->width) + "×" +
+         std::to_string(view->height) +
+         ": share of (pixel, light) pairs off boundaries whose lit state differs from exact "
+         "(surfaces seen found in " +
+         number_text(view->surfaces_seconds, std::chars_format::general, 3) + " s)\n";
+  detail::TextTable views({false, true, true, true, false});
+  views.add({"view method", "seconds", "differing share", "pairs", "pareto"});
+  for (const ViewTrial& t : view->trials) {
+    views.add({view_trial_label(t), number_text(t.seconds, std::chars_format::general, 3),
+               scientific(t.agreement.share()), std::to_string(t.agreement.compared),
+               t.pareto ? "*" : ""});
+  }
+  views.append_to(out);
   return out;
 }
 
-std::string comparison_csv(const MethodComparison& comparison, const Scene& scene, CsvIds ids) {
+std::string comparison_csv(const MethodComparison& comparison, const Scene& scene, CsvIds ids,
+                           const ViewComparison* view) {
   std::string out =
       "method,samples,resolution,seconds,mean_error,max_error,worst_face,worst_light,pareto\n";
   for (const MethodTrial& t : comparison.trials) {
@@ -56,6 +72,20 @@ std::string comparison_csv(const MethodComparison& comparison, const Scene& scen
     if (t.max_error > 0.0) detail::append_csv_field(out, scene.faces[t.worst_face].id, ids);
     out += ',';
     if (t.max_error > 0.0) detail::append_csv_field(out, scene.lights[t.worst_light].id, ids);
+    out += t.pareto ? ",1\n" : ",0\n";
+  }
+  if (view == nullptr) return out;
+  out += "\nview_method,resolution,seconds,differing_share,pairs,pareto\n";
+  for (const ViewTrial& t : view->trials) {
+    out += t.method;
+    out += ',';
+    if (t.resolution > 0) out += std::to_string(t.resolution);
+    out += ',';
+    detail::append_csv_number(out, t.seconds);
+    out += ',';
+    detail::append_csv_number(out, t.agreement.share());
+    out += ',';
+    out += std::to_string(t.agreement.compared);
     out += t.pareto ? ",1\n" : ",0\n";
   }
   return out;

@@ -13,6 +13,14 @@
 //     rays,64,,0.0311,0.00295...,0.0417...,lawn,sun,1
 //   samples and resolution empty where the method takes none, the worst face and light
 //   empty for a trial without error, numbers as the CSV report writes them.
+//
+// With `view` (compare --view), a second block follows the first: in the table, after a
+// blank line, "view ID, W×H: ..." and one row per view trial (method, seconds, the share
+// of (pixel, light) pairs off boundaries whose lit state differs from exact's, the pairs
+// compared, the Pareto mark); in CSV, after one blank line,
+//     view_method,resolution,seconds,differing_share,pairs,pareto
+//     shadow-map,1024,0.0412,0.00131...,18230,1
+//   resolution empty where the method takes none.
 
 #include <string>
 
@@ -22,8 +30,10 @@
 
 namespace shadowgen {
 
-std::string comparison_table(const MethodComparison& comparison, const Scene& scene);
+std::string comparison_table(const MethodComparison& comparison, const Scene& scene,
+                             const ViewComparison* view = nullptr);
 
-std::string comparison_csv(const MethodComparison& comparison, const Scene& scene, CsvIds ids);
+std::string comparison_csv(const MethodComparison& comparison, const Scene& scene, CsvIds ids,
+                           const ViewComparison* view = nullptr);
 
 }  // namespace shadowgen

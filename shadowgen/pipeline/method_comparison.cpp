@@ -30,24 +30,10 @@ std::vector<double> face_areas(const Scene& scene) {
   return areas;
 }
 
-void mark_pareto(std::vector<MethodTrial>& trials) {
-  for (MethodTrial& t : trials) {
-    t.pareto = true;
-    for (const MethodTrial& other : trials) {
-      const bool no_worse = other.seconds <= t.seconds && other.mean_error <= t.mean_error;
-      const bool better = other.seconds < t.seconds || other.mean_error < t.mean_error;
-      if (&other != &t && no_worse && better) {
-        t.pareto = false;
-        break;
-      }
-    }
-  }
-}
-
 }  // namespace
 
 MethodComparison compare_methods(const Scene& scene, std::span<const Method> methods,
-                                 GenerateOptions options) {
+                                 GenerateOptions options, ShadowedScene* exact_shadowed) {
   options.sun_hours_regions = false;
   options.keep_instant_polygons = false;
   MethodComparison comparison;
@@ -56,7 +42,7 @@ MethodComparison compare_methods(const Scene& scene, std::span<const Method> met
   const std::size_t lights = scene.lights.size();
   for (const double a : areas) comparison.pairs += a > 0.0 ? lights : 0;
 
-  const Timed exact = timed_run(scene, Method{}, options);
+  Timed exact = timed_run(scene, Method{}, options);
   const LitAreas exact_areas(exact.shadowed);
   // Exact fractions once: every trial is compared with them.
   std::vector<double> exact_fraction(areas.size() * lights, 0.0);
@@ -88,7 +74,8 @@ MethodComparison compare_methods(const Scene& scene, std::span<const Method> met
     if (comparison.pairs > 0) trial.mean_error = sum / static_cast<double>(comparison.pairs);
     comparison.trials.push_back(trial);
   }
-  mark_pareto(comparison.trials);
+  mark_pareto(comparison.trials, [](const MethodTrial& t) { return t.mean_error; });
+  if (exact_shadowed != nullptr) *exact_shadowed = std::move(exact.shadowed);
   return comparison;
 }
 

@@ -8,14 +8,18 @@
 
 #include "shadowgen/model/method.h"
 #include "shadowgen/model/scene.h"
+#include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/shadows/generate.h"
 
 namespace shadowgen {
 
 // Runs the exact method, then each of `methods` (an exact one among them is the first
 // trial, not run again), with `options` (sun paths summed into lit areas alone: regions
-// take no part in a lit fraction). Throws what shadows_by_method throws.
+// take no part in a lit fraction). Where `exact_shadowed` is not null, the exact run's
+// shadowed scene is moved into it at the end (its lit polygons, the instants of sun paths
+// without theirs: what `compare --view` measures the view methods against). Throws what
+// shadows_by_method throws.
 MethodComparison compare_methods(const Scene& scene, std::span<const Method> methods,
-                                 GenerateOptions options);
+                                 GenerateOptions options, ShadowedScene* exact_shadowed = nullptr);
 
 }  // namespace shadowgen

@@ -14,6 +14,7 @@
 #include "shadowgen/sampled/part_triangles.h"
 #include "shadowgen/sampled/shadow_map.h"
 #include "shadowgen/shadows/light_scope.h"
+#include "shadowgen/view/angular_shadows.h"
 #include "shadowgen/view/stencil_shadows.h"
 
 namespace shadowgen {
@@ -188,6 +189,24 @@ void stencil_weights(const Scene& scene, const PixelSurfaces& surfaces,
   }
 }
 
+void angular_weights(const Scene& scene, const PixelSurfaces& surfaces,
+                     const std::vector<bool>& drawn, int rows, PixelLitWeights& out) {
+  const std::size_t lights = scene.lights.size();
+  for (std::size_t l = 0; l < lights; ++l) {
+    if (!drawn[l]) continue;
+    const std::vector<double> lit = angular_lit_weights(scene, scene.lights[l], surfaces, rows);
+    for (std::size_t i = 0; i < lit.size(); ++i) out.weights[i * lights + l] = lit[i];
+  }
+}
+
+void check_resolution(int resolution) {
+  if (resolution < 1 || resolution > kMaxResolution) {
+    throw std::invalid_argument("pixel_lit_weights: the resolution must be 1 to " +
+                                std::to_string(kMaxResolution) + ", not " +
+                                std::to_string(resolution));
+  }
+}
+
 }  // namespace
 
 std::string_view pixel_shadows_name(PixelShadows method) {
@@ -200,6 +219,8 @@ std::string_view pixel_shadows_name(PixelShadows method) {
       return "volumes";
     case PixelShadows::kStencil:
       return "stencil";
+    case PixelShadows::kAngular:
+      return "angular";
   }
   return "exact";
 }
@@ -226,11 +247,7 @@ PixelLitWeights pixel_lit_weights(const ShadowedScene& shadowed, const PixelSurf
       exact_weights(shadowed, surfaces, drawn, out);
       break;
     case PixelShadows::kShadowMap:
-      if (options.resolution < 1 || options.resolution > kMaxResolution) {
-        throw std::invalid_argument("pixel_lit_weights: the shadow map's resolution must be 1 to " +
-                                    std::to_string(kMaxResolution) + ", not " +
-                                    std::to_string(options.resolution));
-      }
+      check_resolution(options.resolution);
       shadow_map_weights(scene, surfaces, drawn, options.resolution, out);
       break;
     case PixelShadows::kVolumes:
@@ -238,6 +255,10 @@ PixelLitWeights pixel_lit_weights(const ShadowedScene& shadowed, const PixelSurf
       break;
     case PixelShadows::kStencil:
       stencil_weights(scene, surfaces, drawn, out);
+      break;
+    case PixelShadows::kAngular:
+      check_resolution(options.resolution);
+      angular_weights(scene, surfaces, drawn, options.resolution, out);
       break;
   }
   return out;

@@ -23,6 +23,8 @@
 //               z-fail where the eye may be inside a volume: 1 where the stencil is 0 at
 //               the pixel, 0 elsewhere. GL rasterises the scene again, so at a silhouette
 //               the surface it sees can differ by a pixel from the one given here.
+//   angular     Thakur, Cheng and Miura's ridge-edge loops and discretised angular span
+//               table (angular_shadows.h), `resolution` rows: 1 or 0; closed objects.
 //
 // What a light takes into account is the exact generator's rule (light_scope.h) for the
 // sampled methods, and the database's for exact. Whatever the method, the weight is 0 for
@@ -42,16 +44,17 @@
 
 namespace shadowgen {
 
-enum class PixelShadows : unsigned char { kExact, kShadowMap, kVolumes, kStencil };
+enum class PixelShadows : unsigned char { kExact, kShadowMap, kVolumes, kStencil, kAngular };
 
-// "exact", "shadow-map", "volumes", "stencil".
+// "exact", "shadow-map", "volumes", "stencil", "angular".
 std::string_view pixel_shadows_name(PixelShadows method);
 // The method of that name; nullopt for any other.
 std::optional<PixelShadows> pixel_shadows_named(std::string_view name);
 
 struct PixelShadowOptions {
   PixelShadows method = PixelShadows::kExact;
-  int resolution = kDefaultResolution;  // shadow-map: texels per side, 1 to kMaxResolution
+  // shadow-map: texels per side; angular: rows of the span table; 1 to kMaxResolution.
+  int resolution = kDefaultResolution;
 };
 
 struct PixelLitWeights {

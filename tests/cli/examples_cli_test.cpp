@@ -423,16 +423,45 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
 
 // compare finishes on every example, its exact row first and without error, every sampled
 // row with an error no larger than a lit fraction can be wrong by.
+// With its first view, if it has one, the view methods' rows follow, each with a share from
+// 0 to 1.
 TEST_P(ExampleCli, CompareFinishesWithAnExactRowWithoutError) {
   const fs::path scene = kExamples / "scenes" / (GetParam() + ".json");
-  const Outcome outcome = run({"compare", scene.string(), "--methods", "rays:4,shadow-map:4:128",
-                               "--format", "csv", "--quiet"});
+  const nlohmann::json json = nlohmann::json::parse(contents(scene));
+  const nlohmann::json views = json.value("views", nlohmann::json::array());
+  std::vector<std::string> args{"compare",  scene.string(), "--methods", "rays:4,shadow-map:4:128",
+                                "--format", "csv",          "--quiet"};
+  if (!views.empty()) {
+    args.insert(args.end(), {"--view", views[0].at("id").get<std::string>(), "--width", "64",
+                             "--height", "48", "--view-methods", "volumes,shadow-map:512"});
+  }
+  const Outcome outcome = run(args);
   ASSERT_EQ(outcome.code, 0) << outcome.err;
   std::istringstream in(outcome.out);
   std::string line;
   std::getline(in, line);
   std::vector<std::vector<std::string>> rows;
-  while (std::getline(in, line)) rows.push_back(csv_fields(line));
+  while (std::getline(in, line) && !line.empty()) rows.push_back(csv_fields(line));
+  std::vector<std::vector<std::string>> view_rows;
+  if (std::getline(in, line)) {
+    EXPECT_EQ(line, "view_method,resolution,seconds,differing_share,pairs,pareto");
+    while (std::getline(in, line)) view_rows.push_back(csv_fields(line));
+  }
+  ASSERT_EQ(view_rows.size(), views.empty() ? 0u : 2u) << outcome.out;
+  for (const std::vector<std::string>& row : view_rows) {
+    ASSERT_EQ(row.size(), 6u) << outcome.out;
+    const double share = std::stod(row[3]);
+    const std::string method = row[1].empty() ? row[0] : row[0] + " " + row[1];
+    std::printf("[ figures  ] %s, view %s: %s differs on %.4g%% of %s pairs, %s s\n",
+                GetParam().c_str(), views[0].at("id").get<std::string>().c_str(), method.c_str(),
+                100.0 * share, row[4].c_str(), row[2].c_str());
+    EXPECT_GE(share, 0.0);
+    EXPECT_LE(share, 1.0);
+  }
+  if (!view_rows.empty()) {
+    EXPECT_EQ(view_rows[0][0], "volumes");
+    EXPECT_EQ(view_rows[1][0] + ":" + view_rows[1][1], "shadow-map:512");
+  }
   ASSERT_EQ(rows.size(), 3u) << outcome.out;
   EXPECT_EQ(rows[0][0], "exact");
   EXPECT_EQ(rows[0][4], "0");

@@ -1,7 +1,8 @@
 // End-to-end tests of the sampled methods (docs/scene-format.md, "Methods"): `generate` and
 // `report` take --method, the database and the JSON report name it, a sampled database
 // reads back and is refused by what draws lit polygons; `compare` measures every method
-// against the exact one on the scene, its exact row without error.
+// against the exact one on the scene, its exact row without error, and with --view the view
+// methods against exact's picture.
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,24 @@ const std::string kRoof = R"({
     {"id": "roof", "outer": [[2,3,1],[6,3,1],[6,7,1],[2,7,1]]}
   ],
   "lights": [{"id": "sun", "type": "directional", "direction": [0,0,-1]}]
+})";
+
+// A 2 × 2 × 2 box on a 20 × 20 ground under a sun, with a view.
+const std::string kBox = R"({
+  "format": "shadowgen-scene/1",
+  "polygons": [
+    {"id": "ground", "outer": [[-10,-10,0],[10,-10,0],[10,10,0],[-10,10,0]]},
+    {"id": "top", "outer": [[-1,-1,2],[1,-1,2],[1,1,2],[-1,1,2]]},
+    {"id": "south", "outer": [[-1,-1,0],[1,-1,0],[1,-1,2],[-1,-1,2]]},
+    {"id": "north", "outer": [[1,1,0],[-1,1,0],[-1,1,2],[1,1,2]]},
+    {"id": "west", "outer": [[-1,1,0],[-1,-1,0],[-1,-1,2],[-1,1,2]]},
+    {"id": "east", "outer": [[1,-1,0],[1,1,0],[1,1,2],[1,-1,2]]}
+  ],
+  "lights": [{"id": "sun", "type": "directional", "direction": [1, 0.6, -1.5]}],
+  "views": [
+    {"id": "main", "eye": [9, -11, 8], "target": [0, 0, 0.5], "fov_deg": 50},
+    {"id": "top", "eye": [0, 0, 30], "target": [0, 0, 0], "up": [0, 1, 0]}
+  ]
 })";
 
 class MethodCli : public CliFolderTest<> {
@@ -152,6 +171,72 @@ TEST_F(MethodCli, CompareMeasuresEveryMethodAgainstExact) {
   ASSERT_EQ(table.code, 0) << table.err;
   EXPECT_NE(table.out.find("over 2 (face, light) pairs"), std::string::npos) << table.out;
   EXPECT_NE(table.out.find("\nexact "), std::string::npos) << table.out;
+}
+
+TEST_F(MethodCli, CompareViewMeasuresTheViewMethodsAgainstExact) {
+  const fs::path scene = write("box.json", kBox);
+  const Outcome outcome =
+      run({"compare", scene.string(), "--methods", "rays:16", "--view", "main", "--width", "96",
+           "--height", "72", "--view-methods", "exact,shadow-map:256,volumes,stencil", "--format",
+           "csv", "--threads", "1"});
+  ASSERT_EQ(outcome.code, 0) << outcome.err;
+  std::istringstream in(outcome.out);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "method,samples,resolution,seconds,mean_error,max_error,worst_face,worst_light,pareto");
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(in, line) && !line.empty()) rows.push_back(csv_fields(line));
+  ASSERT_EQ(rows.size(), 2u);  // the per-face block as without --view
+  EXPECT_EQ(rows[0][0], "exact");
+  std::getline(in, line);
+  EXPECT_EQ(line, "view_method,resolution,seconds,differing_share,pairs,pareto");
+  std::vector<std::vector<std::string>> views;
+  while (std::getline(in, line)) views.push_back(csv_fields(line));
+  ASSERT_EQ(views.size(), 4u) << outcome.out;
+  EXPECT_EQ(views[0][0] + ":" + views[0][1], "exact:");
+  EXPECT_EQ(views[1][0] + ":" + views[1][1], "shadow-map:256");
+  EXPECT_EQ(views[2][0] + ":" + views[2][1], "volumes:");
+  EXPECT_EQ(views[3][0] + ":" + views[3][1], "stencil:");
+  EXPECT_EQ(views[0][3], "0");
+  EXPECT_EQ(views[0][5], "1");              // nothing agrees more often
+  EXPECT_LE(std::stod(views[1][3]), 0.02);  // a coarse shadow map, nearly
+  EXPECT_EQ(views[2][3], "0");              // shadow volumes: exactly, off boundaries
+  EXPECT_EQ(views[3][3], "0");
+  for (const std::vector<std::string>& row : views) {
+    ASSERT_EQ(row.size(), 6u);
+    EXPECT_GT(std::stoul(row[4]), 3000u) << row[0];  // most of the 96 × 72 pixels see something
+    EXPECT_EQ(row[4], views[0][4]);                  // the same pairs for every method
+  }
+
+  const Outcome table = run({"compare", scene.string(), "--methods", "rays:16", "--view", "top",
+                             "--width", "40", "--height", "30", "--view-methods", "volumes"});
+  ASSERT_EQ(table.code, 0) << table.err;
+  EXPECT_NE(table.out.find("\nview top, 40×30: share of (pixel, light) pairs off boundaries "
+                           "whose lit state differs from exact"),
+            std::string::npos)
+      << table.out;
+  EXPECT_NE(table.out.find("\nvolumes "), std::string::npos) << table.out;
+
+  const Outcome missing = run({"compare", scene.string(), "--view", "side"});
+  EXPECT_EQ(missing.code, 1) << missing.err;
+  EXPECT_NE(missing.err.find("has no view 'side' (its views: 'main', 'top')"), std::string::npos)
+      << missing.err;
+  EXPECT_TRUE(missing.out.empty());
+
+  for (const std::string bad : {"shadows", "volumes:64", "shadow-map:0", "shadow-map:x"}) {
+    const Outcome refused =
+        run({"compare", scene.string(), "--view", "main", "--view-methods", bad});
+    EXPECT_EQ(refused.code, 2) << bad << "\n" << refused.err;
+    EXPECT_NE(refused.err.find(
+                  "--view-methods " + bad +
+                  ": expected exact, volumes, stencil, shadow-map[:RESOLUTION] or angular[:ROWS]"),
+              std::string::npos)
+        << refused.err;
+  }
+  const Outcome without_view = run({"compare", scene.string(), "--width", "64"});
+  EXPECT_EQ(without_view.code, 2) << without_view.err;
+  EXPECT_EQ(files(), std::vector<std::string>{"box.json"});
 }
 
 }  // namespace

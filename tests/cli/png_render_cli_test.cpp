@@ -61,7 +61,7 @@ class PngRenderCli : public CliFolderTest<> {
 
 TEST_F(PngRenderCli, EachMethodWritesAValidPng) {
   std::vector<Png> pictures;
-  for (const std::string method : {"exact", "shadow-map", "volumes", "stencil"}) {
+  for (const std::string method : {"exact", "shadow-map", "volumes", "stencil", "angular"}) {
     const fs::path png = dir_ / (method + ".png");
     const Outcome out = render({"--png", png.string(), "--shadows", method});
     ASSERT_EQ(out.code, 0) << method << ": " << out.err;
@@ -76,7 +76,7 @@ TEST_F(PngRenderCli, EachMethodWritesAValidPng) {
   const fs::path plain = dir_ / "plain.png";
   ASSERT_EQ(render({"--png", plain.string()}).code, 0);
   EXPECT_EQ(contents(plain), contents(dir_ / "exact.png"));
-  for (const std::size_t other : {std::size_t{2}, std::size_t{3}}) {
+  for (const std::size_t other : {std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
     std::size_t differ = 0;
     for (std::size_t i = 0; i < pictures[0].rgb.size(); ++i) {
       differ += pictures[0].rgb[i] != pictures[other].rgb[i];
@@ -91,10 +91,10 @@ TEST_F(PngRenderCli, EachMethodWritesAValidPng) {
   ASSERT_EQ(both.code, 0) << both.err;
   EXPECT_TRUE(fs::exists(dir_ / "both.svg"));
   EXPECT_TRUE(read_png(dir_ / "both.png").ok);
-  EXPECT_EQ(
-      sorted_names(dir_, dir_ / "run"),
-      (std::vector<std::string>{"both.png", "both.svg", "courtyard.shadowed.json", "exact.png",
-                                "plain.png", "shadow-map.png", "stencil.png", "volumes.png"}));
+  EXPECT_EQ(sorted_names(dir_, dir_ / "run"),
+            (std::vector<std::string>{"angular.png", "both.png", "both.svg",
+                                      "courtyard.shadowed.json", "exact.png", "plain.png",
+                                      "shadow-map.png", "stencil.png", "volumes.png"}));
 }
 
 TEST_F(PngRenderCli, AFailedRunLeavesTheOldFile) {

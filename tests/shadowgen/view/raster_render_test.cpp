@@ -4,10 +4,8 @@
 // model (floating quads, one facing the sun and one turned away); the surfaces the
 // pixels see; the PNG read back with libpng.
 //
-// Agreement is measured on the lit state per light: exact and volumes give 0 or 1, a
-// shadow map a multiple of 1/9, lit from 1/2 up. Pixels within one pixel of a boundary
-// are left out: those whose 3×3 neighbourhood (clamped at the picture's edge) is not
-// uniform in the face seen or in exact's lit state for that light.
+// Agreement is measured on the lit state per light, pixels within one pixel of a boundary
+// left out, by shadowgen/view/view_comparison.h's rule.
 
 #include "shadowgen/view/raster_render.h"
 
@@ -26,8 +24,10 @@
 #include "shadowgen/view/pixel_surfaces.h"
 #include "shadowgen/view/png_writer.h"
 #include "shadowgen/view/render.h"
+#include "shadowgen/view/view_comparison.h"
 #include "tests/shadowgen/hand_scenes.h"
 #include "tests/shadowgen/view/cameras.h"
+#include "tests/shadowgen/view/test_cameras.h"
 
 namespace shadowgen {
 namespace {
@@ -76,61 +76,16 @@ const ShadowedScene& boxes() {
   return shadowed;
 }
 
-Camera perspective(const glm::dvec3& eye, const glm::dvec3& target, double fov = 50.0) {
-  Camera camera;
-  camera.eye = eye;
-  camera.target = target;
-  camera.fov_deg = fov;
-  return camera;
-}
+using test::perspective;
 
-struct Agreement {
-  std::size_t compared = 0;  // (pixel, light) pairs lit or not by exact, off boundaries
-  std::size_t disagreeing = 0;
-  std::size_t boundary = 0;           // pairs left out
-  std::size_t lit = 0, shadowed = 0;  // exact's, among those compared
+using Agreement = LitAgreement;
 
-  double share() const {
-    return compared ? static_cast<double>(disagreeing) / static_cast<double>(compared) : 0.0;
-  }
-};
-
-bool lit_state(double weight) { return weight >= 0.5; }
-
-// `method`'s lit states against exact's on the pixels seen from their front.
+// `method`'s lit states against exact's (shadowgen/view/view_comparison.h's rule).
 Agreement agreement(const ShadowedScene& shadowed, const PixelSurfaces& surfaces,
                     PixelShadows method, int resolution = 1024) {
   const PixelLitWeights exact = pixel_lit_weights(shadowed, surfaces, {PixelShadows::kExact, 0});
   const PixelLitWeights other = pixel_lit_weights(shadowed, surfaces, {method, resolution});
-  Agreement result;
-  const int w = surfaces.width, h = surfaces.height;
-  for (std::size_t l = 0; l < exact.lights; ++l) {
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        const PixelSurface& pixel = surfaces.pixels[i];
-        if (!pixel.seen() || !pixel.front) continue;
-        bool uniform = true;
-        for (int dy = -1; dy <= 1; ++dy) {
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = std::clamp(x + dx, 0, w - 1), ny = std::clamp(y + dy, 0, h - 1);
-            const std::size_t j = static_cast<std::size_t>(ny) * w + nx;
-            uniform = uniform && surfaces.pixels[j].face == pixel.face &&
-                      lit_state(exact.at(j, l)) == lit_state(exact.at(i, l));
-          }
-        }
-        if (!uniform) {
-          ++result.boundary;
-          continue;
-        }
-        ++result.compared;
-        const bool lit = lit_state(exact.at(i, l));
-        (lit ? result.lit : result.shadowed) += 1;
-        if (lit != lit_state(other.at(i, l))) ++result.disagreeing;
-      }
-    }
-  }
-  return result;
+  return lit_agreement(shadowed, surfaces, exact, other);
 }
 
 void Report(const char* what, const Agreement& a) {
@@ -200,6 +155,9 @@ TEST(PixelShadows, VolumesAndShadowMapsAgreeWithExactOnBoxes) {
   const Agreement stencil = agreement(shadowed, surfaces, PixelShadows::kStencil);
   Report("boxes, perspective, stencil", stencil);
   EXPECT_EQ(stencil.disagreeing, 0u);
+  const Agreement angular = agreement(shadowed, surfaces, PixelShadows::kAngular, 2048);
+  Report("boxes, perspective, angular 2048", angular);
+  EXPECT_EQ(angular.disagreeing, 0u);
   const Agreement map = agreement(shadowed, surfaces, PixelShadows::kShadowMap, 1024);
   Report("boxes, perspective, volumes", volumes);
   Report("boxes, perspective, shadow-map 1024", map);
