@@ -249,6 +249,25 @@ TEST(PixelShadows, OpenModelFloatingQuads) {
   EXPECT_LE(map.share(), 0.005);
 }
 
+TEST(PixelShadows, NonPlanarPolygonCastsItsTrianglesShadow) {
+  // A floating quad with one corner raised 1.5 out of the others' plane: read as two
+  // triangles (Bergeron: any polygon, planar or not, bounds a shadow volume of its own).
+  const ShadowedScene shadowed =
+      generated(scene_json(kGround + R"(,
+        {"id": "bent", "outer": [[-4,-3,3],[2,-3,3],[2,2,4.5],[-4,2,3]]})",
+                           R"({"id": "sun", "type": "directional", "direction": [0.4, 0.3, -1]},
+         {"id": "lamp", "type": "point", "position": [-1, 0, 8]})"));
+  ASSERT_EQ(shadowed.scene.faces.back().parts.size(), 2u);
+  const PixelSurfaces surfaces =
+      pixel_surfaces(shadowed.scene, perspective({4, -20, 16}, {0, 0, 0}), kWidth, kHeight);
+  for (const PixelShadows method : {PixelShadows::kVolumes, PixelShadows::kStencil}) {
+    const Agreement a = agreement(shadowed, surfaces, method);
+    Report((std::string("non-planar, ") + std::string(pixel_shadows_name(method))).c_str(), a);
+    EXPECT_GT(a.shadowed, 300u);
+    EXPECT_EQ(a.disagreeing, 0u);
+  }
+}
+
 TEST(RasterRender, ExactShadesAsTheSvgPictureDoes) {
   const ShadowedScene& shadowed = boxes();
   RasterOptions options;
