@@ -199,7 +199,17 @@ TEST_F(MethodCli, CompareViewMeasuresTheViewMethodsAgainstExact) {
   EXPECT_EQ(views[2][0] + ":" + views[2][1], "volumes:");
   EXPECT_EQ(views[3][0] + ":" + views[3][1], "stencil:");
   EXPECT_EQ(views[0][3], "0");
-  EXPECT_EQ(views[0][5], "1");              // nothing agrees more often
+  // Marked Pareto-optimal exactly where no other row is as fast and as close to exact and
+  // better in one (times vary from run to run: a method as accurate as exact may be faster).
+  for (const std::vector<std::string>& row : views) {
+    bool beaten = false;
+    for (const std::vector<std::string>& other : views) {
+      const double t = std::stod(row[2]), e = std::stod(row[3]);
+      const double ot = std::stod(other[2]), oe = std::stod(other[3]);
+      beaten = beaten || (&other != &row && ot <= t && oe <= e && (ot < t || oe < e));
+    }
+    EXPECT_EQ(row[5], beaten ? "0" : "1") << row[0];
+  }
   EXPECT_LE(std::stod(views[1][3]), 0.02);  // a coarse shadow map, nearly
   EXPECT_EQ(views[2][3], "0");              // shadow volumes: exactly, off boundaries
   EXPECT_EQ(views[3][3], "0");

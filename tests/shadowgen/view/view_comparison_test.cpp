@@ -138,12 +138,12 @@ TEST(ViewComparison, VolumesAndStencilAgreeWithExactAndShadowMapsNearly) {
   EXPECT_GT(exact.lit, 2000u);
   EXPECT_GT(exact.shadowed, 200u);
   EXPECT_EQ(exact.disagreeing, 0u);
-  EXPECT_TRUE(comparison.trials[0].pareto);  // nothing agrees more often
   EXPECT_LE(comparison.trials[1].agreement.share(), 0.05);
   EXPECT_LE(comparison.trials[2].agreement.share(), 0.005);
   EXPECT_EQ(comparison.trials[3].agreement.disagreeing, 0u);
   EXPECT_EQ(comparison.trials[4].agreement.disagreeing, 0u);
-  // Marked exactly when no other trial is as fast and as good, and better in one.
+  // Marked exactly when no other trial is as fast and as good, and better in one (times vary
+  // from run to run: volumes or stencil, as close to exact as exact itself, may be faster).
   for (const ViewTrial& t : comparison.trials) {
     bool beaten = false;
     for (const ViewTrial& o : comparison.trials) {
