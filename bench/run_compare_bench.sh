@@ -65,7 +65,8 @@ mesh_scene "$assimp/OBJ/spider.obj" y spider
 mesh_scene "$meshes/anchor.off" z anchor
 mesh_scene "$meshes/elk.off" z elk
 
-for scene in city cubes spider anchor elk; do
+# SCENES (default: all five) picks some of them.
+for scene in ${SCENES:-city cubes spider anchor elk}; do
   echo "### $scene"
   echo
   "$build/cli/shadowgen" compare "$work/$scene.json" --methods "$methods" --threads 1 \

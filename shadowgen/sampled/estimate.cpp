@@ -89,9 +89,10 @@ struct Estimator::Impl {
     return triangles;
   }
 
-  // Every face's part estimates, `lit(points, normals, out)` the lit fractions of a face's
-  // sample points on parts facing the light (called from several threads at once). Faces
-  // are independent: in parallel, the same numbers on any number of threads.
+  // Every face's part estimates, `lit(face, points, normals, out)` the lit fractions of a
+  // face's sample points on parts facing the light, `face` the triangles of those parts
+  // (called from several threads at once). Faces are independent: in parallel, the same
+  // numbers on any number of threads.
   template <typename Lit>
   PartLitAreas estimate(const std::vector<PartRole>& roles, Lit lit) const {
     PartLitAreas areas(scene.faces.size());
@@ -109,7 +110,13 @@ struct Estimator::Impl {
       thread_local std::vector<glm::dvec3> points, normals;
       thread_local std::vector<std::size_t> which;
       thread_local std::vector<double> decided, fraction;
+      thread_local std::vector<Triangle3> facing;
       face_samples(face, method.samples, f, samples);
+      facing.clear();
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        if (role(k) != PartRole::kFacing) continue;
+        facing.insert(facing.end(), face[k].triangles.begin(), face[k].triangles.end());
+      }
       points.clear();
       normals.clear();
       which.clear();
@@ -121,8 +128,8 @@ struct Estimator::Impl {
         which.push_back(i);
       }
       decided.resize(points.size());
-      lit(std::span<const glm::dvec3>(points), std::span<const glm::dvec3>(normals),
-          std::span<double>(decided));
+      lit(std::span<const Triangle3>(facing), std::span<const glm::dvec3>(points),
+          std::span<const glm::dvec3>(normals), std::span<double>(decided));
       fraction.assign(samples.size(), 0.0);
       for (std::size_t j = 0; j < which.size(); ++j) fraction[which[j]] = decided[j];
       areas[f] = part_lit_areas(face, samples, fraction);
@@ -143,10 +150,10 @@ PartLitAreas Estimator::lit_areas(const Light& light) const {
   const std::vector<PartRole> roles = part_roles(impl.all.polygons, impl.all.planes, light);
   if (impl.method.kind == MethodKind::kShadowMap) {
     const ShadowMap map(light, impl.occluders(roles), impl.method.resolution);
-    return impl.estimate(roles, [&](std::span<const glm::dvec3> points,
-                                    std::span<const glm::dvec3> normals, std::span<double> out) {
-      for (std::size_t i = 0; i < points.size(); ++i) out[i] = map.lit(points[i], normals[i]);
-    });
+    return impl.estimate(roles,
+                         [&](std::span<const Triangle3> face, std::span<const glm::dvec3> points,
+                             std::span<const glm::dvec3> normals,
+                             std::span<double> out) { map.lit_face(face, points, normals, out); });
   }
   const bool everything = std::all_of(roles.begin(), roles.end(), occludes);
   std::optional<RayCaster> own;
@@ -159,7 +166,7 @@ PartLitAreas Estimator::lit_areas(const Light& light) const {
   } else {
     caster = &own.emplace(impl.device, impl.occluders(roles));
   }
-  return impl.estimate(roles, [&](std::span<const glm::dvec3> points,
+  return impl.estimate(roles, [&](std::span<const Triangle3>, std::span<const glm::dvec3> points,
                                   std::span<const glm::dvec3> normals, std::span<double> out) {
     caster->lit(light, points, normals, out, impl.casting);
   });

@@ -4,15 +4,20 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace shadowgen::sampled {
 namespace {
 
 constexpr float kEmpty = -std::numeric_limits<float>::infinity();
+// The depth bias's floor, relative to the depth stored: a few times the float's rounding
+// (2^-24), so that a part's own texels pass however small the texels of a face's map.
+constexpr double kFloatSlack = 0x1p-21;
 
 struct Frame {
   glm::dvec3 right{1, 0, 0}, up{0, 1, 0}, forward{0, 0, 1};
@@ -30,31 +35,37 @@ Frame frame_along(const glm::dvec3& forward) {
   return f;
 }
 
+// An axis-aligned box of texel coordinates.
+struct TexelBox {
+  double u0 = INFINITY, u1 = -INFINITY, v0 = INFINITY, v1 = -INFINITY;
+  void add(const glm::dvec2& p) {
+    u0 = std::min(u0, p.x);
+    u1 = std::max(u1, p.x);
+    v0 = std::min(v0, p.y);
+    v1 = std::max(v1, p.y);
+  }
+};
+
 // One map of "nearness" per texel: a value that grows towards the light and is affine in
 // the image over a plane (−depth for an orthographic view, 1/z for a perspective one), so
 // that a triangle is drawn by evaluating one affine function; the largest is kept.
 class DepthMap {
  public:
-  explicit DepthMap(int n) : size_(n), nearness_(static_cast<std::size_t>(n) * n, kEmpty) {}
+  DepthMap(int nx, int ny)
+      : nx_(nx), ny_(ny), nearness_(static_cast<std::size_t>(nx) * ny, kEmpty) {}
 
-  int size() const { return size_; }
-  float at(int i, int j) const { return nearness_[static_cast<std::size_t>(j) * size_ + i]; }
+  int width() const { return nx_; }
+  int height() const { return ny_; }
+  float at(int i, int j) const { return nearness_[static_cast<std::size_t>(j) * nx_ + i]; }
 
   // Covers the texels whose centres (i + 0.5, j + 0.5) lie in the convex polygon `poly`
-  // (texel coordinates, edges included) with nearness a·x + b·y + c.
-  void draw(std::span<const glm::dvec2> poly, double a, double b, double c) {
-    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-    for (const glm::dvec2& p : poly) {
-      xmin = std::min(xmin, p.x);
-      xmax = std::max(xmax, p.x);
-      ymin = std::min(ymin, p.y);
-      ymax = std::max(ymax, p.y);
-    }
-    if (!(xmax >= 0.0 && xmin <= size_ && ymax >= 0.0 && ymin <= size_)) return;
+  // (texel coordinates, edges included, `box` its box) with nearness a·x + b·y + c.
+  void draw(std::span<const glm::dvec2> poly, const TexelBox& box, double a, double b, double c) {
+    if (!(box.u1 >= 0.0 && box.u0 <= nx_ && box.v1 >= 0.0 && box.v0 <= ny_)) return;
     // Clamped as doubles first: the images of triangles cut at a tiny near distance reach
     // far beyond the range of int.
-    const int j0 = std::max(0, to_texel(std::ceil(ymin - 0.5)));
-    const int j1 = std::min(size_ - 1, to_texel(std::floor(ymax - 0.5)));
+    const int j0 = std::max(0, to_texel(std::ceil(box.v0 - 0.5), ny_));
+    const int j1 = std::min(ny_ - 1, to_texel(std::floor(box.v1 - 0.5), ny_));
     for (int j = j0; j <= j1; ++j) {
       const double y = j + 0.5;
       double xl = INFINITY, xr = -INFINITY;
@@ -72,86 +83,87 @@ class DepthMap {
         }
       }
       if (!(xl <= xr)) continue;
-      const int i0 = std::max(0, to_texel(std::ceil(xl - 0.5)));
-      const int i1 = std::min(size_ - 1, to_texel(std::floor(xr - 0.5)));
+      const int i0 = std::max(0, to_texel(std::ceil(xl - 0.5), nx_));
+      const int i1 = std::min(nx_ - 1, to_texel(std::floor(xr - 0.5), nx_));
       for (int i = i0; i <= i1; ++i) {
-        float& slot = nearness_[static_cast<std::size_t>(j) * size_ + i];
+        float& slot = nearness_[static_cast<std::size_t>(j) * nx_ + i];
         slot = std::max(slot, static_cast<float>(a * (i + 0.5) + b * y + c));
       }
     }
   }
 
  private:
-  int to_texel(double v) const { return static_cast<int>(std::clamp(v, -1.0, double(size_))); }
+  static int to_texel(double v, int n) { return static_cast<int>(std::clamp(v, -1.0, double(n))); }
 
-  int size_;
+  int nx_, ny_;
   std::vector<float> nearness_;
 };
 
 }  // namespace
 
-// One view of the light: its frame, where it is measured from, and its map.
+// One view of the light: its frame, where depths are measured from, the map's place in the
+// image plane and its texels. Image coordinates are (x, y) in the frame (orthographic) or
+// (x/z, y/z) (perspective); texel coordinates u = (x − x0) / tx, v = (y − y0) / ty.
 struct ShadowMap::View {
   Frame frame;
-  glm::dvec3 origin{0.0};    // orthographic: the occluders' box's middle; perspective: the light
-  bool perspective = false;  // image (x/z, y/z) / spread in [−1, 1]², else (x, y) / texel
-  double texel = 1.0;        // orthographic: a texel's width
-  double spread = 1.0;       // perspective: the map's half-width in x/z (a margin past 1)
-  double half = 0.0;         // half the resolution
-  DepthMap map{1};
+  glm::dvec3 origin{0.0};  // orthographic: on the occluders' box's middle; perspective: the light
+  bool perspective = false;
+  double x0 = 0.0, y0 = 0.0;  // the image coordinates of the map's corner
+  double tx = 1.0, ty = 1.0;  // a texel's extent in image coordinates
+  DepthMap map{1, 1};
 
   glm::dvec2 image(const glm::dvec3& e) const {
-    if (perspective) {
-      return {(e.x / (e.z * spread) + 1.0) * half, (e.y / (e.z * spread) + 1.0) * half};
-    }
-    return {e.x / texel + half, e.y / texel + half};
+    const double x = perspective ? e.x / e.z : e.x, y = perspective ? e.y / e.z : e.y;
+    return {(x - x0) / tx, (y - y0) / ty};
   }
 
-  // A texel's width at depth z.
-  double texel_at(double z) const { return perspective ? z * spread / half : texel; }
+  // A texel's widths at depth z.
+  glm::dvec2 texel_at(double z) const {
+    return perspective ? glm::dvec2(z * tx, z * ty) : glm::dvec2(tx, ty);
+  }
 
-  // The triangle (in the frame, relative to the origin) drawn into the map. `near`: the
-  // perspective view's near distance.
-  void draw(const std::array<glm::dvec3, 3>& t, double near) {
+  // The triangle (in the frame, relative to the origin) drawn into the map; its box in
+  // texel coordinates, or nullopt where it covers nothing (seen edge-on, or wholly behind
+  // a perspective view's `near` distance).
+  std::optional<TexelBox> draw(const std::array<glm::dvec3, 3>& t, double near) {
     const glm::dvec3 nrm = glm::cross(t[1] - t[0], t[2] - t[0]);
     const double off = glm::dot(nrm, t[0]);  // the plane nrm · e = off
     std::array<glm::dvec2, 4> poly;
     std::size_t count = 0;
+    TexelBox box;
     if (!perspective) {
-      if (nrm.z == 0.0) return;  // edge-on: no area in the image
-      for (const glm::dvec3& e : t) poly[count++] = image(e);
-      // nearness −z = −(off − nrm.x·e.x − nrm.y·e.y) / nrm.z with e.x = (x − half)·texel.
-      map.draw(std::span(poly.data(), count), nrm.x * texel / nrm.z, nrm.y * texel / nrm.z,
-               -(off + (nrm.x + nrm.y) * half * texel) / nrm.z);
-      return;
+      if (nrm.z == 0.0) return std::nullopt;  // edge-on: no area in the image
+      for (const glm::dvec3& e : t) box.add(poly[count++] = image(e));
+      // nearness −z = −(off − nrm.x·x − nrm.y·y) / nrm.z with x = x0 + u·tx, y = y0 + v·ty.
+      map.draw(std::span(poly.data(), count), box, nrm.x * tx / nrm.z, nrm.y * ty / nrm.z,
+               (nrm.x * x0 + nrm.y * y0 - off) / nrm.z);
+      return box;
     }
-    if (off == 0.0) return;  // the light in the triangle's plane: seen edge-on
+    if (off == 0.0) return std::nullopt;  // the light in the triangle's plane: seen edge-on
     // Cut at z = near (Sutherland–Hodgman on one plane): a triangle gives at most four.
     for (std::size_t m = 0; m < 3; ++m) {
       const glm::dvec3& p = t[m];
       const glm::dvec3& q = t[(m + 1) % 3];
-      if (p.z >= near) poly[count++] = image(p);
+      if (p.z >= near) box.add(poly[count++] = image(p));
       if ((p.z >= near) != (q.z >= near))
-        poly[count++] = image(p + (q - p) * ((near - p.z) / (q.z - p.z)));
+        box.add(poly[count++] = image(p + (q - p) * ((near - p.z) / (q.z - p.z))));
     }
-    if (count < 3) return;
-    // 1/z = (nrm.x·x' + nrm.y·y' + nrm.z) / off on the plane, x' = (x / half − 1)·spread.
-    const double s = spread / (half * off);
-    map.draw(std::span(poly.data(), count), nrm.x * s, nrm.y * s,
-             (nrm.z - (nrm.x + nrm.y) * spread) / off);
+    if (count < 3) return std::nullopt;
+    // 1/z = (nrm.x·x' + nrm.y·y' + nrm.z) / off on the plane, x' = x0 + u·tx, y' = y0 + v·ty.
+    map.draw(std::span(poly.data(), count), box, nrm.x * tx / off, nrm.y * ty / off,
+             (nrm.z + nrm.x * x0 + nrm.y * y0) / off);
+    return box;
   }
 
   // The depth of the plane nrm · e = off on the ray (orthographic: the line) through the
   // centre of texel (i, j); +∞ where the ray misses it (beyond its horizon) or runs in it.
   double plane_depth(int i, int j, const glm::dvec3& nrm, double off) const {
-    const double x = i + 0.5, y = j + 0.5;
+    const double x = x0 + (i + 0.5) * tx, y = y0 + (j + 0.5) * ty;
     if (!perspective) {
       if (nrm.z == 0.0) return INFINITY;
-      return (off - nrm.x * (x - half) * texel - nrm.y * (y - half) * texel) / nrm.z;
+      return (off - nrm.x * x - nrm.y * y) / nrm.z;
     }
-    const double denominator =
-        (nrm.x * (x / half - 1.0) + nrm.y * (y / half - 1.0)) * spread + nrm.z;
-    const double depth = off / denominator;
+    const double depth = off / (nrm.x * x + nrm.y * y + nrm.z);
     return depth > 0.0 && std::isfinite(depth) ? depth : INFINITY;
   }
 
@@ -161,12 +173,67 @@ struct ShadowMap::View {
     if (nearness == kEmpty) return INFINITY;
     return perspective ? 1.0 / static_cast<double>(nearness) : -static_cast<double>(nearness);
   }
+
+  // The lit fraction of the point `e` (in the frame, relative to the origin) on a part of
+  // unit normal `nrm` (in the frame): 3×3 percentage-closer filtering, as shadow_map.h says.
+  double lit(const glm::dvec3& e, const glm::dvec3& nrm) const {
+    if (perspective && !(e.z > 0.0)) return 1.0;  // the sample at the light
+    const double off = glm::dot(nrm, e);          // the part's plane: nrm · e = off
+    const glm::dvec2 texel = texel_at(e.z);
+    // The part's plane is followed to a tap no farther than kPlaneReachTexels behind the
+    // sample (the slope clamp), all the way towards the light.
+    const double farthest = e.z + kPlaneReachTexels * std::max(texel.x, texel.y);
+    const glm::dvec2 at = image(e);
+    const int nx = map.width(), ny = map.height();
+    const int ib =
+        std::clamp(static_cast<int>(std::floor(std::clamp(at.x, -1.0, double(nx)))), 0, nx - 1);
+    const int jb =
+        std::clamp(static_cast<int>(std::floor(std::clamp(at.y, -1.0, double(ny)))), 0, ny - 1);
+    int passed = 0;
+    for (int dj = -1; dj <= 1; ++dj) {
+      for (int di = -1; di <= 1; ++di) {
+        const int i = std::clamp(ib + di, 0, nx - 1), j = std::clamp(jb + dj, 0, ny - 1);
+        const double stored = stored_depth(i, j);
+        if (stored == INFINITY) {
+          ++passed;
+          continue;
+        }
+        const double bias = std::max(kDepthBiasTexels * std::min(texel.x, texel.y),
+                                     kFloatSlack * std::fabs(stored));
+        if (std::min(plane_depth(i, j, nrm, off), farthest) <= stored + bias) ++passed;
+      }
+    }
+    return passed / 9.0;
+  }
 };
 
-ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, int resolution) {
+// Which occluders' images reach each tile of kTileTexels² texels of a whole view's map:
+// what a face's own map draws (ShadowMap::lit_face).
+struct ShadowMap::Tiles {
+  int tile = 1, columns = 0, rows = 0;
+  std::vector<std::vector<std::uint32_t>> cells;  // [row · columns + column]: occluder indices
+
+  void add(std::uint32_t occluder, const TexelBox& box, int nx, int ny) {
+    // A face's map reaches kMarginTexels past the face, so past the view's edge too.
+    const double m = kMarginTexels + 1.0;
+    if (!(box.u1 >= -m && box.u0 <= nx + m && box.v1 >= -m && box.v0 <= ny + m)) return;
+    const auto cell = [this](double t, int count) {
+      return std::clamp(static_cast<int>(std::floor(std::clamp(t, 0.0, 1e9) / tile)), 0, count - 1);
+    };
+    for (int r = cell(box.v0, rows); r <= cell(box.v1, rows); ++r) {
+      for (int c = cell(box.u0, columns); c <= cell(box.u1, columns); ++c) {
+        cells[static_cast<std::size_t>(r) * columns + c].push_back(occluder);
+      }
+    }
+  }
+};
+
+ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, int resolution)
+    : occluders_(occluders.begin(), occluders.end()), resolution_(resolution) {
   perspective_ = light.type == LightType::kPoint;
   view_count_ = perspective_ ? 6 : 1;
   views_ = std::make_unique<View[]>(static_cast<std::size_t>(view_count_));
+  tiles_ = std::make_unique<Tiles[]>(static_cast<std::size_t>(view_count_));
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (const Triangle3& t : occluders) {
     for (const glm::dvec3* v : {&t.a, &t.b, &t.c}) {
@@ -180,6 +247,7 @@ ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, i
   // cube map's seam included, is filtered with texels that hold what the light sees there
   // rather than the edge's own texels repeated.
   const double margin = 2.0 * kMarginTexels / resolution;
+  const double half = 0.5 * resolution;
   if (perspective_) {
     eye_ = light.position;
     static const std::array<glm::dvec3, 6> kAxes = {glm::dvec3(1, 0, 0), glm::dvec3(-1, 0, 0),
@@ -190,7 +258,10 @@ ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, i
       view.frame = frame_along(kAxes[k]);
       view.origin = eye_;
       view.perspective = true;
-      view.spread = 1.0 + margin;
+      // x/z and y/z in [−spread, spread], spread a margin past 1.
+      const double spread = 1.0 + margin;
+      view.tx = view.ty = spread / half;
+      view.x0 = view.y0 = -spread;
     }
   } else {
     View& view = views_[0];
@@ -205,60 +276,162 @@ ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, i
     }
     // A hair wider than the box, so that its outermost vertices fall inside the last texel,
     // and the margin.
-    if (extent > 0.0) view.texel = 2.0 * extent * (1.0 + 1e-9) * (1.0 + margin) / resolution;
+    if (extent > 0.0) view.tx = view.ty = 2.0 * extent * (1.0 + 1e-9) * (1.0 + margin) / resolution;
+    view.x0 = view.y0 = -half * view.tx;
   }
-  const double near = std::max(1e-9 * diagonal, DBL_MIN);
+  near_ = std::max(1e-9 * diagonal, DBL_MIN);
+  const int tile = std::max(1, resolution / 64);
   for (int k = 0; k < view_count_; ++k) {
     View& view = views_[k];
-    view.half = 0.5 * resolution;
-    view.map = DepthMap(resolution);
-    for (const Triangle3& t : occluders) {
-      view.draw({view.frame.to(t.a - view.origin), view.frame.to(t.b - view.origin),
-                 view.frame.to(t.c - view.origin)},
-                near);
+    view.map = DepthMap(resolution, resolution);
+    Tiles& tiles = tiles_[k];
+    tiles.tile = tile;
+    tiles.columns = tiles.rows = (resolution + tile - 1) / tile;
+    tiles.cells.resize(static_cast<std::size_t>(tiles.columns) * tiles.rows);
+    for (std::size_t o = 0; o < occluders.size(); ++o) {
+      const Triangle3& t = occluders[o];
+      const std::optional<TexelBox> box =
+          view.draw({view.frame.to(t.a - view.origin), view.frame.to(t.b - view.origin),
+                     view.frame.to(t.c - view.origin)},
+                    near_);
+      if (box) tiles.add(static_cast<std::uint32_t>(o), *box, resolution, resolution);
     }
   }
 }
 
 ShadowMap::~ShadowMap() = default;
 
+int ShadowMap::view_of(const glm::dvec3& point) const {
+  if (!perspective_) return 0;
+  // The cube face the point's direction from the light falls in: its largest component.
+  const glm::dvec3 d = point - eye_;
+  const glm::dvec3 a = glm::abs(d);
+  return a.x >= a.y && a.x >= a.z ? (d.x > 0 ? 0 : 1)
+         : a.y >= a.z             ? (d.y > 0 ? 2 : 3)
+                                  : (d.z > 0 ? 4 : 5);
+}
+
 double ShadowMap::lit(const glm::dvec3& point, const glm::dvec3& normal) const {
-  int k = 0;
-  if (perspective_) {
-    // The cube face the sample's direction from the light falls in: its largest component.
-    const glm::dvec3 d = point - eye_;
-    const glm::dvec3 a = glm::abs(d);
-    k = a.x >= a.y && a.x >= a.z ? (d.x > 0 ? 0 : 1)
-        : a.y >= a.z             ? (d.y > 0 ? 2 : 3)
-                                 : (d.z > 0 ? 4 : 5);
-  }
-  const View& view = views_[k];
-  const glm::dvec3 e = view.frame.to(point - view.origin);
-  if (view.perspective && !(e.z > 0.0)) return 1.0;  // the sample at the light
-  const glm::dvec3 nrm = view.frame.to(normal);
-  const double off = glm::dot(nrm, e);  // the part's plane: nrm · e = off
-  const double texel = view.texel_at(e.z);
-  // The part's plane is followed to a tap no farther than kPlaneReachTexels behind the
-  // sample (the slope clamp), all the way towards the light.
-  const double farthest = e.z + kPlaneReachTexels * texel, bias = kDepthBiasTexels * texel;
-  const glm::dvec2 at = view.image(e);
-  const int n = view.map.size();
-  const int ib =
-      std::clamp(static_cast<int>(std::floor(std::clamp(at.x, -1.0, double(n)))), 0, n - 1);
-  const int jb =
-      std::clamp(static_cast<int>(std::floor(std::clamp(at.y, -1.0, double(n)))), 0, n - 1);
-  int passed = 0;
-  for (int dj = -1; dj <= 1; ++dj) {
-    for (int di = -1; di <= 1; ++di) {
-      const int i = std::clamp(ib + di, 0, n - 1), j = std::clamp(jb + dj, 0, n - 1);
-      const double stored = view.stored_depth(i, j);
-      if (stored == INFINITY ||
-          std::min(view.plane_depth(i, j, nrm, off), farthest) <= stored + bias) {
-        ++passed;
-      }
+  const View& view = views_[view_of(point)];
+  return view.lit(view.frame.to(point - view.origin), view.frame.to(normal));
+}
+
+void ShadowMap::lit_face(std::span<const Triangle3> face, std::span<const glm::dvec3> points,
+                         std::span<const glm::dvec3> normals, std::span<double> out) const {
+  const auto whole_view = [&] {
+    for (std::size_t i = 0; i < points.size(); ++i) out[i] = lit(points[i], normals[i]);
+  };
+  if (face.empty() || points.empty()) return whole_view();
+  // The frame the face's map turns: the whole view's that holds the face, whose tiles tell
+  // which occluders reach it; for a face of a point light's that straddles a seam of the
+  // cube, a perspective view of its own towards the face's middle, every occluder drawn.
+  const int k = view_of(face.front().a);
+  bool one_view = true;
+  glm::dvec3 middle(0.0);
+  for (const Triangle3& t : face) {
+    for (const glm::dvec3* v : {&t.a, &t.b, &t.c}) {
+      one_view = one_view && view_of(*v) == k;
+      middle += *v;
     }
   }
-  return passed / 9.0;
+  const View& whole = views_[k];
+  const Frame base = one_view
+                         ? whole.frame
+                         : frame_along(middle / (3.0 * static_cast<double>(face.size())) - eye_);
+  const auto image_of = [&](const glm::dvec3& e) {
+    return whole.perspective ? glm::dvec2(e.x / e.z, e.y / e.z) : glm::dvec2(e.x, e.y);
+  };
+  // The face's image in that frame, and its principal axis: the map's texels are cut
+  // along and across it, so that a sliver lying askew is cut finely across, not along.
+  thread_local std::vector<glm::dvec2> image;
+  image.clear();
+  glm::dvec2 mean(0.0);
+  double zmin = INFINITY, zmax = -INFINITY;
+  for (const Triangle3& t : face) {
+    for (const glm::dvec3* v : {&t.a, &t.b, &t.c}) {
+      const glm::dvec3 e = base.to(*v - whole.origin);
+      // A face reaching nearer to a point light than the near distance keeps the cube.
+      if (whole.perspective && !(e.z >= near_)) return whole_view();
+      image.push_back(image_of(e));
+      mean += image.back();
+      zmin = std::min(zmin, e.z);
+      zmax = std::max(zmax, e.z);
+    }
+  }
+  mean /= static_cast<double>(image.size());
+  double sxx = 0.0, sxy = 0.0, syy = 0.0;
+  for (const glm::dvec2& p : image) {
+    const glm::dvec2 d = p - mean;
+    sxx += d.x * d.x;
+    sxy += d.x * d.y;
+    syy += d.y * d.y;
+  }
+  const double angle = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
+  const double cosine = std::cos(angle), sine = std::sin(angle);
+  const auto turned = [&](const glm::dvec2& p) {
+    return glm::dvec2(cosine * p.x + sine * p.y, -sine * p.x + cosine * p.y);
+  };
+  TexelBox box;  // in the turned frame's image coordinates
+  for (const glm::dvec2& p : image) box.add(turned(p));
+  // Its extent in the whole view's texels.
+  const double w = (box.u1 - box.u0) / whole.tx, h = (box.v1 - box.v0) / whole.ty;
+  const double least = face_texels(resolution_);
+  if (!(w > 0.0 && h > 0.0) || (one_view && w >= least && h >= least)) return whole_view();
+  // The face's own map: its image's box and kMarginTexels about it, each side at least
+  // `least` texels (those of the whole view where it has more); an orthographic one
+  // measures depth from the face's middle, where its floats are finest.
+  View local;
+  local.perspective = whole.perspective;
+  local.frame = base;
+  local.frame.right = cosine * base.right + sine * base.up;
+  local.frame.up = -sine * base.right + cosine * base.up;
+  local.origin = whole.origin;
+  if (!local.perspective) local.origin += base.forward * (0.5 * (zmin + zmax));
+  local.tx = whole.tx * (w / std::max(w, least));
+  local.ty = whole.ty * (h / std::max(h, least));
+  local.x0 = box.u0 - kMarginTexels * local.tx;
+  local.y0 = box.v0 - kMarginTexels * local.ty;
+  const int nx = static_cast<int>(std::ceil(std::max(w, least) + 2.0 * kMarginTexels));
+  const int ny = static_cast<int>(std::ceil(std::max(h, least) + 2.0 * kMarginTexels));
+  local.map = DepthMap(nx, ny);
+  const auto draw = [&](const Triangle3& t) {
+    local.draw({local.frame.to(t.a - local.origin), local.frame.to(t.b - local.origin),
+                local.frame.to(t.c - local.origin)},
+               near_);
+  };
+  if (!one_view) {
+    for (const Triangle3& t : occluders_) draw(t);
+  } else {
+    // What the whole view's tiles under the face's map hold (its corners turned back into
+    // the whole view's texels, and a texel more), each occluder once.
+    TexelBox under;
+    for (const double x : {local.x0, local.x0 + nx * local.tx}) {
+      for (const double y : {local.y0, local.y0 + ny * local.ty}) {
+        const glm::dvec2 p(cosine * x - sine * y, sine * x + cosine * y);
+        under.add({(p.x - whole.x0) / whole.tx, (p.y - whole.y0) / whole.ty});
+      }
+    }
+    const Tiles& tiles = tiles_[k];
+    const auto cell = [&tiles](double t, int count) {
+      return std::clamp(static_cast<int>(std::floor(std::clamp(t, 0.0, 1e9) / tiles.tile)), 0,
+                        count - 1);
+    };
+    thread_local std::vector<std::uint32_t> candidates;
+    candidates.clear();
+    for (int r = cell(under.v0 - 1.0, tiles.rows); r <= cell(under.v1 + 1.0, tiles.rows); ++r) {
+      for (int c = cell(under.u0 - 1.0, tiles.columns); c <= cell(under.u1 + 1.0, tiles.columns);
+           ++c) {
+        const auto& in = tiles.cells[static_cast<std::size_t>(r) * tiles.columns + c];
+        candidates.insert(candidates.end(), in.begin(), in.end());
+      }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (const std::uint32_t o : candidates) draw(occluders_[o]);
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    out[i] = local.lit(local.frame.to(points[i] - local.origin), local.frame.to(normals[i]));
+  }
 }
 
 }  // namespace shadowgen::sampled

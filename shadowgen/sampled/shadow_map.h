@@ -43,10 +43,25 @@
 // What it cannot see stays wrong until the texels are small enough: a part nearly edge-on
 // (narrower in the image than a texel) shadowed by a neighbour folded over it, or an
 // occluder nearer to it than the reach of its plane towards the light across one texel.
+//
+// Faces (lit_face, what the per-face estimate uses) are looked up at a resolution that
+// follows the face, as adaptive shadow maps refine where a map is too coarse (Fernando,
+// Fernandez, Bala and Greenberg 2001): a face whose image spans fewer than
+// face_texels(resolution) texels along either side of its box gets a map of its own, over
+// that box and kMarginTexels about it, with at least that many texels along each side (the
+// texels need not be square, so a sliver nearly edge-on to the light is cut finely across
+// and not along), holding every occluder whose image reaches it (found through a grid of
+// tiles over the whole map). Each face is so seen with a number of texels across that grows
+// with the resolution, however small or steep it is, and its error shrinks with the
+// resolution as a large face's does. A face of a point light's that straddles a seam of the
+// cube, or reaches nearer to the light than the near distance, keeps the whole map. The
+// depth bias never falls below a few times the float's rounding of the depth stored
+// (kFloatSlack in shadow_map.cpp), which a face's fine map can otherwise go beneath.
 
 #include <glm/vec3.hpp>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "shadowgen/model/scene.h"
 #include "shadowgen/sampled/part_triangles.h"
@@ -61,6 +76,12 @@ inline constexpr double kPlaneReachTexels = 1.0;
 // How far each map reaches past what it must show, in texels.
 inline constexpr double kMarginTexels = 2.0;
 
+// The texels a face's image gets at least along each side of its box in the map a face's
+// samples are looked up in (lit_face): 1/32 of the resolution, and at least 4.
+constexpr double face_texels(int resolution) {
+  return resolution / 32.0 > 4.0 ? resolution / 32.0 : 4.0;
+}
+
 class ShadowMap {
  public:
   // Renders the maps of `light` over `occluders`; resolution ≥ 1.
@@ -74,12 +95,28 @@ class ShadowMap {
   // threads at once.
   double lit(const glm::dvec3& point, const glm::dvec3& normal) const;
 
+  // The lit fractions of `points` (unit front normals `normals`) on one face whose parts
+  // facing the light are the triangles `face`, into `out` (as many as the points): looked
+  // up in a map of the face's own where the whole map shows it with fewer than
+  // face_texels(resolution) texels along a side, else as lit() does. Safe to call from
+  // several threads at once.
+  void lit_face(std::span<const Triangle3> face, std::span<const glm::dvec3> points,
+                std::span<const glm::dvec3> normals, std::span<double> out) const;
+
  private:
   struct View;
+  struct Tiles;
+  // The view (cube face of a point light's) that holds `point`.
+  int view_of(const glm::dvec3& point) const;
+
+  std::vector<Triangle3> occluders_;
+  int resolution_ = 1;
   std::unique_ptr<View[]> views_;
+  std::unique_ptr<Tiles[]> tiles_;
   int view_count_ = 0;
   bool perspective_ = false;
   glm::dvec3 eye_{0.0};
+  double near_ = 0.0;  // a perspective view's near distance
 };
 
 }  // namespace shadowgen::sampled
