@@ -1,6 +1,7 @@
 // `shadowgen compare`: the methods run on the user's own scene, each one's time and error
 // against the exact method, the Pareto-optimal ones marked.
 
+#include <algorithm>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -13,7 +14,9 @@
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/method_table.h"
+#include "shadowgen/pipeline/light_choice.h"
 #include "shadowgen/pipeline/method_comparison.h"
+#include "shadowgen/shadows/generate.h"
 #include "shadowgen/view/method_plot.h"
 #include "shadowgen/view/pixel_shadows.h"
 #include "shadowgen/view/view_comparison.h"
@@ -55,6 +58,7 @@ struct CompareArgs {
   int width = 400, height = 300;
   std::vector<std::string> view_methods{std::begin(kDefaultViewMethods),
                                         std::end(kDefaultViewMethods)};
+  std::size_t view_instants = 4;  // instants drawn of each sun path
   ReadingArgs reading;
 };
 
@@ -186,12 +190,35 @@ void run_compare(const CompareArgs& args) {
   }
   std::optional<ViewComparison> view_comparison;
   if (view != nullptr) {
+    // The comparison's exact run sums sun paths' instants into lit areas, which no view
+    // method can be measured against: a few instants of each path are generated again with
+    // their lit polygons, and drawn.
+    const auto path_instants = static_cast<std::size_t>(
+        std::count_if(scene.lights.begin(), scene.lights.end(),
+                      [](const Light& light) { return light.sun && light.sun->step_min > 0; }));
+    ShadowedScene with_instants;
+    std::vector<std::string> instants;
+    if (path_instants > 0) {
+      Scene drawn = scene;
+      instants = keep_spread_instants(drawn, args.view_instants);
+      GenerateOptions instant_options = options;
+      instant_options.keep_instant_polygons = true;
+      instant_options.sun_hours_regions = false;
+      try {
+        with_instants = generate_shadows(drawn, instant_options).shadowed;
+      } catch (const GenerationError& e) {
+        throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
+      }
+    }
     try {
-      view_comparison = compare_view_methods(exact, *view, args.width, args.height, view_methods);
+      view_comparison = compare_view_methods(path_instants > 0 ? with_instants : exact, *view,
+                                             args.width, args.height, view_methods);
     } catch (const std::invalid_argument& e) {
       // A view the scene describes badly (eye == target).
       throw InputError(args.input, "", "view '" + one_line(view->id) + "': " + e.what());
     }
+    view_comparison->path_instants = path_instants;
+    view_comparison->instants = std::move(instants);
   }
   const ViewComparison* shown = view_comparison ? &*view_comparison : nullptr;
   const std::string text =
@@ -252,6 +279,13 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
                       "(default: shadow-map:1024,shadow-map:2048,shadow-map:4096,volumes,"
                       "stencil,angular)")
       ->delimiter(',')
+      ->needs(view);
+  command
+      .add_option("--view-instants", args.view_instants,
+                  "with --view, for a scene with sun paths: how many instants of each path to "
+                  "draw and compare, spread evenly over it (default 4; 0: none); the per-face "
+                  "comparison takes every instant")
+      ->check(CLI::Range(0, 1 << 20))
       ->needs(view);
   add_output_option(command, args.output,
                     "file to write the table to (replaced whole); default: standard output");

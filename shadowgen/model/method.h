@@ -92,6 +92,10 @@ struct ViewComparison {
   int width = 0, height = 0;      // pixels
   double surfaces_seconds = 0.0;  // wall time of finding the surfaces seen, once for all
   std::vector<ViewTrial> trials;  // in the order given
+  // Where the scene has sun paths: how many instants they have, and the ids of those drawn
+  // (the others are not compared).
+  std::size_t path_instants = 0;
+  std::vector<std::string> instants;
 };
 
 // "shadow-map @ 1024", "volumes": a view trial's name in tables.

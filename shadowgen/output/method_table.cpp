@@ -41,6 +41,14 @@ std::string comparison_table(const MethodComparison& comparison, const Scene& sc
          ": share of (pixel, light) pairs off boundaries whose lit state differs from exact "
          "(surfaces seen found in " +
          number_text(view->surfaces_seconds, std::chars_format::general, 3) + " s)\n";
+  if (view->path_instants > 0) {
+    out += "instants of sun paths drawn: " + std::to_string(view->instants.size()) + " of " +
+           std::to_string(view->path_instants);
+    for (std::size_t k = 0; k < view->instants.size(); ++k) {
+      out += (k == 0 ? " (" : ", ") + one_line(view->instants[k]);
+    }
+    out += view->instants.empty() ? "\n" : ")\n";
+  }
   detail::TextTable views({false, true, true, true, false});
   views.add({"view method", "seconds", "differing share", "pairs", "pareto"});
   for (const ViewTrial& t : view->trials) {

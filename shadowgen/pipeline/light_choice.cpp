@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -55,6 +56,36 @@ void keep_marked(std::vector<T>& items, const std::vector<bool>& keep) {
 void keep_lights(Scene& scene, std::span<const std::string> ids, const std::string& file) {
   if (ids.empty()) return;
   keep_marked(scene.lights, chosen(scene, ids, file));
+}
+
+std::vector<std::string> keep_spread_instants(Scene& scene, std::size_t per_path) {
+  const auto in_path = [](const Light& light) { return light.sun && light.sun->step_min > 0; };
+  std::vector<bool> keep(scene.lights.size(), true);
+  std::vector<std::string> kept;
+  // A path's instants stand together, in time order (scene.h): one run per `sun` entry.
+  for (std::size_t first = 0; first < scene.lights.size();) {
+    if (!in_path(scene.lights[first])) {
+      ++first;
+      continue;
+    }
+    std::size_t end = first + 1;
+    while (end < scene.lights.size() && in_path(scene.lights[end]) &&
+           scene.lights[end].sun->sun_id == scene.lights[first].sun->sun_id) {
+      ++end;
+    }
+    const std::size_t n = end - first;
+    std::vector<bool> spread(n, n <= per_path);
+    for (std::size_t i = 0; n > per_path && i < per_path; ++i) {
+      spread[(2 * i + 1) * n / (2 * per_path)] = true;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      keep[first + k] = spread[k];
+      if (spread[k]) kept.push_back(scene.lights[first + k].id);
+    }
+    first = end;
+  }
+  keep_marked(scene.lights, keep);
+  return kept;
 }
 
 namespace {

@@ -20,6 +20,14 @@ namespace shadowgen {
 // every light.
 void keep_lights(Scene& scene, std::span<const std::string> ids, const std::string& file);
 
+// Keeps every light of `scene` but the instants of its sun paths, and of each path
+// `per_path` instants spread evenly over it, every one where it has no more: of its n
+// instants (those with the sun up, in time order), the ranks ⌊(i + ½)·n / per_path⌋ for
+// i < per_path. Returns the ids of the instants kept, in the scene's order. What a
+// comparison of view methods draws (`compare --view`): drawing every instant of a year
+// pixel by pixel costs thousands of pictures.
+std::vector<std::string> keep_spread_instants(Scene& scene, std::size_t per_path);
+
 // The same for a shadowed database: its lights and their lit polygons (std::invalid_argument
 // when `lit` is not shaped [face][light]), and the sun paths whose instants are all kept
 // (a path's id names them all). Naming only some instants of a path whose lit polygons

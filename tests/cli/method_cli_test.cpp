@@ -249,5 +249,50 @@ TEST_F(MethodCli, CompareViewMeasuresTheViewMethodsAgainstExact) {
   EXPECT_EQ(files(), std::vector<std::string>{"box.json"});
 }
 
+// A sun path's instants keep only lit areas in the comparison's exact run; --view draws
+// --view-instants of them, spread over the path, generated again with their lit polygons,
+// and names them. The box under a morning's sun, every 30 minutes from 09:00 to 12:00.
+TEST_F(MethodCli, CompareViewDrawsInstantsSpreadOverEachSunPath) {
+  std::string box = kBox;
+  const std::string sun =
+      R"("lights": [{"id": "sun", "type": "directional", "direction": [1, 0.6, -1.5]}],)";
+  box.replace(box.find(sun), sun.size(),
+              R"("site": {"latitude_deg": 48.85, "longitude_deg": 2.35, "utc_offset_h": 1},
+  "lights": [{"id": "day", "type": "sun", "from": "2026-03-21T09:00", "to": "2026-03-21T12:00",
+              "step_min": 30}],)");
+  const fs::path scene = write("box_day.json", box);
+  const Outcome table = run({"compare", scene.string(), "--methods", "rays:16", "--view", "main",
+                             "--width", "96", "--height", "72", "--view-methods", "exact,volumes",
+                             "--view-instants", "2", "--threads", "1"});
+  ASSERT_EQ(table.code, 0) << table.err;
+  // 7 instants; of 2 spread evenly, ranks ⌊7/4⌋ = 1 and ⌊21/4⌋ = 5.
+  EXPECT_NE(table.out.find("instants of sun paths drawn: 2 of 7 (day@2026-03-21T09:30, "
+                           "day@2026-03-21T11:30)\n"),
+            std::string::npos)
+      << table.out;
+  const Outcome csv = run({"compare", scene.string(), "--methods", "rays:16", "--view", "main",
+                           "--width", "96", "--height", "72", "--view-methods", "exact,volumes",
+                           "--view-instants", "2", "--threads", "1", "--format", "csv"});
+  ASSERT_EQ(csv.code, 0) << csv.err;
+  const std::string tail = csv.out.substr(csv.out.find("\nview_method,"));
+  std::istringstream in(tail);
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);
+  std::vector<std::vector<std::string>> views;
+  while (std::getline(in, line)) views.push_back(csv_fields(line));
+  ASSERT_EQ(views.size(), 2u) << csv.out;
+  // Two instants' pairs are compared (no longer none), and Bergeron's volumes agree on all.
+  EXPECT_GT(std::stoi(views[0][4]), 2000) << csv.out;
+  EXPECT_EQ(views[1][4], views[0][4]);
+  EXPECT_EQ(views[1][3], "0");
+  // With none drawn, no pair is compared.
+  const Outcome none =
+      run({"compare", scene.string(), "--methods", "rays:16", "--view", "main", "--width", "96",
+           "--height", "72", "--view-methods", "volumes", "--view-instants", "0"});
+  ASSERT_EQ(none.code, 0) << none.err;
+  EXPECT_NE(none.out.find("instants of sun paths drawn: 0 of 7\n"), std::string::npos) << none.out;
+}
+
 }  // namespace
 }  // namespace shadowgen::test

@@ -57,6 +57,37 @@ TEST(KeepLights, ASunPathsIdNamesAllItsInstants) {
   EXPECT_EQ(light_ids(one), (std::vector<std::string>{"down", "day@2026-03-21T11:00"}));
 }
 
+// A comparison of view methods draws a few instants of each sun path, spread evenly
+// (ranks ⌊(i + ½)·n / k⌋), every light that is no path's instant, and all of a path no
+// longer than k.
+TEST(KeepSpreadInstants, KeepsEvenlySpreadInstantsOfEachPathAndEveryOtherLight) {
+  const Scene scene = parse_scene(R"({"format": "shadowgen-scene/1", "polygons": [],
+                      "site": {"latitude_deg": 51.4779, "longitude_deg": 0, "utc_offset_h": 0},
+                      "lights": [
+                        {"id": "day", "type": "sun", "from": "2026-03-21T08:00",
+                         "to": "2026-03-21T16:00", "step_min": 60},
+                        {"id": "noon", "type": "sun", "time": "2026-03-21T12:00"},
+                        {"id": "down", "type": "directional", "direction": [0, 0, -1]},
+                        {"id": "short", "type": "sun", "from": "2026-06-21T11:00",
+                         "to": "2026-06-21T12:00", "step_min": 30}]})",
+                                  "suns.json", {})
+                          .scene;
+  Scene spread = scene;
+  // day: 9 instants, 08:00 to 16:00; of 3, ranks ⌊9/6⌋ = 1, ⌊27/6⌋ = 4, ⌊45/6⌋ = 7.
+  const std::vector<std::string> kept = keep_spread_instants(spread, 3);
+  const std::vector<std::string> expected = {"day@2026-03-21T09:00",   "day@2026-03-21T12:00",
+                                             "day@2026-03-21T15:00",   "short@2026-06-21T11:00",
+                                             "short@2026-06-21T11:30", "short@2026-06-21T12:00"};
+  EXPECT_EQ(kept, expected);
+  EXPECT_EQ(light_ids(spread), (std::vector<std::string>{
+                                   "day@2026-03-21T09:00", "day@2026-03-21T12:00",
+                                   "day@2026-03-21T15:00", "noon", "down", "short@2026-06-21T11:00",
+                                   "short@2026-06-21T11:30", "short@2026-06-21T12:00"}));
+  Scene none = scene;
+  EXPECT_TRUE(keep_spread_instants(none, 0).empty());
+  EXPECT_EQ(light_ids(none), (std::vector<std::string>{"noon", "down"}));
+}
+
 // Lights are generated independently: one light alone gives, bit for bit, what it gives
 // beside the others, and dropping the others from a database gives the same database.
 TEST(KeepLights, OneLightAloneIsThatLightOfTheWholeRun) {
