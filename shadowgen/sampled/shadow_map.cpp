@@ -54,6 +54,13 @@ class DepthMap {
   DepthMap(int nx, int ny)
       : nx_(nx), ny_(ny), nearness_(static_cast<std::size_t>(nx) * ny, kEmpty) {}
 
+  // Empties it at nx × ny texels, in the storage it has where that is enough.
+  void reset(int nx, int ny) {
+    nx_ = nx;
+    ny_ = ny;
+    nearness_.assign(static_cast<std::size_t>(nx) * ny, kEmpty);
+  }
+
   int width() const { return nx_; }
   int height() const { return ny_; }
   float at(int i, int j) const { return nearness_[static_cast<std::size_t>(j) * nx_ + i]; }
@@ -176,7 +183,9 @@ struct ShadowMap::View {
 
   // The lit fraction of the point `e` (in the frame, relative to the origin) on a part of
   // unit normal `nrm` (in the frame): 3×3 percentage-closer filtering, as shadow_map.h says.
-  double lit(const glm::dvec3& e, const glm::dvec3& nrm) const {
+  // `own`, where given, is cleared unless every tap shows the part's own plane (the depth
+  // stored there within the bias of the plane's), which lights the point for certain.
+  double lit(const glm::dvec3& e, const glm::dvec3& nrm, bool* own = nullptr) const {
     if (perspective && !(e.z > 0.0)) return 1.0;  // the sample at the light
     const double off = glm::dot(nrm, e);          // the part's plane: nrm · e = off
     const glm::dvec2 texel = texel_at(e.z);
@@ -195,19 +204,23 @@ struct ShadowMap::View {
         const int i = std::clamp(ib + di, 0, nx - 1), j = std::clamp(jb + dj, 0, ny - 1);
         const double stored = stored_depth(i, j);
         if (stored == INFINITY) {
+          if (own != nullptr) *own = false;
           ++passed;
           continue;
         }
         const double bias = std::max(kDepthBiasTexels * std::min(texel.x, texel.y),
                                      kFloatSlack * std::fabs(stored));
-        if (std::min(plane_depth(i, j, nrm, off), farthest) <= stored + bias) ++passed;
+        const double plane = plane_depth(i, j, nrm, off);
+        if (own != nullptr && !(std::fabs(plane - stored) <= bias)) *own = false;
+        if (std::min(plane, farthest) <= stored + bias) ++passed;
       }
     }
     return passed / 9.0;
   }
 };
 
-// Which occluders' images reach each tile of kTileTexels² texels of a whole view's map:
+// Which occluders' images reach each tile of a whole view's map (resolution / 256 texels a
+// side, at least 1):
 // what a face's own map draws (ShadowMap::lit_face).
 struct ShadowMap::Tiles {
   int tile = 1, columns = 0, rows = 0;
@@ -280,7 +293,26 @@ ShadowMap::ShadowMap(const Light& light, std::span<const Triangle3> occluders, i
     view.x0 = view.y0 = -half * view.tx;
   }
   near_ = std::max(1e-9 * diagonal, DBL_MIN);
-  const int tile = std::max(1, resolution / 64);
+  if (perspective_) {
+    // Each occluder's bounding cone from the light, for the maps of faces across the cube's
+    // seams: about the direction of its vertices' mean, through its bounding sphere
+    // (every way where the sphere holds the light).
+    cones_.reserve(occluders.size());
+    for (const Triangle3& t : occluders) {
+      const glm::dvec3 middle = (t.a + t.b + t.c) / 3.0;
+      const double radius = std::max(
+          {glm::length(t.a - middle), glm::length(t.b - middle), glm::length(t.c - middle)});
+      const double distance = glm::length(middle - eye_);
+      Cone cone;
+      if (distance > radius * (1.0 + 1e-9)) {
+        cone.axis = (middle - eye_) / distance;
+        cone.sin_alpha = radius * (1.0 + 1e-9) / distance;
+        cone.cos_alpha = std::sqrt(1.0 - cone.sin_alpha * cone.sin_alpha);
+      }
+      cones_.push_back(cone);
+    }
+  }
+  const int tile = std::max(1, resolution / 256);
   for (int k = 0; k < view_count_; ++k) {
     View& view = views_[k];
     view.map = DepthMap(resolution, resolution);
@@ -312,8 +344,12 @@ int ShadowMap::view_of(const glm::dvec3& point) const {
 }
 
 double ShadowMap::lit(const glm::dvec3& point, const glm::dvec3& normal) const {
+  return whole_lit(point, normal, nullptr);
+}
+
+double ShadowMap::whole_lit(const glm::dvec3& point, const glm::dvec3& normal, bool* own) const {
   const View& view = views_[view_of(point)];
-  return view.lit(view.frame.to(point - view.origin), view.frame.to(normal));
+  return view.lit(view.frame.to(point - view.origin), view.frame.to(normal), own);
 }
 
 void ShadowMap::lit_face(std::span<const Triangle3> face, std::span<const glm::dvec3> points,
@@ -377,10 +413,16 @@ void ShadowMap::lit_face(std::span<const Triangle3> face, std::span<const glm::d
   const double w = (box.u1 - box.u0) / whole.tx, h = (box.v1 - box.v0) / whole.ty;
   const double least = face_texels(resolution_);
   if (!(w > 0.0 && h > 0.0) || (one_view && w >= least && h >= least)) return whole_view();
+  // Where every tap of every point shows the face's own plane, the whole map has seen the
+  // face lit throughout: a map of its own would find the same.
+  bool own = true;
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = whole_lit(points[i], normals[i], &own);
+  if (own) return;
   // The face's own map: its image's box and kMarginTexels about it, each side at least
   // `least` texels (those of the whole view where it has more); an orthographic one
   // measures depth from the face's middle, where its floats are finest.
-  View local;
+  // One per thread, its map's storage kept from face to face.
+  thread_local View local;
   local.perspective = whole.perspective;
   local.frame = base;
   local.frame.right = cosine * base.right + sine * base.up;
@@ -393,17 +435,45 @@ void ShadowMap::lit_face(std::span<const Triangle3> face, std::span<const glm::d
   local.y0 = box.v0 - kMarginTexels * local.ty;
   const int nx = static_cast<int>(std::ceil(std::max(w, least) + 2.0 * kMarginTexels));
   const int ny = static_cast<int>(std::ceil(std::max(h, least) + 2.0 * kMarginTexels));
-  local.map = DepthMap(nx, ny);
+  local.map.reset(nx, ny);
+  // An occluder wholly farther from the light than the face's farthest point by more than
+  // the reach of its plane (lit()'s clamp) makes every tap it covers pass, as an empty texel
+  // does: it is not drawn, and the ground far behind a small face costs nothing.
+  const double reach = kPlaneReachTexels * std::max(local.tx, local.ty);
+  const double beyond = local.perspective ? zmax * (1.0 + reach) : 0.5 * (zmax - zmin) + reach;
   const auto draw = [&](const Triangle3& t) {
-    local.draw({local.frame.to(t.a - local.origin), local.frame.to(t.b - local.origin),
-                local.frame.to(t.c - local.origin)},
-               near_);
+    const glm::dvec3 a = t.a - local.origin, b = t.b - local.origin, c = t.c - local.origin;
+    const glm::dvec3& forward = local.frame.forward;
+    if (std::min({glm::dot(a, forward), glm::dot(b, forward), glm::dot(c, forward)}) > beyond) {
+      return;
+    }
+    local.draw({local.frame.to(a), local.frame.to(b), local.frame.to(c)}, near_);
   };
   if (!one_view) {
-    for (const Triangle3& t : occluders_) draw(t);
+    // Those whose bounding cones from the light meet the cone about the face's map: the
+    // angle between their axes at most the sum of the half-angles, cos β ≥ cos(θ + α).
+    const glm::dvec3& axis = local.frame.forward;
+    double cos_theta = 1.0;
+    for (const double x : {local.x0, local.x0 + nx * local.tx}) {
+      for (const double y : {local.y0, local.y0 + ny * local.ty}) {
+        const glm::dvec3 corner = x * local.frame.right + y * local.frame.up + axis;
+        cos_theta = std::min(cos_theta, glm::dot(axis, corner) / glm::length(corner));
+      }
+    }
+    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+    for (std::size_t o = 0; o < occluders_.size(); ++o) {
+      const Cone& cone = cones_[o];
+      // θ < π/2 (the map's corners lie in front of the light) and α ≤ π/2, so θ + α < π.
+      if (cone.sin_alpha < 0.0 || glm::dot(cone.axis, axis) >= cos_theta * cone.cos_alpha -
+                                                                   sin_theta * cone.sin_alpha -
+                                                                   1e-12) {
+        draw(occluders_[o]);
+      }
+    }
   } else {
     // What the whole view's tiles under the face's map hold (its corners turned back into
-    // the whole view's texels, and a texel more), each occluder once.
+    // the whole view's texels, and a texel more), each occluder once: a stamp per occluder,
+    // the call's number where this call has drawn it (numbers only grow on a thread).
     TexelBox under;
     for (const double x : {local.x0, local.x0 + nx * local.tx}) {
       for (const double y : {local.y0, local.y0 + ny * local.ty}) {
@@ -416,18 +486,20 @@ void ShadowMap::lit_face(std::span<const Triangle3> face, std::span<const glm::d
       return std::clamp(static_cast<int>(std::floor(std::clamp(t, 0.0, 1e9) / tiles.tile)), 0,
                         count - 1);
     };
-    thread_local std::vector<std::uint32_t> candidates;
-    candidates.clear();
+    thread_local std::vector<std::uint64_t> stamps;
+    thread_local std::uint64_t call = 0;
+    ++call;
+    if (stamps.size() < occluders_.size()) stamps.resize(occluders_.size(), 0);
     for (int r = cell(under.v0 - 1.0, tiles.rows); r <= cell(under.v1 + 1.0, tiles.rows); ++r) {
       for (int c = cell(under.u0 - 1.0, tiles.columns); c <= cell(under.u1 + 1.0, tiles.columns);
            ++c) {
-        const auto& in = tiles.cells[static_cast<std::size_t>(r) * tiles.columns + c];
-        candidates.insert(candidates.end(), in.begin(), in.end());
+        for (const std::uint32_t o : tiles.cells[static_cast<std::size_t>(r) * tiles.columns + c]) {
+          if (stamps[o] == call) continue;
+          stamps[o] = call;
+          draw(occluders_[o]);
+        }
       }
     }
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    for (const std::uint32_t o : candidates) draw(occluders_[o]);
   }
   for (std::size_t i = 0; i < points.size(); ++i) {
     out[i] = local.lit(local.frame.to(points[i] - local.origin), local.frame.to(normals[i]));

@@ -46,17 +46,22 @@
 //
 // Faces (lit_face, what the per-face estimate uses) are looked up at a resolution that
 // follows the face, as adaptive shadow maps refine where a map is too coarse (Fernando,
-// Fernandez, Bala and Greenberg 2001): a face whose image spans fewer than
-// face_texels(resolution) texels along either side of its box gets a map of its own, over
-// that box and kMarginTexels about it, with at least that many texels along each side (the
-// texels need not be square, so a sliver nearly edge-on to the light is cut finely across
-// and not along), holding every occluder whose image reaches it (found through a grid of
-// tiles over the whole map). Each face is so seen with a number of texels across that grows
-// with the resolution, however small or steep it is, and its error shrinks with the
-// resolution as a large face's does. A face of a point light's that straddles a seam of the
-// cube, or reaches nearer to the light than the near distance, keeps the whole map. The
-// depth bias never falls below a few times the float's rounding of the depth stored
-// (kFloatSlack in shadow_map.cpp), which a face's fine map can otherwise go beneath.
+// Fernandez, Bala and Greenberg 2001). A face's image is boxed along and across its
+// principal axis; where the box spans fewer than face_texels(resolution) texels of the
+// whole map along a side, and the whole map does not show the face's own plane at every
+// tap of every sample point (which lights the face throughout, for certain), the face gets
+// a map of its own over that box and kMarginTexels about it, with at least that many
+// texels along each side (texels need not be square: a sliver nearly edge-on to the light
+// is cut finely across, not along). It holds every occluder whose image reaches it, found
+// through a grid of tiles over the whole map (for a point light's face that straddles a
+// seam of the cube, its own view towards the face, every occluder whose bounding cone from
+// the light meets the map's), but those wholly farther from the light than the face by
+// more than the reach of its plane, which could only make taps pass. Each face is so seen
+// with a number of texels across that grows with the resolution, however small or steep
+// it is, and its error shrinks with the resolution as a large face's does. A face reaching
+// nearer to a point light than the near distance keeps the whole map. The depth bias never
+// falls below a few times the float's rounding of the depth stored (kFloatSlack in
+// shadow_map.cpp), which a face's fine map can otherwise go beneath.
 
 #include <glm/vec3.hpp>
 #include <memory>
@@ -77,9 +82,9 @@ inline constexpr double kPlaneReachTexels = 1.0;
 inline constexpr double kMarginTexels = 2.0;
 
 // The texels a face's image gets at least along each side of its box in the map a face's
-// samples are looked up in (lit_face): 1/32 of the resolution, and at least 4.
+// samples are looked up in (lit_face): 1/64 of the resolution, and at least 4.
 constexpr double face_texels(int resolution) {
-  return resolution / 32.0 > 4.0 ? resolution / 32.0 : 4.0;
+  return resolution / 64.0 > 4.0 ? resolution / 64.0 : 4.0;
 }
 
 class ShadowMap {
@@ -108,8 +113,17 @@ class ShadowMap {
   struct Tiles;
   // The view (cube face of a point light's) that holds `point`.
   int view_of(const glm::dvec3& point) const;
+  // lit() in that view; `own` as View::lit sets it (shadow_map.cpp).
+  double whole_lit(const glm::dvec3& point, const glm::dvec3& normal, bool* own) const;
 
   std::vector<Triangle3> occluders_;
+  // A point light's: per occluder, the cone from the light that holds it (sin_alpha < 0:
+  // every way).
+  struct Cone {
+    glm::dvec3 axis{0.0};
+    double cos_alpha = -1.0, sin_alpha = -1.0;
+  };
+  std::vector<Cone> cones_;
   int resolution_ = 1;
   std::unique_ptr<View[]> views_;
   std::unique_ptr<Tiles[]> tiles_;
