@@ -226,8 +226,9 @@ std::string_view pixel_shadows_name(PixelShadows method) {
 }
 
 std::optional<PixelShadows> pixel_shadows_named(std::string_view name) {
-  for (const PixelShadows method : {PixelShadows::kExact, PixelShadows::kShadowMap,
-                                    PixelShadows::kVolumes, PixelShadows::kStencil}) {
+  for (const PixelShadows method :
+       {PixelShadows::kExact, PixelShadows::kShadowMap, PixelShadows::kVolumes,
+        PixelShadows::kStencil, PixelShadows::kAngular}) {
     if (pixel_shadows_name(method) == name) return method;
   }
   return std::nullopt;

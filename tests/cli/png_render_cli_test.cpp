@@ -91,8 +91,14 @@ TEST_F(PngRenderCli, EachMethodWritesAValidPng) {
   ASSERT_EQ(both.code, 0) << both.err;
   EXPECT_TRUE(fs::exists(dir_ / "both.svg"));
   EXPECT_TRUE(read_png(dir_ / "both.png").ok);
+  // --resolution sets the angular span table's rows, and they show.
+  const fs::path coarse = dir_ / "coarse.png";
+  const Outcome rows =
+      render({"--png", coarse.string(), "--shadows", "angular", "--resolution", "8"});
+  ASSERT_EQ(rows.code, 0) << rows.err;
+  EXPECT_NE(contents(coarse), contents(dir_ / "angular.png"));
   EXPECT_EQ(sorted_names(dir_, dir_ / "run"),
-            (std::vector<std::string>{"angular.png", "both.png", "both.svg",
+            (std::vector<std::string>{"angular.png", "both.png", "both.svg", "coarse.png",
                                       "courtyard.shadowed.json", "exact.png", "plain.png",
                                       "shadow-map.png", "stencil.png", "volumes.png"}));
 }

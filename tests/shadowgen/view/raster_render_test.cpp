@@ -333,8 +333,9 @@ TEST(PngWriter, ReadsBackPixelForPixel) {
 }
 
 TEST(PixelShadows, MethodNames) {
-  for (const PixelShadows method : {PixelShadows::kExact, PixelShadows::kShadowMap,
-                                    PixelShadows::kVolumes, PixelShadows::kStencil}) {
+  for (const PixelShadows method :
+       {PixelShadows::kExact, PixelShadows::kShadowMap, PixelShadows::kVolumes,
+        PixelShadows::kStencil, PixelShadows::kAngular}) {
     EXPECT_EQ(pixel_shadows_named(pixel_shadows_name(method)), method);
   }
   EXPECT_FALSE(pixel_shadows_named("rays"));
