@@ -112,17 +112,17 @@ Method parse_method(const std::string& text) {
   return method;
 }
 
-// A view method of --view-methods: exact, volumes, stencil, shadow-map[:RESOLUTION] or
-// angular[:ROWS].
+// A view method of --view-methods: exact, volumes, stencil, stencil-silhouettes,
+// shadow-map[:RESOLUTION] or angular[:ROWS].
 // Throws UsageError.
 PixelShadowOptions parse_view_method(const std::string& text) {
   const std::size_t colon = text.find(':');
   const std::string name = text.substr(0, colon);
   PixelShadowOptions options;
   // The methods --view-methods takes, by name.
-  constexpr PixelShadows kTaken[] = {PixelShadows::kExact, PixelShadows::kShadowMap,
-                                     PixelShadows::kVolumes, PixelShadows::kStencil,
-                                     PixelShadows::kAngular};
+  constexpr PixelShadows kTaken[] = {
+      PixelShadows::kExact,   PixelShadows::kShadowMap,          PixelShadows::kVolumes,
+      PixelShadows::kStencil, PixelShadows::kStencilSilhouettes, PixelShadows::kAngular};
   bool known = false;
   for (const PixelShadows method : kTaken) {
     if (pixel_shadows_name(method) == name) {
@@ -136,8 +136,8 @@ PixelShadowOptions parse_view_method(const std::string& text) {
       (colon != std::string::npos && options.method != PixelShadows::kShadowMap &&
        options.method != PixelShadows::kAngular)) {
     throw UsageError("--view-methods " + text +
-                     ": expected exact, volumes, stencil, shadow-map[:RESOLUTION] or "
-                     "angular[:ROWS], resolution from 1 to " +
+                     ": expected exact, volumes, stencil, stencil-silhouettes, "
+                     "shadow-map[:RESOLUTION] or angular[:ROWS], resolution from 1 to " +
                      std::to_string(kMaxResolution));
   }
   options.resolution = *resolution;
@@ -275,9 +275,10 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
                   "with --view: the view methods to measure, comma-separated: exact, "
                   "shadow-map[:RESOLUTION] (texels a side of each depth map, default " +
                       std::to_string(kDefaultResolution) +
-                      "), volumes, stencil, angular[:ROWS] (rows of the angular span table) "
-                      "(default: shadow-map:1024,shadow-map:2048,shadow-map:4096,volumes,"
-                      "stencil,angular)")
+                      "), volumes, stencil, stencil-silhouettes (Heidmann's volumes from "
+                      "silhouette edges only: closed models), angular[:ROWS] (rows of the "
+                      "angular span table) (default: shadow-map:1024,shadow-map:2048,"
+                      "shadow-map:4096,volumes,stencil,angular)")
       ->delimiter(',')
       ->needs(view);
   command

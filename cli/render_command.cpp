@@ -236,11 +236,15 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
       .add_option("--shadows", args.shadows,
                   "with --png: how each pixel's shadows are found: exact (default; the "
                   "database's lit polygons), shadow-map (depth maps from each light), volumes "
-                  "(Bergeron's shadow volumes counted along each eye ray) or stencil "
+                  "(Bergeron's shadow volumes counted along each eye ray), stencil "
                   "(Heidmann's shadow volumes in the stencil buffer of OpenGL, run on the CPU "
-                  "by Mesa) or angular (Thakur, Cheng and Miura's ridge-edge loops and angular "
-                  "span table; closed objects)")
-      ->check(CLI::IsMember({"exact", "shadow-map", "volumes", "stencil", "angular"}))
+                  "by Mesa; one volume per polygon), stencil-silhouettes (the same with the "
+                  "paper's volumes from silhouette edges only: closed models, edges matched by "
+                  "identical coordinates; an open model's shadows go missing) or angular "
+                  "(Thakur, Cheng and Miura's ridge-edge loops and angular span table; closed "
+                  "objects)")
+      ->check(CLI::IsMember(
+          {"exact", "shadow-map", "volumes", "stencil", "stencil-silhouettes", "angular"}))
       ->needs(png);
   args.resolution_option =
       command

@@ -172,11 +172,12 @@ void volume_weights(const Scene& scene, const PixelSurfaces& surfaces,
 }
 
 void stencil_weights(const Scene& scene, const PixelSurfaces& surfaces,
-                     const std::vector<bool>& drawn, PixelLitWeights& out) {
+                     const std::vector<bool>& drawn, StencilVolumes volumes, PixelLitWeights& out) {
   const SceneParts parts(scene);
   const std::size_t lights = scene.lights.size();
   const CameraView view(surfaces.camera, scene, surfaces.width, surfaces.height);
   StencilOptions stencil;
+  stencil.volumes = volumes;
   if (surfaces.camera.orthographic) stencil.eye = surfaces.camera.eye;
   for (std::size_t l = 0; l < lights; ++l) {
     if (!drawn[l]) continue;
@@ -221,6 +222,8 @@ std::string_view pixel_shadows_name(PixelShadows method) {
       return "stencil";
     case PixelShadows::kAngular:
       return "angular";
+    case PixelShadows::kStencilSilhouettes:
+      return "stencil-silhouettes";
   }
   return "exact";
 }
@@ -228,7 +231,7 @@ std::string_view pixel_shadows_name(PixelShadows method) {
 std::optional<PixelShadows> pixel_shadows_named(std::string_view name) {
   for (const PixelShadows method :
        {PixelShadows::kExact, PixelShadows::kShadowMap, PixelShadows::kVolumes,
-        PixelShadows::kStencil, PixelShadows::kAngular}) {
+        PixelShadows::kStencil, PixelShadows::kAngular, PixelShadows::kStencilSilhouettes}) {
     if (pixel_shadows_name(method) == name) return method;
   }
   return std::nullopt;
@@ -255,7 +258,10 @@ PixelLitWeights pixel_lit_weights(const ShadowedScene& shadowed, const PixelSurf
       volume_weights(scene, surfaces, drawn, out);
       break;
     case PixelShadows::kStencil:
-      stencil_weights(scene, surfaces, drawn, out);
+      stencil_weights(scene, surfaces, drawn, StencilVolumes::kPerPolygon, out);
+      break;
+    case PixelShadows::kStencilSilhouettes:
+      stencil_weights(scene, surfaces, drawn, StencilVolumes::kSilhouettes, out);
       break;
     case PixelShadows::kAngular:
       check_resolution(options.resolution);

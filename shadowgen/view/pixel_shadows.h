@@ -1,7 +1,7 @@
 #pragma once
 
 // Per light, how much of it reaches the surface seen through each pixel
-// (pixel_surfaces.h): a lit weight in [0, 1], found by one of three methods, the view
+// (pixel_surfaces.h): a lit weight in [0, 1], found by one of six methods, the view
 // methods of the methods ladder (docs/scene-format.md, "Methods"):
 //
 //   exact       the shadowed database's own lit polygons (ShadowedScene::lit): 1 where
@@ -23,6 +23,13 @@
 //               z-fail where the eye may be inside a volume: 1 where the stencil is 0 at
 //               the pixel, 0 elsewhere. GL rasterises the scene again, so at a silhouette
 //               the surface it sees can differ by a pixel from the one given here.
+//               One volume per occluding polygon: open models shadow as they should.
+//   stencil-silhouettes
+//               the same, with the paper's volumes: extruded from silhouette edges only
+//               (StencilVolumes::kSilhouettes), edges matched by identical coordinates.
+//               Right on closed 2-manifold models; an open model's border is no
+//               silhouette, so its shadow goes missing in part or whole (a lone polygon
+//               casts none under z-pass).
 //   angular     Thakur, Cheng and Miura's ridge-edge loops and discretised angular span
 //               table (angular_shadows.h), `resolution` rows: 1 or 0; closed objects.
 //
@@ -44,9 +51,16 @@
 
 namespace shadowgen {
 
-enum class PixelShadows : unsigned char { kExact, kShadowMap, kVolumes, kStencil, kAngular };
+enum class PixelShadows : unsigned char {
+  kExact,
+  kShadowMap,
+  kVolumes,
+  kStencil,
+  kAngular,
+  kStencilSilhouettes,
+};
 
-// "exact", "shadow-map", "volumes", "stencil", "angular".
+// "exact", "shadow-map", "volumes", "stencil", "angular", "stencil-silhouettes".
 std::string_view pixel_shadows_name(PixelShadows method);
 // The method of that name; nullopt for any other.
 std::optional<PixelShadows> pixel_shadows_named(std::string_view name);

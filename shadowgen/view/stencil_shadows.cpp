@@ -13,6 +13,7 @@
 #include <string>
 
 #include "detail/gl_library.h"
+#include "detail/ridge_edge_loops.h"
 #include "hsr/polygon3.h"
 #include "shadowgen/sampled/part_triangles.h"
 #include "shadowgen/shadows/light_scope.h"
@@ -161,6 +162,59 @@ bool casts_volume(const PartInfo& part) {
   return occludes(part.role) && part.light_side != 0 && !part.triangles.triangles.empty();
 }
 
+// Per part, per loop (outer first, then holes), per edge from vertex i to i + 1: whether it
+// is a silhouette edge, shared by exactly two parts of which one has the light on its front
+// side (detail::EdgeKind::kRidge). Empty for the parts the light leaves out.
+using SilhouetteMarks = std::vector<std::vector<std::vector<bool>>>;
+
+SilhouetteMarks silhouette_marks(const Scene& scene, const Light& light) {
+  const ScenePartPlanes all(scene);
+  const std::vector<PartRole> roles = part_roles(all.polygons, all.planes, light);
+  const detail::RidgeEdgeLoops ridges =
+      detail::ridge_edge_loops(all.polygons, all.planes, roles, light);
+  SilhouetteMarks marks(all.polygons.size());
+  for (std::size_t p = 0; p < marks.size(); ++p) {
+    for (const std::vector<std::size_t>& loop : ridges.part_loop_edges[p]) {
+      std::vector<bool>& loop_marks = marks[p].emplace_back();
+      for (const std::size_t edge : loop) {
+        loop_marks.push_back(ridges.edges[edge].kind == detail::EdgeKind::kRidge);
+      }
+    }
+  }
+  return marks;
+}
+
+// Whether the part builds a volume: every part that casts one, or with silhouette marks
+// only the front parts (their caps; the silhouette edges are theirs).
+bool builds_volume(const PartInfo& part, const SilhouetteMarks* marks) {
+  return casts_volume(part) && (marks == nullptr || part.light_side > 0);
+}
+
+// Calls visit(a, b) for each side edge of the part's volume, directed counter-clockwise
+// about its normal toward the light: every edge of its loops, or with `marks` (the part's
+// own, per loop) the silhouette edges only.
+template <typename Visit>
+void for_each_side_edge(const PartInfo& part, const std::vector<std::vector<bool>>* marks,
+                        Visit&& visit) {
+  const dvec3 m = part.plane.normal * static_cast<double>(part.light_side);
+  auto loop_edges = [&](const hsr::Loop3& loop, bool outer, std::size_t index) {
+    const double turn = glm::dot(hsr::newell_vector(loop), m);
+    const bool forward = outer ? turn > 0.0 : turn < 0.0;
+    const std::size_t n = loop.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (marks != nullptr && !(*marks)[index][i]) continue;
+      dvec3 a = loop[i], b = loop[(i + 1) % n];
+      if (!forward) std::swap(a, b);
+      if (a == b) continue;
+      visit(a, b);
+    }
+  };
+  loop_edges(part.polygon->outer, true, 0);
+  for (std::size_t h = 0; h < part.polygon->holes.size(); ++h) {
+    loop_edges(part.polygon->holes[h], false, h + 1);
+  }
+}
+
 // ---- The view as GL matrices -----------------------------------------------------------
 
 struct Frame {
@@ -204,6 +258,10 @@ Plan make_plan(const Scene& scene, const Light& light, const CameraView& view,
     throw std::invalid_argument("a directional light needs a finite non-zero direction");
   }
   plan.parts = scene_parts(scene, light);
+  SilhouetteMarks silhouettes;
+  if (options.volumes == StencilVolumes::kSilhouettes) silhouettes = silhouette_marks(scene, light);
+  const SilhouetteMarks* marks =
+      options.volumes == StencilVolumes::kSilhouettes ? &silhouettes : nullptr;
   const hsr::View& hv = view.view();
   const Frame frame = view_frame(hv);
   const dvec3 origin = frame.eye;
@@ -260,41 +318,41 @@ Plan make_plan(const Scene& scene, const Light& light, const CameraView& view,
     return std::max(1.0, 1.05 * far / std::max(nearest, 1e-12 * far) + 1.0);
   };
 
+  // Silhouette volumes join their front parts' caps and sides at shared vertices, so they
+  // share one point-light scale: the largest any of them needs.
+  double shared_scale = 1.0;
+  for (const PartInfo& part : plan.parts) {
+    if (marks != nullptr && builds_volume(part, marks)) {
+      shared_scale = std::max(shared_scale, point_scale(part));
+    }
+  }
+
   // ---- The volumes (and the depth pass's triangles).
   auto local = [&](const dvec3& v) { return dvec4(v - origin, 1.0); };
   double extruded_far = -INFINITY;  // orthographic: the deepest extruded vertex
-  for (const PartInfo& part : plan.parts) {
+  for (std::size_t p = 0; p < plan.parts.size(); ++p) {
+    const PartInfo& part = plan.parts[p];
     std::vector<dvec4>& pass = part.role == PartRole::kFacing ? plan.facing : plan.other;
     for (const sampled::Triangle3& tri : part.triangles.triangles) {
       pass.push_back(local(tri.a));
       pass.push_back(local(tri.b));
       pass.push_back(local(tri.c));
     }
-    if (!casts_volume(part)) continue;
+    if (!builds_volume(part, marks)) continue;
     // m: the part's normal toward the light; loops and caps counter-clockwise about it.
     const dvec3 m = part.plane.normal * static_cast<double>(part.light_side);
-    const double scale = point_scale(part);
+    const double scale = marks != nullptr ? shared_scale : point_scale(part);
     auto track = [&](const dvec4& v) {
       if (v.w != 0.0) extruded_far = std::max(extruded_far, glm::dot(dvec3(v), frame.forward));
     };
-    auto side_edges = [&](const hsr::Loop3& loop, bool outer) {
-      const double turn = glm::dot(hsr::newell_vector(loop), m);
-      const bool forward = outer ? turn > 0.0 : turn < 0.0;
-      const std::size_t n = loop.size();
-      for (std::size_t i = 0; i < n; ++i) {
-        dvec3 a = loop[i], b = loop[(i + 1) % n];
-        if (!forward) std::swap(a, b);
-        if (a == b) continue;
-        // Heidmann: the side is drawn against the edge's direction, (b, a, a', b'), so its
-        // normal points out of the volume.
-        const dvec4 ea = extrude(a, scale), eb = extrude(b, scale);
-        plan.sides.insert(plan.sides.end(), {local(b), local(a), ea, local(b), ea, eb});
-        track(ea);
-        track(eb);
-      }
-    };
-    side_edges(part.polygon->outer, true);
-    for (const hsr::Loop3& hole : part.polygon->holes) side_edges(hole, false);
+    for_each_side_edge(part, marks ? &(*marks)[p] : nullptr, [&](const dvec3& a, const dvec3& b) {
+      // Heidmann: the side is drawn against the edge's direction, (b, a, a', b'), so its
+      // normal points out of the volume.
+      const dvec4 ea = extrude(a, scale), eb = extrude(b, scale);
+      plan.sides.insert(plan.sides.end(), {local(b), local(a), ea, local(b), ea, eb});
+      track(ea);
+      track(eb);
+    });
     const bool far_cap = !(perspective && light.type == LightType::kDirectional);
     for (const sampled::Triangle3& tri : part.triangles.triangles) {
       dvec3 a = tri.a, b = tri.b, c = tri.c;
@@ -391,7 +449,7 @@ Plan make_plan(const Scene& scene, const Light& light, const CameraView& view,
   }
   plan.zfail = false;
   for (const PartInfo& part : plan.parts) {
-    if (!casts_volume(part) || plan.zfail) continue;
+    if (!builds_volume(part, marks) || plan.zfail) continue;
     for (const sampled::Triangle3& tri : part.triangles.triangles) {
       const sampled::Triangle3 relative{tri.a - origin, tri.b - origin, tri.c - origin};
       if (may_meet_hull(relative, hull, hull_edges)) {
@@ -455,6 +513,19 @@ void draw(const std::vector<dvec4>& vertices) {
 StencilGlCamera stencil_gl_camera(const Scene& scene, const Light& light, const CameraView& view,
                                   const StencilOptions& options) {
   return make_plan(scene, light, view, options).camera;
+}
+
+std::vector<StencilEdge> stencil_silhouette_edges(const Scene& scene, const Light& light) {
+  const std::vector<PartInfo> parts = scene_parts(scene, light);
+  const SilhouetteMarks marks = silhouette_marks(scene, light);
+  std::vector<StencilEdge> edges;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    if (!builds_volume(parts[p], &marks)) continue;
+    for_each_side_edge(parts[p], &marks[p], [&](const dvec3& a, const dvec3& b) {
+      edges.push_back({a, b});
+    });
+  }
+  return edges;
 }
 
 StencilResult stencil_lit_mask(const Scene& scene, const Light& light, const CameraView& view,

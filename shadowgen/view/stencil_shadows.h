@@ -17,7 +17,25 @@
 //      triangles as the near cap and their extrusion as the far cap. Volumes of adjacent
 //      parts overlap and their counts add, so open models and one-sided faces shadow as
 //      they do in the exact generator; a pixel behind more than 255 parts (counted along
-//      its segment to the light) wraps to 0 and reads as lit;
+//      its segment to the light) wraps to 0 and reads as lit.
+//      StencilVolumes::kSilhouettes builds them as the paper does instead: one volume per
+//      closed object, from its silhouette edges only. Edges are matched across the
+//      occluding parts (every role but kLeftOut, with a plane) by identical endpoint
+//      coordinates, either way round (detail/ridge_edge_loops.h); a part is front where
+//      the light is on its front side (kFacing's test, kOccluder parts included); an edge
+//      with two adjacent parts, one front and one not, is a silhouette edge, extruded as
+//      a side quad directed as its front part's loop runs along it (counter-clockwise
+//      about the part's normal, as the per-polygon sides), and the z-fail caps are the
+//      front parts and their extrusion (Everitt and Kilgard). On a closed, consistently
+//      oriented (2-manifold) model the count at a point is then the number of front parts
+//      on its segment to the light, and agrees with the per-polygon form. The paper
+//      assumes such models: an edge with one adjacent part (an open model's border) or
+//      more than two is no silhouette edge, so an open model's volume is left open or
+//      missing. A lone polygon has none at all: z-pass draws nothing for it and what it
+//      shadows reads lit; z-fail draws only its caps, whose count nothing closes, so the
+//      polygon itself reads dark (and an open ground quad facing a sun, in perspective
+//      where the far cap is not drawn, swaps lit and shadow in front of it); a part
+//      turned away from the light with no front neighbour casts nothing in either;
 //   3. drawn into the stencil buffer (8 bits, GL_INCR_WRAP/GL_DECR_WRAP, front and back
 //      faces in two culled passes) with depth writes and colour off, the volumes pushed
 //      back by glPolygonOffset(0.5, 4) so that a part is not shadowed by its own volume:
@@ -29,9 +47,10 @@
 //          as long as the far plane cuts no volume;
 //      kAutomatic takes z-pass only where no volume can reach the near plane within the
 //      picture (the window W): a point of W is in a part's volume when its segment toward
-//      the light meets the part, so z-pass is safe when no occluding part's triangle meets
-//      the hull of W and a point light, or of W and W moved toward a directional light
-//      past the scene (a separating-axis test in doubles, touching counted as meeting);
+//      the light meets the part, so z-pass is safe when no occluding part's triangle (with
+//      kSilhouettes, no front part's) meets the hull of W and a point light, or of W and W
+//      moved toward a directional light past the scene (a separating-axis test in doubles,
+//      touching counted as meeting);
 //      z-fail otherwise. An eye in shadow always gets z-fail;
 //   4. read back: lit where the stencil is 0, the depth below 1 (a surface) and the red 1.
 //
@@ -50,7 +69,8 @@
 //   Orthographic: near at the plane through StencilOptions::eye (as render cuts it), or at
 //   the scene's nearest vertex; volumes extruded to finite length past the scene's
 //   bounding sphere (a directional light's by a translation longer than its diameter, a
-//   point light's by scaling about the light), and the far plane fitted to the scene and
+//   point light's by scaling about the light, one scale for all silhouette volumes so that
+//   they close where their parts meet), and the far plane fitted to the scene and
 //   the extruded vertices: a depth step of (far − near) / 2^24.
 
 #include <array>
@@ -71,8 +91,14 @@ enum class StencilMethod : unsigned char {
   kZFail,      // forced
 };
 
+enum class StencilVolumes : unsigned char {
+  kPerPolygon,   // a closed volume per occluding part: open models shadow too
+  kSilhouettes,  // Heidmann's: from silhouette edges only; closed 2-manifold models only
+};
+
 struct StencilOptions {
   StencilMethod method = StencilMethod::kAutomatic;
+  StencilVolumes volumes = StencilVolumes::kPerPolygon;
   // Orthographic views: the camera's eye (Camera::eye), whose plane cuts the scene as
   // render does; without it the near plane is the scene's nearest vertex. Ignored for
   // perspective views.
@@ -109,5 +135,13 @@ struct StencilGlCamera {
 };
 StencilGlCamera stencil_gl_camera(const Scene& scene, const Light& light, const CameraView& view,
                                   const StencilOptions& options = {});
+
+// The silhouette edges StencilVolumes::kSilhouettes extrudes for `light`, each from a to b as
+// its front part's loop runs along it: on a closed model, loops counter-clockwise seen from
+// the light.
+struct StencilEdge {
+  glm::dvec3 a, b;
+};
+std::vector<StencilEdge> stencil_silhouette_edges(const Scene& scene, const Light& light);
 
 }  // namespace shadowgen

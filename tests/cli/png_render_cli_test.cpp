@@ -103,6 +103,41 @@ TEST_F(PngRenderCli, EachMethodWritesAValidPng) {
                                       "shadow-map.png", "stencil.png", "volumes.png"}));
 }
 
+// The RGB bytes in which two pictures of one size differ.
+std::size_t differing(const Png& a, const Png& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.rgb.size(); ++i) n += a.rgb[i] != b.rgb[i];
+  return n;
+}
+
+TEST_F(PngRenderCli, StencilSilhouettesLoseTheOpenCourtyardsShadows) {
+  // The courtyard's wall and canopy are single polygons: no edge of theirs is shared, so
+  // Heidmann's silhouette volumes have no side, and the picture (z-pass: the eye is in no
+  // shadow) has none of their shadows, which the per-polygon stencil keeps.
+  std::vector<Png> pictures;
+  for (const std::string method : {"exact", "stencil", "stencil-silhouettes"}) {
+    const fs::path png = dir_ / (method + ".png");
+    const Outcome out = render({"--png", png.string(), "--shadows", method});
+    ASSERT_EQ(out.code, 0) << method << ": " << out.err;
+    pictures.push_back(read_png(png));
+    ASSERT_TRUE(pictures.back().ok) << method;
+    EXPECT_EQ(pictures.back().width, 96);
+    EXPECT_EQ(pictures.back().height, 72);
+  }
+  // Off by a few boundary pixels from exact per polygon; the missing shadows only brighten.
+  EXPECT_LE(differing(pictures[0], pictures[1]), pictures[0].rgb.size() / 50);
+  EXPECT_GT(differing(pictures[0], pictures[2]), 4 * differing(pictures[0], pictures[1]));
+  std::size_t darker = 0, brighter = 0;
+  for (std::size_t i = 0; i + 2 < pictures[1].rgb.size(); i += 3) {
+    int d = 0;
+    for (std::size_t k = 0; k < 3; ++k) d += pictures[2].rgb[i + k] - pictures[1].rgb[i + k];
+    darker += d < 0;
+    brighter += d > 0;
+  }
+  EXPECT_EQ(darker, 0u);
+  EXPECT_GT(brighter, 150u);  // of 96 × 72
+}
+
 TEST_F(PngRenderCli, AFailedRunLeavesTheOldFile) {
   const fs::path png = dir_ / "out.png";
   write_file(png, "old");
@@ -133,6 +168,8 @@ TEST_F(PngRenderCli, UsageErrors) {
   expect_usage({"--png", png, "--shadows", "rays"}, "rays");
   expect_usage({"--png", png, "--resolution", "64"}, "--resolution applies only");
   expect_usage({"--png", png, "--shadows", "volumes", "--resolution", "64"},
+               "--resolution applies only");
+  expect_usage({"--png", png, "--shadows", "stencil-silhouettes", "--resolution", "64"},
                "--resolution applies only");
   expect_usage({}, "--svg or --png is required");
   expect_usage({"--png", db_.string()}, "is the input");

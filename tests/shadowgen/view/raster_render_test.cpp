@@ -335,9 +335,10 @@ TEST(PngWriter, ReadsBackPixelForPixel) {
 TEST(PixelShadows, MethodNames) {
   for (const PixelShadows method :
        {PixelShadows::kExact, PixelShadows::kShadowMap, PixelShadows::kVolumes,
-        PixelShadows::kStencil, PixelShadows::kAngular}) {
+        PixelShadows::kStencil, PixelShadows::kAngular, PixelShadows::kStencilSilhouettes}) {
     EXPECT_EQ(pixel_shadows_named(pixel_shadows_name(method)), method);
   }
+  EXPECT_EQ(pixel_shadows_name(PixelShadows::kStencilSilhouettes), "stencil-silhouettes");
   EXPECT_FALSE(pixel_shadows_named("rays"));
 }
 

@@ -5,16 +5,19 @@
 // crosses another part. Pixels within one pixel of a change of that answer (a shadow
 // boundary, a silhouette, an edge between faces) are not compared; every other pixel must
 // agree. The eye in a shadow volume shows Heidmann's z-pass failing and the automatic choice
-// (z-fail) right.
+// (z-fail) right. The paper's own volumes, from silhouette edges only, agree on the closed
+// box and lose the shadows of open models, which the per-polygon volumes keep.
 
 #include "shadowgen/view/stencil_shadows.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
+#include <iostream>
 #include <limits>
 #include <optional>
 #include <string>
@@ -63,6 +66,46 @@ Scene holed_roof() {
       hsr::Polygon3{{{-2, -2, 1.5}, {-2, 2, 1.5}, {2, 2, 1.5}, {2, -2, 1.5}},
                     {{{-0.7, -0.7, 1.5}, {0.7, -0.7, 1.5}, {0.7, 0.7, 1.5}, {-0.7, 0.7, 1.5}}}});
   scene.faces.push_back(roof);
+  return scene;
+}
+
+// The six faces of the box [lo, hi], outward, their ids `name` and a side.
+std::vector<Face> box_faces(const std::string& name, dvec3 lo, dvec3 hi) {
+  const dvec3 a{lo.x, lo.y, lo.z}, b{hi.x, lo.y, lo.z}, c{hi.x, hi.y, lo.z}, d{lo.x, hi.y, lo.z};
+  const dvec3 e{lo.x, lo.y, hi.z}, f{hi.x, lo.y, hi.z}, g{hi.x, hi.y, hi.z}, h{lo.x, hi.y, hi.z};
+  return {quad_face(name + "-top", e, f, g, h),   quad_face(name + "-bottom", a, d, c, b),
+          quad_face(name + "-east", b, c, g, f),  quad_face(name + "-west", a, e, h, d),
+          quad_face(name + "-north", d, h, g, c), quad_face(name + "-south", a, b, f, e)};
+}
+
+// The scene with its ground quad replaced by a closed slab [-6, 6]² × [-0.5, 0]: the
+// same picture, and no open model left but what the scene adds.
+Scene on_slab(Scene scene) {
+  std::erase_if(scene.faces, [](const Face& face) { return face.id == "ground"; });
+  const std::vector<Face> slab = box_faces("slab", {-6, -6, -0.5}, {6, 6, 0});
+  scene.faces.insert(scene.faces.begin(), slab.begin(), slab.end());
+  return scene;
+}
+
+// A ground and one quad [-2, 2]² at z = 1.5 facing up, toward the lights: an open model
+// whose every edge is a border.
+Scene floating_quad() {
+  Scene scene;
+  const double g = 6.0, s = 2.0, z = 1.5;
+  scene.faces.push_back(quad_face("ground", {-g, -g, 0}, {g, -g, 0}, {g, g, 0}, {-g, g, 0}));
+  scene.faces.push_back(quad_face("quad", {-s, -s, z}, {s, -s, z}, {s, s, z}, {-s, s, z}));
+  return scene;
+}
+
+// The box of box_on_ground lifted to [-1, 1]² × [1, 2] and without its bottom: an open
+// model, its sides' lower edges borders.
+Scene open_box() {
+  Scene scene = box_on_ground();
+  std::erase_if(scene.faces, [](const Face& face) { return face.id == "bottom"; });
+  for (Face& face : scene.faces) {
+    if (face.id == "ground") continue;
+    for (dvec3& v : face.parts[0].outer) v.z = v.z == 0.0 ? 1.0 : v.z;
+  }
   return scene;
 }
 
@@ -132,9 +175,10 @@ std::optional<double> ray_hits(const dvec3& origin, const dvec3& direction,
   return glm::dot(e2, q) / det;
 }
 
-// Per pixel: −1 where no part is seen, else 2·part + lit.
+// Per pixel: −1 where no part is seen, else 2·part + lit. Without `shadows` a part facing
+// the light is lit whole: the picture of a method that casts no shadow.
 std::vector<int> exact_classes(const Scene& scene, const Light& light, const CameraView& view,
-                               double t_min) {
+                               double t_min, bool shadows = true) {
   const std::vector<Part> parts = parts_of(scene);
   std::vector<int> classes(static_cast<std::size_t>(view.width()) * view.height(), -1);
   for (int y = 0; y < view.height(); ++y) {
@@ -156,7 +200,7 @@ std::vector<int> exact_classes(const Scene& scene, const Light& light, const Cam
       const bool point = light.type == LightType::kPoint;
       const dvec3 to_light = point ? light.position - p : -1e4 * glm::normalize(light.direction);
       bool lit = glm::dot(parts[seen].normal, to_light) > 0.0;
-      for (std::size_t i = 0; lit && i < parts.size(); ++i) {
+      for (std::size_t i = 0; shadows && lit && i < parts.size(); ++i) {
         if (static_cast<int>(i) == seen) continue;
         for (const sampled::Triangle3& tri : parts[i].triangles) {
           const std::optional<double> t = ray_hits(p, to_light, tri);
@@ -174,7 +218,9 @@ std::vector<int> exact_classes(const Scene& scene, const Light& light, const Cam
 
 struct Comparison {
   int compared = 0, lit = 0, shadowed = 0, wrong = 0;
-  int first_x = -1, first_y = -1;  // the first pixel wrong
+  int read_lit = 0, read_dark = 0;        // the wrong ones by what the mask says
+  std::vector<int> seeing, wrong_seeing;  // compared and wrong, by the part seen
+  int first_x = -1, first_y = -1;         // the first pixel wrong
   bool first_expected_lit = false;
 };
 
@@ -194,9 +240,16 @@ Comparison compare(const StencilResult& mask, const std::vector<int>& classes) {
       }
       if (near_change) continue;
       ++c.compared;
+      if (mine >= 0) {
+        c.seeing.resize(std::max<std::size_t>(c.seeing.size(), mine / 2 + 1));
+        c.wrong_seeing.resize(c.seeing.size());
+        ++c.seeing[mine / 2];
+      }
       const bool expected = mine >= 0 && mine % 2 == 1;
       (expected ? c.lit : c.shadowed) += 1;
       if ((mask.lit[static_cast<std::size_t>(y) * w + x] == 1) != expected) {
+        (expected ? c.read_dark : c.read_lit) += 1;
+        if (mine >= 0) ++c.wrong_seeing[mine / 2];
         if (c.wrong++ == 0) {
           c.first_x = x;
           c.first_y = y;
@@ -210,24 +263,43 @@ Comparison compare(const StencilResult& mask, const std::vector<int>& classes) {
 
 constexpr int kWidth = 80, kHeight = 60;
 
-// The mask of `light` from `camera` against the reference: every pixel away from a change
-// agrees, and the picture has enough of both to mean something.
-void expect_exact(const Scene& scene, const Light& light, const Camera& camera,
-                  StencilMethod method, bool expect_zfail) {
+struct Measured {
+  StencilResult mask;
+  Comparison c;           // against the exact shadows
+  Comparison unshadowed;  // against the picture without shadows
+};
+
+// The mask of `light` from `camera`, compared with the reference.
+Measured measure(const Scene& scene, const Light& light, const Camera& camera, StencilMethod method,
+                 StencilVolumes volumes = StencilVolumes::kPerPolygon) {
   const CameraView view(camera, scene, kWidth, kHeight);
   StencilOptions options;
   options.method = method;
+  options.volumes = volumes;
   double t_min = view.view().near();
   if (camera.orthographic) {
     options.eye = camera.eye;
     t_min = glm::dot(camera.eye - view.view().eye(), view.view().forward());
   }
-  const StencilResult mask = stencil_lit_mask(scene, light, view, options);
+  Measured m;
+  m.mask = stencil_lit_mask(scene, light, view, options);
+  m.c = compare(m.mask, exact_classes(scene, light, view, t_min));
+  m.unshadowed = compare(m.mask, exact_classes(scene, light, view, t_min, false));
+  return m;
+}
+
+// The mask of `light` from `camera` against the reference: every pixel away from a change
+// agrees, and the picture has enough of both to mean something.
+void expect_exact(const Scene& scene, const Light& light, const Camera& camera,
+                  StencilMethod method, bool expect_zfail,
+                  StencilVolumes volumes = StencilVolumes::kPerPolygon) {
+  const Measured m = measure(scene, light, camera, method, volumes);
+  const StencilResult& mask = m.mask;
   ASSERT_EQ(mask.width, kWidth);
   ASSERT_EQ(mask.height, kHeight);
   ASSERT_EQ(mask.lit.size(), static_cast<std::size_t>(kWidth * kHeight));
   EXPECT_EQ(mask.zfail_used, expect_zfail);
-  const Comparison c = compare(mask, exact_classes(scene, light, view, t_min));
+  const Comparison& c = m.c;
   EXPECT_GT(c.compared, kWidth * kHeight / 2);
   EXPECT_GT(c.lit, 200);
   EXPECT_GT(c.shadowed, 200);
@@ -300,6 +372,195 @@ TEST(StencilShadows, EyeInALampsShadowNeedsZFail) {
   const Comparison c = compare(stencil_lit_mask(scene, light, view, zpass),
                                exact_classes(scene, light, view, view.view().near()));
   EXPECT_GT(c.wrong, c.compared / 4) << "Heidmann's z-pass with the eye in shadow";
+}
+
+// ---- Heidmann's volumes from silhouette edges only ---------------------------------------
+
+// The box alone: six quads sharing their corners, outward normals.
+Scene cube() {
+  Scene scene = box_on_ground();
+  std::erase_if(scene.faces, [](const Face& face) { return face.id == "ground"; });
+  return scene;
+}
+
+// The vector area of the directed edges seen from the direction `toward`; expects them to
+// form closed loops (every vertex left as often as entered).
+double loop_area_toward(const std::vector<StencilEdge>& edges, const dvec3& toward) {
+  for (const StencilEdge& e : edges) {
+    int balance = 0;
+    for (const StencilEdge& f : edges) balance += (f.a == e.a) - (f.b == e.a);
+    EXPECT_EQ(balance, 0) << e.a.x << ", " << e.a.y << ", " << e.a.z;
+  }
+  dvec3 area(0.0);
+  for (const StencilEdge& e : edges) area += 0.5 * glm::cross(e.a, e.b);
+  return glm::dot(area, glm::normalize(toward));
+}
+
+TEST(StencilSilhouettes, EdgesOfACube) {
+  // From straight above the top faces the sun and the sides see it edge-on: the top's four
+  // edges, counter-clockwise seen from the sun, enclosing the top's area 4.
+  const std::vector<StencilEdge> above = stencil_silhouette_edges(cube(), sun({0, 0, -1}));
+  ASSERT_EQ(above.size(), 4u);
+  for (const StencilEdge& e : above) {
+    EXPECT_EQ(e.a.z, 2.0);
+    EXPECT_EQ(e.b.z, 2.0);
+  }
+  EXPECT_DOUBLE_EQ(loop_area_toward(above, {0, 0, 1}), 4.0);
+  // From a corner the top, east and north faces face it: a skew hexagon, whose area seen
+  // from the sun is the cube's shadow outline's, 4 · (1 + 1 + 1) / √3 for sides of 2.
+  const dvec3 corner{-1, -1, -1};
+  const std::vector<StencilEdge> hexagon = stencil_silhouette_edges(cube(), sun(corner));
+  EXPECT_EQ(hexagon.size(), 6u);
+  EXPECT_NEAR(loop_area_toward(hexagon, -corner), 12.0 / std::sqrt(3.0), 1e-12);
+  // A lamp above the top sees only the top's front: its four edges again.
+  EXPECT_EQ(stencil_silhouette_edges(cube(), lamp({0.3, 0.2, 5})).size(), 4u);
+  // The ground's edges are borders (one part each), never silhouettes.
+  EXPECT_EQ(stencil_silhouette_edges(box_on_ground(), sun(corner)).size(), 6u);
+  // Open models: no edge of a lone quad or of a holed roof is shared.
+  EXPECT_TRUE(stencil_silhouette_edges(floating_quad(), sun(kSunDirection)).empty());
+  EXPECT_TRUE(stencil_silhouette_edges(holed_roof(), sun(kSunDirection)).empty());
+  // The bottomless box under a sun from west-south-above: the top's edges to the east and
+  // north sides, and the two vertical edges where a side facing the sun (west, south) meets
+  // one turned away. The lower edges are borders: an open chain of 4, no loop.
+  const std::vector<StencilEdge> open = stencil_silhouette_edges(open_box(), sun(kSunDirection));
+  EXPECT_EQ(open.size(), 4u);
+  std::size_t vertical = 0;
+  for (const StencilEdge& e : open) vertical += e.a.z != e.b.z;
+  EXPECT_EQ(vertical, 2u);
+}
+
+TEST(StencilSilhouettes, ClosedBoxMatchesTheExactShadow) {
+  // The box on a closed slab: no open model in the scene. (The ground quad of
+  // box_on_ground is one: see AnOpenGroundSwapsLitAndShadowUnderZFail.)
+  const Scene scene = on_slab(box_on_ground());
+  const Camera camera = perspective({7, -9, 6}, {0.5, 0.5, 0.5}, 50.0);
+  const Camera ortho = orthographic({6, -8, 10}, {0, 0, 0}, 6.0);
+  const StencilVolumes kSil = StencilVolumes::kSilhouettes;
+  for (const Light& light : {sun(kSunDirection), lamp(kLampPosition)}) {
+    SCOPED_TRACE(light.id);
+    expect_exact(scene, light, camera, StencilMethod::kAutomatic, false, kSil);
+    expect_exact(scene, light, camera, StencilMethod::kZFail, true, kSil);
+    expect_exact(scene, light, ortho, StencilMethod::kAutomatic, false, kSil);
+    expect_exact(scene, light, ortho, StencilMethod::kZFail, true, kSil);
+  }
+}
+
+TEST(StencilSilhouettes, EyeInAClosedBoxsShadowNeedsZFail) {
+  const Scene scene = on_slab(box_on_ground());
+  const StencilVolumes kSil = StencilVolumes::kSilhouettes;
+  const Light light = sun({1.0, 0.0, -1.0});
+  const Camera camera = perspective({1.8, 0.0, 0.5}, {4.0, 0.0, 0.0}, 60.0);
+  expect_exact(scene, light, camera, StencilMethod::kAutomatic, true, kSil);
+  const Measured zpass = measure(scene, light, camera, StencilMethod::kZPass, kSil);
+  EXPECT_GT(zpass.c.wrong, zpass.c.compared / 4) << "Heidmann's z-pass with the eye in shadow";
+
+  const Camera in_lamp_shadow = perspective({2.0, 0.3, 0.6}, {2.0, -5.0, 0.0}, 60.0);
+  expect_exact(scene, lamp({-3.0, 0.0, 3.0}), in_lamp_shadow, StencilMethod::kAutomatic, true,
+               kSil);
+}
+
+// The index of face `id`'s part among the scene's parts (one part per face).
+int part_of(const Scene& scene, const std::string& id) {
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    if (scene.faces[f].id == id) return static_cast<int>(f);
+  }
+  return -1;
+}
+
+// The open models below, seen from the south, low enough to look under the floating ones.
+const Camera kOpenModelCamera = perspective({1, -7, 3}, {1, 0.5, 0.5}, 50.0);
+
+std::string counts(const Measured& m) {
+  return "wrong " + std::to_string(m.c.wrong) + " (read lit " + std::to_string(m.c.read_lit) +
+         ", read dark " + std::to_string(m.c.read_dark) + ") of " + std::to_string(m.c.compared) +
+         "; against no shadows " + std::to_string(m.unshadowed.wrong);
+}
+
+TEST(StencilSilhouettes, ALoneQuadCastsNoShadow) {
+  // A quad facing the lights, over a closed slab: none of its edges is shared, so there is
+  // no silhouette edge and no side. z-pass draws nothing: the picture is the one without
+  // shadows, the quad's whole shadow reads lit. z-fail draws its caps alone, which leaves
+  // the count at -1 on the quad itself (its near cap lies behind it, pushed back, with no
+  // side behind to close it): the shadow reads lit and the quad dark, and under the lamp
+  // the far cap, drawn at infinity, darkens the pixels it covers elsewhere too.
+  const Scene scene = on_slab(floating_quad());
+  const int quad = part_of(scene, "quad");
+  for (const Light& light : {sun(kSunDirection), lamp(kLampPosition)}) {
+    SCOPED_TRACE(light.id);
+    for (const StencilMethod method : {StencilMethod::kZPass, StencilMethod::kZFail}) {
+      EXPECT_EQ(measure(scene, light, kOpenModelCamera, method).c.wrong, 0);
+    }
+    const Measured zpass = measure(scene, light, kOpenModelCamera, StencilMethod::kZPass,
+                                   StencilVolumes::kSilhouettes);
+    EXPECT_EQ(zpass.unshadowed.wrong, 0) << counts(zpass);
+    EXPECT_EQ(zpass.c.read_dark, 0) << counts(zpass);
+    EXPECT_GT(zpass.c.read_lit, 100) << counts(zpass);
+
+    const Measured zfail = measure(scene, light, kOpenModelCamera, StencilMethod::kZFail,
+                                   StencilVolumes::kSilhouettes);
+    EXPECT_EQ(zfail.c.read_lit, zpass.c.read_lit) << counts(zfail);
+    ASSERT_GT(zfail.unshadowed.wrong_seeing.size(), static_cast<std::size_t>(quad));
+    EXPECT_GT(zfail.unshadowed.wrong_seeing[quad], 100) << counts(zfail);
+    EXPECT_EQ(zfail.unshadowed.read_lit, 0) << counts(zfail);
+    if (light.type == LightType::kDirectional) {
+      EXPECT_EQ(zfail.unshadowed.wrong, zfail.unshadowed.wrong_seeing[quad]) << counts(zfail);
+    } else {
+      EXPECT_GT(zfail.unshadowed.wrong, zfail.unshadowed.wrong_seeing[quad]) << counts(zfail);
+    }
+  }
+}
+
+TEST(StencilSilhouettes, ATurnedAwayRoofCastsNoShadow) {
+  // The holed roof faces down, away from the lights above it: no front part, so neither
+  // sides nor caps, in z-pass and z-fail alike. The per-polygon volumes take turned-away
+  // parts too.
+  const Scene scene = on_slab(holed_roof());
+  const Camera camera = perspective({6, -7, 5}, {0, 0, 0}, 60.0);
+  for (const Light& light : {sun({0.3, 0.2, -1.0}), lamp({0.2, 0.1, 3.0})}) {
+    SCOPED_TRACE(light.id);
+    for (const StencilMethod method : {StencilMethod::kZPass, StencilMethod::kZFail}) {
+      EXPECT_EQ(measure(scene, light, camera, method).c.wrong, 0);
+      const Measured m = measure(scene, light, camera, method, StencilVolumes::kSilhouettes);
+      EXPECT_EQ(m.unshadowed.wrong, 0) << counts(m);
+      EXPECT_EQ(m.c.read_dark, 0) << counts(m);
+      EXPECT_GT(m.c.read_lit, 50) << counts(m);
+    }
+  }
+}
+
+TEST(StencilSilhouettes, ABottomlessBoxLosesPartOfItsShadow) {
+  // The lifted box without its bottom: its silhouette is an open chain (EdgesOfACube), and
+  // the sides its open lower edges would have cast are missing. z-pass counts wrong where
+  // an eye ray enters the volume through that gap, so part of the shadow reads lit and the
+  // rest stays.
+  const Scene scene = on_slab(open_box());
+  for (const Light& light : {sun(kSunDirection), lamp(kLampPosition)}) {
+    SCOPED_TRACE(light.id);
+    EXPECT_EQ(measure(scene, light, kOpenModelCamera, StencilMethod::kZPass).c.wrong, 0);
+    const Measured m = measure(scene, light, kOpenModelCamera, StencilMethod::kZPass,
+                               StencilVolumes::kSilhouettes);
+    EXPECT_EQ(m.c.read_dark, 0) << counts(m);
+    EXPECT_GT(m.c.read_lit, 40) << counts(m);
+    EXPECT_GT(m.unshadowed.wrong, 40) << counts(m);  // shadowed pixels that stay dark
+  }
+}
+
+TEST(StencilSilhouettes, AnOpenGroundSwapsLitAndShadowUnderZFail) {
+  // The ground quad of box_on_ground faces the sun and has no shared edge. z-pass draws no
+  // side for it and is right. z-fail draws its near cap and, under a sun in perspective, no
+  // far cap (a point at infinity): every pixel whose ray reaches the ground has its count
+  // lowered by one, so on the ground every lit pixel reads dark and the box's shadow lit
+  // (and so do the box's faces in front of the ground).
+  const Scene scene = box_on_ground();
+  const Light light = sun(kSunDirection);
+  const StencilVolumes kSil = StencilVolumes::kSilhouettes;
+  expect_exact(scene, light, kOpenModelCamera, StencilMethod::kZPass, false, kSil);
+  EXPECT_EQ(measure(scene, light, kOpenModelCamera, StencilMethod::kZFail).c.wrong, 0);
+  const Measured zfail = measure(scene, light, kOpenModelCamera, StencilMethod::kZFail, kSil);
+  const int ground = part_of(scene, "ground");
+  EXPECT_GT(zfail.c.read_lit, 40) << counts(zfail);
+  EXPECT_GT(zfail.c.seeing[ground], 1000);
+  EXPECT_EQ(zfail.c.wrong_seeing[ground], zfail.c.seeing[ground]) << counts(zfail);
 }
 
 // ---- The GL transform against CameraView ------------------------------------------------
