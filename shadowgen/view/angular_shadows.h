@@ -27,6 +27,13 @@
 // Not implemented: the run-length computation and maximum run length of section 6 (they
 // speed up a scan-line rasteriser; here each pixel is looked up on its own), and the VREPIP
 // decomposition of the long version's section 2.2 (the papers' table makes it unneeded).
+// The variable-resolution table of section 11.2 was tried and left out: rows equal in
+// tan θ (equation 4) up to where they are 1/16 as wide as at θ = 0, then equal in θ,
+// against equal rows, on a lamp inside a grid of cubes (AngularShadows.
+// PointLightInsideTheGridUsesBothHemispheres' scene), pixels off boundaries disagreeing
+// with volumes: 5.5 % against 0.57 % at 32 rows, 1.3 % against 0.044 % at 128, 0.073 %
+// against 0 at 512. Narrowing the rows towards θ = ±π/2 takes them from the middle of the
+// hemisphere, where a scene around a light stands in front of it; equal rows keep it.
 //
 // Limitations, as the papers state them: objects are closed 3-manifolds (every edge shared
 // by exactly two faces, no dangling faces). Here, for other models: an open edge never is a
