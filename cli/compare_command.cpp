@@ -226,7 +226,7 @@ void run_compare(const CompareArgs& args) {
           ? comparison_csv(comparison, scene,
                            args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact, shown)
           : comparison_table(comparison, scene, shown);
-  if (!args.plot.empty()) write_comparison_svg(comparison, args.plot);
+  if (!args.plot.empty()) write_comparison_svg(comparison, args.plot, shown);
   if (args.output.empty()) {
     std::cout << text << std::flush;
     if (!std::cout) throw std::runtime_error("cannot write the comparison to standard output");

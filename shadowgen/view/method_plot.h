@@ -5,7 +5,9 @@
 // log-log axes, labelled with its method, a line up to its largest error; the trials no
 // other beats on both (Pareto-optimal) filled and joined by a line; the exact method,
 // whose error is 0 and has no place on a log axis, on a strip of its own below the
-// axis, at its time.
+// axis, at its time. With a comparison of view methods (`compare --view`), a second panel
+// below: each view method at (seconds, share of (pixel, light) pairs differing from
+// exact), the same way.
 
 #include <filesystem>
 #include <string>
@@ -14,9 +16,11 @@
 
 namespace shadowgen {
 
-std::string comparison_svg(const MethodComparison& comparison);
+std::string comparison_svg(const MethodComparison& comparison,
+                           const ViewComparison* view = nullptr);
 
 // Writes through a temporary file and a rename (shadowgen/output/atomic_file.h).
-void write_comparison_svg(const MethodComparison& comparison, const std::filesystem::path& path);
+void write_comparison_svg(const MethodComparison& comparison, const std::filesystem::path& path,
+                          const ViewComparison* view = nullptr);
 
 }  // namespace shadowgen

@@ -223,13 +223,25 @@ TEST_F(MethodCli, CompareViewMeasuresTheViewMethodsAgainstExact) {
     EXPECT_EQ(row[4], views[0][4]);                  // the same pairs for every method
   }
 
+  const fs::path plot = dir_ / "view_plot.svg";
   const Outcome table = run({"compare", scene.string(), "--methods", "rays:16", "--view", "top",
-                             "--width", "40", "--height", "30", "--view-methods", "volumes"});
+                             "--width", "40", "--height", "30", "--view-methods",
+                             "exact,volumes,shadow-map:16", "--plot", plot.string()});
   ASSERT_EQ(table.code, 0) << table.err;
   EXPECT_NE(table.out.find("\nview top, 40×30: share of (pixel, light) pairs off boundaries "
                            "whose lit state differs from exact"),
             std::string::npos)
       << table.out;
+  // The plot gains a panel of the view methods: share against time, each one labelled.
+  ExpectWellFormedXml(plot, dir_ / "view_plot_xmllint.txt");
+  const std::string svg = contents(plot);
+  EXPECT_NE(svg.find(R"(data-method="rays 16")"), std::string::npos);
+  EXPECT_NE(svg.find(R"(data-view-method="exact")"), std::string::npos) << svg;
+  EXPECT_NE(svg.find(R"(data-view-method="volumes" data-seconds=)"), std::string::npos);
+  EXPECT_NE(svg.find(R"(data-view-method="shadow-map @ 16")"), std::string::npos);
+  EXPECT_NE(svg.find(">View top, 40×30: pairs differing from exact against time</text>"),
+            std::string::npos);
+  EXPECT_NE(svg.find(R"(height="960.0")"), std::string::npos);
   EXPECT_NE(table.out.find("\nvolumes "), std::string::npos) << table.out;
 
   const Outcome missing = run({"compare", scene.string(), "--view", "side"});
@@ -250,7 +262,9 @@ TEST_F(MethodCli, CompareViewMeasuresTheViewMethodsAgainstExact) {
   }
   const Outcome without_view = run({"compare", scene.string(), "--width", "64"});
   EXPECT_EQ(without_view.code, 2) << without_view.err;
-  EXPECT_EQ(files(), std::vector<std::string>{"box.json"});
+  // The refused runs wrote nothing.
+  EXPECT_EQ(files(),
+            (std::vector<std::string>{"box.json", "view_plot.svg", "view_plot_xmllint.txt"}));
 }
 
 // A sun path's instants keep only lit areas in the comparison's exact run; --view draws
