@@ -194,8 +194,7 @@ void run_compare(const CompareArgs& args) {
     // method can be measured against: a few instants of each path are generated again with
     // their lit polygons, and drawn.
     const auto path_instants = static_cast<std::size_t>(
-        std::count_if(scene.lights.begin(), scene.lights.end(),
-                      [](const Light& light) { return light.sun && light.sun->step_min > 0; }));
+        std::count_if(scene.lights.begin(), scene.lights.end(), in_sun_path));
     ShadowedScene with_instants;
     std::vector<std::string> instants;
     if (path_instants > 0) {

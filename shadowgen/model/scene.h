@@ -63,6 +63,10 @@ struct Light {
   std::optional<SunInstant> sun;    // directional lights a `sun` entry placed
 };
 
+// Whether `light` is an instant of a sun path (a `sun` entry's from/to/step_min), not a
+// light of its own.
+inline bool in_sun_path(const Light& light) { return light.sun && light.sun->step_min > 0; }
+
 struct ViewSpec {
   std::string id;
   glm::dvec3 eye{0.0};

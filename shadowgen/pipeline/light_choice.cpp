@@ -59,17 +59,16 @@ void keep_lights(Scene& scene, std::span<const std::string> ids, const std::stri
 }
 
 std::vector<std::string> keep_spread_instants(Scene& scene, std::size_t per_path) {
-  const auto in_path = [](const Light& light) { return light.sun && light.sun->step_min > 0; };
   std::vector<bool> keep(scene.lights.size(), true);
   std::vector<std::string> kept;
   // A path's instants stand together, in time order (scene.h): one run per `sun` entry.
   for (std::size_t first = 0; first < scene.lights.size();) {
-    if (!in_path(scene.lights[first])) {
+    if (!in_sun_path(scene.lights[first])) {
       ++first;
       continue;
     }
     std::size_t end = first + 1;
-    while (end < scene.lights.size() && in_path(scene.lights[end]) &&
+    while (end < scene.lights.size() && in_sun_path(scene.lights[end]) &&
            scene.lights[end].sun->sun_id == scene.lights[first].sun->sun_id) {
       ++end;
     }

@@ -91,8 +91,8 @@ struct Estimator::Impl {
 
   // Every face's part estimates, `lit(face, points, normals, out)` the lit fractions of a
   // face's sample points on parts facing the light, `face` the triangles of those parts
-  // (called from several threads at once). Faces are independent: in parallel, the same
-  // numbers on any number of threads.
+  // for a shadow map, empty for rays (called from several threads at once). Faces are independent:
+  // in parallel, the same numbers on any number of threads.
   template <typename Lit>
   PartLitAreas estimate(const std::vector<PartRole>& roles, Lit lit) const {
     PartLitAreas areas(scene.faces.size());
@@ -113,7 +113,9 @@ struct Estimator::Impl {
       thread_local std::vector<Triangle3> facing;
       face_samples(face, method.samples, f, samples);
       facing.clear();
-      for (std::size_t k = 0; k < face.size(); ++k) {
+      // The shadow map looks a face up as a whole (ShadowMap::lit_face); rays need no more
+      // than the points.
+      for (std::size_t k = 0; method.kind == MethodKind::kShadowMap && k < face.size(); ++k) {
         if (role(k) != PartRole::kFacing) continue;
         facing.insert(facing.end(), face[k].triangles.begin(), face[k].triangles.end());
       }

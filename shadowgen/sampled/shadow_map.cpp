@@ -226,18 +226,25 @@ struct ShadowMap::Tiles {
   int tile = 1, columns = 0, rows = 0;
   std::vector<std::vector<std::uint32_t>> cells;  // [row · columns + column]: occluder indices
 
+  // Calls visit(cell's occluders) for each tile that `box` (texel coordinates) reaches,
+  // the view's edge tiles standing for all beyond it.
+  template <typename Visit>
+  void for_each_under(const TexelBox& box, Visit&& visit) {
+    const auto index = [this](double t, int count) {
+      return std::clamp(static_cast<int>(std::floor(std::clamp(t, 0.0, 1e9) / tile)), 0, count - 1);
+    };
+    for (int r = index(box.v0, rows); r <= index(box.v1, rows); ++r) {
+      for (int c = index(box.u0, columns); c <= index(box.u1, columns); ++c) {
+        visit(cells[static_cast<std::size_t>(r) * columns + c]);
+      }
+    }
+  }
+
   void add(std::uint32_t occluder, const TexelBox& box, int nx, int ny) {
     // A face's map reaches kMarginTexels past the face, so past the view's edge too.
     const double m = kMarginTexels + 1.0;
     if (!(box.u1 >= -m && box.u0 <= nx + m && box.v1 >= -m && box.v0 <= ny + m)) return;
-    const auto cell = [this](double t, int count) {
-      return std::clamp(static_cast<int>(std::floor(std::clamp(t, 0.0, 1e9) / tile)), 0, count - 1);
-    };
-    for (int r = cell(box.v0, rows); r <= cell(box.v1, rows); ++r) {
-      for (int c = cell(box.u0, columns); c <= cell(box.u1, columns); ++c) {
-        cells[static_cast<std::size_t>(r) * columns + c].push_back(occluder);
-      }
-    }
+    for_each_under(box, [occluder](std::vector<std::uint32_t>& cell) { cell.push_back(occluder); });
   }
 };
 
@@ -416,7 +423,9 @@ void ShadowMap::lit_face(std::span<const Triangle3> face, std::span<const glm::d
   // Where every tap of every point shows the face's own plane, the whole map has seen the
   // face lit throughout: a map of its own would find the same.
   bool own = true;
-  for (std::size_t i = 0; i < points.size(); ++i) out[i] = whole_lit(points[i], normals[i], &own);
+  for (std::size_t i = 0; i < points.size() && own; ++i) {
+    out[i] = whole_lit(points[i], normals[i], &own);
+  }
   if (own) return;
   // The face's own map: its image's box and kMarginTexels about it, each side at least
   // `least` texels (those of the whole view where it has more); an orthographic one
@@ -481,25 +490,21 @@ void ShadowMap::lit_face(std::span<const Triangle3> face, std::span<const glm::d
         under.add({(p.x - whole.x0) / whole.tx, (p.y - whole.y0) / whole.ty});
       }
     }
-    const Tiles& tiles = tiles_[k];
-    const auto cell = [&tiles](double t, int count) {
-      return std::clamp(static_cast<int>(std::floor(std::clamp(t, 0.0, 1e9) / tiles.tile)), 0,
-                        count - 1);
-    };
+    under.u0 -= 1.0;
+    under.u1 += 1.0;
+    under.v0 -= 1.0;
+    under.v1 += 1.0;
     thread_local std::vector<std::uint64_t> stamps;
     thread_local std::uint64_t call = 0;
     ++call;
     if (stamps.size() < occluders_.size()) stamps.resize(occluders_.size(), 0);
-    for (int r = cell(under.v0 - 1.0, tiles.rows); r <= cell(under.v1 + 1.0, tiles.rows); ++r) {
-      for (int c = cell(under.u0 - 1.0, tiles.columns); c <= cell(under.u1 + 1.0, tiles.columns);
-           ++c) {
-        for (const std::uint32_t o : tiles.cells[static_cast<std::size_t>(r) * tiles.columns + c]) {
-          if (stamps[o] == call) continue;
-          stamps[o] = call;
-          draw(occluders_[o]);
-        }
+    tiles_[k].for_each_under(under, [&](const std::vector<std::uint32_t>& cell) {
+      for (const std::uint32_t o : cell) {
+        if (stamps[o] == call) continue;
+        stamps[o] = call;
+        draw(occluders_[o]);
       }
-    }
+    });
   }
   for (std::size_t i = 0; i < points.size(); ++i) {
     out[i] = local.lit(local.frame.to(points[i] - local.origin), local.frame.to(normals[i]));
