@@ -86,6 +86,18 @@ using Determinant = Expansion<16>;
 Determinant exact_difference_of_products(const Pair& p, const Pair& q, const Pair& r,
                                          const Pair& s) {
   Determinant e;
+  if (p.lo == 0.0 && q.lo == 0.0 && r.lo == 0.0 && s.lo == 0.0) {
+    // Differences taken exactly, the common case (Sterbenz: coordinates within a factor
+    // of two of each other): the loops below would add only these four terms, every
+    // other product being zero, so this is the same expansion, term for term.
+    const Pair product = two_product(p.hi, q.hi);
+    e.add(product.lo);
+    e.add(product.hi);
+    const Pair negated = two_product(-r.hi, s.hi);
+    e.add(negated.lo);
+    e.add(negated.hi);
+    return e;
+  }
   for (double l : {p.hi, p.lo}) {
     for (double m : {q.hi, q.lo}) {
       const Pair product = two_product(l, m);

@@ -37,17 +37,40 @@ bool clockwise_before(const Point2& v, const Point2& back, const Point2& w1, con
   return orient2d(v, w1, w2) == Orientation::kClockwise;
 }
 
-// A closed walk through the edges: its points, and their ids (PointIndex) for the split
-// at repeated vertices.
-struct Walk {
+// Closed walks through the edges, one after another: their points, and their ids
+// (PointIndex) for the split at repeated vertices; walk k is [starts[k], starts[k + 1]).
+struct Walks {
   Loop2 points;
   std::vector<std::size_t> ids;
+  std::vector<std::size_t> starts;
 };
+
+// The storage of one tracing, kept per thread from call to call: the clipper traces twice
+// per clip (inside and outside pieces), and for the small polygons of shadow generation
+// allocating it anew took about a tenth of the tracing's time.
+struct TraceWorkspace {
+  PointIndex index{0};
+  std::vector<std::size_t> from, to, first, leaving, fill, position;
+  std::vector<char> used;
+  Walks walks;
+};
+
+// Tracings of more edges than this give their storage back when done.
+constexpr std::size_t kKeptEdges = std::size_t{1} << 14;
+
+constexpr std::size_t kNotOnStack = static_cast<std::size_t>(-1);
 
 class Tracer {
  public:
-  explicit Tracer(const std::vector<DirectedEdge>& edges)
-      : edges_(edges), index_(edges.size() + 1) {
+  Tracer(const std::vector<DirectedEdge>& edges, TraceWorkspace& w)
+      : edges_(edges),
+        index_(w.index),
+        from_(w.from),
+        to_(w.to),
+        first_(w.first),
+        leaving_(w.leaving),
+        used_(w.used) {
+    index_.reset(edges.size() + 1);
     from_.resize(edges.size());
     to_.resize(edges.size());
     for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -60,24 +83,27 @@ class Tracer {
     for (std::size_t e = 0; e < edges.size(); ++e) ++first_[from_[e] + 1];
     for (std::size_t v = 0; v < count; ++v) first_[v + 1] += first_[v];
     leaving_.resize(edges.size());
-    std::vector<std::size_t> fill(first_.begin(), first_.end() - 1);
+    std::vector<std::size_t>& fill = w.fill;
+    fill.assign(first_.begin(), first_.end() - 1);
     for (std::size_t e = 0; e < edges.size(); ++e) leaving_[fill[from_[e]]++] = e;
-    used_.assign(edges.size(), false);
+    used_.assign(edges.size(), 0);
   }
 
   std::size_t point_count() const { return index_.size(); }
 
-  std::vector<Walk> trace() {
-    std::vector<Walk> walks;
+  void trace(Walks& walks) {
+    walks.points.clear();
+    walks.ids.clear();
+    walks.starts.assign(1, 0);
     for (std::size_t start = 0; start < edges_.size(); ++start) {
       if (used_[start]) continue;
-      Walk walk;
       std::size_t e = start;
-      used_[e] = true;
+      used_[e] = 1;
       const std::size_t origin = from_[start];
+      bool closed = true;
       while (true) {
-        walk.points.push_back(edges_[e].from);
-        walk.ids.push_back(from_[e]);
+        walks.points.push_back(edges_[e].from);
+        walks.ids.push_back(from_[e]);
         const Point2& back = edges_[e].from;
         const Point2& v = edges_[e].to;
         const std::size_t vid = to_[e];
@@ -93,38 +119,43 @@ class Tracer {
         if (best == kNone) {
           // A dead end: the edges do not close here. No loop is made of them rather
           // than one closed by an edge that is not there, which could cross others.
-          walk.points.clear();
+          closed = false;
           break;
         }
         if (best == start) break;
-        used_[best] = true;
+        used_[best] = 1;
         e = best;
       }
-      if (!walk.points.empty()) walks.push_back(std::move(walk));
+      if (closed) {
+        walks.starts.push_back(walks.points.size());
+      } else {
+        walks.points.resize(walks.starts.back());
+        walks.ids.resize(walks.starts.back());
+      }
     }
-    return walks;
   }
 
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
   const std::vector<DirectedEdge>& edges_;
-  PointIndex index_;
-  std::vector<std::size_t> from_, to_;
-  std::vector<std::size_t> first_, leaving_;
-  std::vector<bool> used_;
+  PointIndex& index_;
+  std::vector<std::size_t>& from_;
+  std::vector<std::size_t>& to_;
+  std::vector<std::size_t>& first_;
+  std::vector<std::size_t>& leaving_;
+  std::vector<char>& used_;
 };
 
-// Splits a closed walk at every repeated vertex into closed walks without repeats.
+// Splits closed walk k at every repeated vertex into closed walks without repeats.
 // `position` is indexed by point id, kNotOnStack for every id on entry and on exit.
-constexpr std::size_t kNotOnStack = static_cast<std::size_t>(-1);
-void split_at_repeats(const Walk& walk, std::vector<std::size_t>& position,
+void split_at_repeats(const Walks& walks, std::size_t k, std::vector<std::size_t>& position,
                       std::vector<Loop2>& out) {
   Loop2 stack;
   std::vector<std::size_t> stack_ids;
-  for (std::size_t k = 0; k < walk.points.size(); ++k) {
-    const Point2& p = walk.points[k];
-    const std::size_t id = walk.ids[k];
+  for (std::size_t i = walks.starts[k]; i < walks.starts[k + 1]; ++i) {
+    const Point2& p = walks.points[i];
+    const std::size_t id = walks.ids[i];
     if (position[id] == kNotOnStack) {
       position[id] = stack.size();
       stack.push_back(p);
@@ -134,7 +165,7 @@ void split_at_repeats(const Walk& walk, std::vector<std::size_t>& position,
     // p closes the stretch stack[position .. end]: emit it as its own loop.
     const std::size_t from = position[id];
     Loop2 piece(stack.begin() + static_cast<std::ptrdiff_t>(from), stack.end());
-    for (std::size_t i = from + 1; i < stack.size(); ++i) position[stack_ids[i]] = kNotOnStack;
+    for (std::size_t j = from + 1; j < stack.size(); ++j) position[stack_ids[j]] = kNotOnStack;
     stack.resize(from + 1);
     stack_ids.resize(from + 1);
     out.push_back(std::move(piece));
@@ -187,9 +218,18 @@ void drop_turned_over_holes(PolygonSet2& polygons) {
 
 PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
   std::vector<Loop2> loops;
-  Tracer tracer(edges);
-  std::vector<std::size_t> position(tracer.point_count(), kNotOnStack);
-  for (const Walk& walk : tracer.trace()) split_at_repeats(walk, position, loops);
+  {
+    thread_local TraceWorkspace workspace;
+    Tracer tracer(edges, workspace);
+    Walks& walks = workspace.walks;
+    tracer.trace(walks);
+    std::vector<std::size_t>& position = workspace.position;
+    position.assign(tracer.point_count(), kNotOnStack);
+    for (std::size_t k = 0; k + 1 < walks.starts.size(); ++k) {
+      split_at_repeats(walks, k, position, loops);
+    }
+    if (edges.size() > kKeptEdges) workspace = TraceWorkspace{};
+  }
 
   PolygonSet2 polygons;
   std::vector<Loop2> holes;
