@@ -35,12 +35,12 @@ Box2 bounds(const Boundary& loops) {
   return b;
 }
 
-// The clip of operands already normalized.
-ClipResult clip_normalized(PolygonSet2 a, const PolygonSet2& b) {
+// The clip of a normalized subject by a normalized region given as its loops and box.
+ClipResult clip_normalized(PolygonSet2 a, const Boundary& clip_loops, const Box2& clip_box) {
   ClipResult result;
   if (a.empty()) return result;
-  Boundary loops[2] = {boundary_of(a), boundary_of(b)};
-  if (b.empty() || !bounds(loops[0]).touches_or_overlaps(bounds(loops[1]))) {
+  Boundary loops[2] = {boundary_of(a), clip_loops};
+  if (clip_loops.empty() || !bounds(loops[0]).touches_or_overlaps(clip_box)) {
     result.outside = std::move(a);
     return result;
   }
@@ -51,6 +51,11 @@ ClipResult clip_normalized(PolygonSet2 a, const PolygonSet2& b) {
   result.inside = detail::assemble_polygons(edges.inside);
   result.outside = detail::assemble_polygons(edges.outside);
   return result;
+}
+
+ClipResult clip_normalized(PolygonSet2 a, const PolygonSet2& b) {
+  const Boundary clip_loops = boundary_of(b);
+  return clip_normalized(std::move(a), clip_loops, bounds(clip_loops));
 }
 
 }  // namespace
@@ -77,6 +82,13 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
     if (box.touches_or_overlaps(box_of(c))) near.push_back(c);
   }
   return clip_normalized(std::move(s), normalized(near));
+}
+
+ClipRegion::ClipRegion(const PolygonWithHoles2& clip_region)
+    : loops_(boundary_of(normalized(PolygonSet2{clip_region}))), box_(bounds(loops_)) {}
+
+ClipResult ClipRegion::clip(const PolygonWithHoles2& subject) const {
+  return clip_normalized(normalized(PolygonSet2{subject}), loops_, box_);
 }
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b) { return clip(a, b).inside; }

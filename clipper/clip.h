@@ -70,6 +70,7 @@
 #include <span>
 #include <stdexcept>
 
+#include "clipper/box.h"
 #include "clipper/polygon.h"
 
 namespace shadowgen::clipper {
@@ -128,6 +129,20 @@ ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_
 // piece comes from the same snapped graph, and pieces that share a boundary share its
 // vertices and do not overlap. Clips whose boxes miss the subject's are left out.
 ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips);
+
+// A clip region that many subjects are clipped by, as a template of hidden-surface
+// removal clips every piece behind it: normalized and taken apart into loops once.
+// clip(subject) is clip(subject, clip_region), the same pieces bit for bit.
+class ClipRegion {
+ public:
+  explicit ClipRegion(const PolygonWithHoles2& clip_region);
+
+  ClipResult clip(const PolygonWithHoles2& subject) const;
+
+ private:
+  std::vector<Loop2> loops_;  // every loop, region on its left
+  Box2 box_;
+};
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b);
 PolygonSet2 difference(const PolygonSet2& a, const PolygonSet2& b);

@@ -23,6 +23,18 @@ bool is_spike(const Point2& prev, const Point2& v, const Point2& next) {
 // removable, hence the stack and the final wrap-around.
 template <typename Redundant>
 bool clean(Loop2& loop, Redundant redundant) {
+  // Nothing to drop, the usual case, is seen without copying: the pass below tests the
+  // same triples, every vertex with its neighbours around the ring.
+  const std::size_t count = loop.size();
+  if (count >= 3) {
+    bool clean_already = true;
+    for (std::size_t i = 0; i < count && clean_already; ++i) {
+      const Point2& prev = loop[i == 0 ? count - 1 : i - 1];
+      const Point2& next = loop[i + 1 == count ? 0 : i + 1];
+      clean_already = loop[i] != next && !redundant(prev, loop[i], next);
+    }
+    if (clean_already) return true;
+  }
   bool changed = true;
   while (changed && loop.size() >= 3) {
     changed = false;

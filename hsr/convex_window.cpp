@@ -116,7 +116,8 @@ clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject
   if (turn_ != 0 && window_.holes.empty() && within(window_.outer, turn_, subject.outer)) {
     return {{subject}, {}};
   }
-  return clipper::clip(subject, window_);
+  if (!region_) region_.emplace(window_);
+  return region_->clip(subject);
 }
 
 }  // namespace shadowgen::hsr

@@ -7,6 +7,8 @@
 // from the sun most pairs whose bounding boxes overlap are faces that only share an edge or a
 // corner's neighbourhood, or lie wholly in one another's shadow.
 
+#include <optional>
+
 #include "clipper/clip.h"
 #include "clipper/polygon.h"
 
@@ -14,7 +16,8 @@ namespace shadowgen::hsr {
 
 class ConvexWindow {
  public:
-  // `window` must outlive this object.
+  // `window` must outlive this object. Not for use from several threads at once: the
+  // window is prepared for the clipper (clipper::ClipRegion) when first needed.
   explicit ConvexWindow(const clipper::PolygonWithHoles2& window);
 
   // What clipper::clip(subject, window) gives, up to vertices where a boundary runs
@@ -30,6 +33,7 @@ class ConvexWindow {
   const clipper::PolygonWithHoles2& window_;
   int turn_ = 0;         // +1: outer loop convex counter-clockwise, -1: clockwise, 0: not convex
   clipper::Loop2 hull_;  // the outer loop's convex hull, counter-clockwise, when not convex
+  mutable std::optional<clipper::ClipRegion> region_;  // the window, once a clip needs it
 };
 
 // +1 or -1 when `loop` is a convex loop turning that way (orient2d's sign), straight runs

@@ -337,6 +337,8 @@ OverlayEdges Graph::combine() const {
   auto in_both = [](const Winding& w) { return w[0] > 0 && w[1] > 0; };
   auto in_subject_only = [](const Winding& w) { return w[0] > 0 && w[1] <= 0; };
   OverlayEdges out;
+  out.inside.reserve(edges_.size());
+  out.outside.reserve(edges_.size());
   for (const Edge& e : edges_) {
     const Winding right = e.right, left = e.right + e.multiplicity;
     const Point2& lo = index_.point(e.lo);
