@@ -48,8 +48,8 @@ ClipResult clip_normalized(PolygonSet2 a, const Boundary& clip_loops, const Box2
   // decision from here on is exact on it.
   detail::snap_round(loops);
   const detail::OverlayEdges edges = detail::overlay(loops);
-  result.inside = detail::assemble_polygons(edges.inside);
-  result.outside = detail::assemble_polygons(edges.outside);
+  result.inside = detail::assemble_polygons(edges.inside, edges.point_count);
+  result.outside = detail::assemble_polygons(edges.outside, edges.point_count);
   return result;
 }
 

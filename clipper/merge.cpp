@@ -20,7 +20,8 @@ PolygonSet2 merge_adjacent(std::span<const PolygonWithHoles2> polygons) {
     for (const Loop2& h : p.holes) loops[0].push_back(h);
   }
   detail::snap_round(loops);
-  return detail::assemble_polygons(detail::overlay(loops).outside);
+  const detail::OverlayEdges edges = detail::overlay(loops);
+  return detail::assemble_polygons(edges.outside, edges.point_count);
 }
 
 }  // namespace shadowgen::clipper

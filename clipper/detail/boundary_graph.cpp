@@ -6,7 +6,6 @@
 #include "clipper/box.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
-#include "point_index.h"
 #include "point_location.h"
 
 namespace shadowgen::clipper::detail {
@@ -49,8 +48,7 @@ struct Walks {
 // per clip (inside and outside pieces), and for the small polygons of shadow generation
 // allocating it anew took about a tenth of the tracing's time.
 struct TraceWorkspace {
-  PointIndex index{0};
-  std::vector<std::size_t> from, to, first, leaving, fill, position;
+  std::vector<std::size_t> first, leaving, fill, position;
   std::vector<char> used;
   Walks walks;
 };
@@ -62,34 +60,24 @@ constexpr std::size_t kNotOnStack = static_cast<std::size_t>(-1);
 
 class Tracer {
  public:
-  Tracer(const std::vector<DirectedEdge>& edges, TraceWorkspace& w)
+  Tracer(const std::vector<DirectedEdge>& edges, std::size_t point_count, TraceWorkspace& w)
       : edges_(edges),
-        index_(w.index),
-        from_(w.from),
-        to_(w.to),
+        point_count_(point_count),
         first_(w.first),
         leaving_(w.leaving),
         used_(w.used) {
-    index_.reset(edges.size() + 1);
-    from_.resize(edges.size());
-    to_.resize(edges.size());
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      from_[e] = index_.id(edges[e].from);
-      to_[e] = index_.id(edges[e].to);
-    }
     // Edges leaving each point, in one array (counting sort by start point).
-    const std::size_t count = index_.size();
-    first_.assign(count + 1, 0);
-    for (std::size_t e = 0; e < edges.size(); ++e) ++first_[from_[e] + 1];
-    for (std::size_t v = 0; v < count; ++v) first_[v + 1] += first_[v];
+    first_.assign(point_count + 1, 0);
+    for (const DirectedEdge& e : edges) ++first_[e.from_id + 1];
+    for (std::size_t v = 0; v < point_count; ++v) first_[v + 1] += first_[v];
     leaving_.resize(edges.size());
     std::vector<std::size_t>& fill = w.fill;
     fill.assign(first_.begin(), first_.end() - 1);
-    for (std::size_t e = 0; e < edges.size(); ++e) leaving_[fill[from_[e]]++] = e;
+    for (std::size_t e = 0; e < edges.size(); ++e) leaving_[fill[edges[e].from_id]++] = e;
     used_.assign(edges.size(), 0);
   }
 
-  std::size_t point_count() const { return index_.size(); }
+  std::size_t point_count() const { return point_count_; }
 
   void trace(Walks& walks) {
     walks.points.clear();
@@ -99,14 +87,14 @@ class Tracer {
       if (used_[start]) continue;
       std::size_t e = start;
       used_[e] = 1;
-      const std::size_t origin = from_[start];
+      const std::size_t origin = edges_[start].from_id;
       bool closed = true;
       while (true) {
         walks.points.push_back(edges_[e].from);
-        walks.ids.push_back(from_[e]);
+        walks.ids.push_back(edges_[e].from_id);
         const Point2& back = edges_[e].from;
         const Point2& v = edges_[e].to;
-        const std::size_t vid = to_[e];
+        const std::size_t vid = edges_[e].to_id;
         // Candidates: unused edges leaving v, and the first edge when v closes the walk.
         std::size_t best = kNone;
         for (std::size_t k = first_[vid]; k < first_[vid + 1]; ++k) {
@@ -139,9 +127,7 @@ class Tracer {
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
   const std::vector<DirectedEdge>& edges_;
-  PointIndex& index_;
-  std::vector<std::size_t>& from_;
-  std::vector<std::size_t>& to_;
+  std::size_t point_count_;
   std::vector<std::size_t>& first_;
   std::vector<std::size_t>& leaving_;
   std::vector<char>& used_;
@@ -216,11 +202,11 @@ void drop_turned_over_holes(PolygonSet2& polygons) {
 
 }  // namespace
 
-PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges) {
+PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges, std::size_t point_count) {
   std::vector<Loop2> loops;
   {
     thread_local TraceWorkspace workspace;
-    Tracer tracer(edges, workspace);
+    Tracer tracer(edges, point_count, workspace);
     Walks& walks = workspace.walks;
     tracer.trace(walks);
     std::vector<std::size_t>& position = workspace.position;

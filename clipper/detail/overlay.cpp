@@ -337,6 +337,7 @@ OverlayEdges Graph::combine() const {
   auto in_both = [](const Winding& w) { return w[0] > 0 && w[1] > 0; };
   auto in_subject_only = [](const Winding& w) { return w[0] > 0 && w[1] <= 0; };
   OverlayEdges out;
+  out.point_count = index_.size();
   out.inside.reserve(edges_.size());
   out.outside.reserve(edges_.size());
   for (const Edge& e : edges_) {
@@ -344,10 +345,12 @@ OverlayEdges Graph::combine() const {
     const Point2& lo = index_.point(e.lo);
     const Point2& hi = index_.point(e.hi);
     if (in_both(left) != in_both(right)) {
-      out.inside.push_back(in_both(left) ? DirectedEdge{lo, hi} : DirectedEdge{hi, lo});
+      out.inside.push_back(in_both(left) ? DirectedEdge{lo, hi, e.lo, e.hi}
+                                         : DirectedEdge{hi, lo, e.hi, e.lo});
     }
     if (in_subject_only(left) != in_subject_only(right)) {
-      out.outside.push_back(in_subject_only(left) ? DirectedEdge{lo, hi} : DirectedEdge{hi, lo});
+      out.outside.push_back(in_subject_only(left) ? DirectedEdge{lo, hi, e.lo, e.hi}
+                                                  : DirectedEdge{hi, lo, e.hi, e.lo});
     }
   }
   return out;

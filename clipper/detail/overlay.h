@@ -22,6 +22,7 @@
 // An edge bounds the intersection (or the difference) where that holds of the faces on
 // one side and not the other, and runs with the region on its left.
 
+#include <cstddef>
 #include <vector>
 
 #include "boundary_graph.h"
@@ -32,6 +33,7 @@ namespace shadowgen::clipper::detail {
 struct OverlayEdges {
   std::vector<DirectedEdge> inside;   // bounding subject ∩ clip
   std::vector<DirectedEdge> outside;  // bounding subject − clip
+  std::size_t point_count = 0;        // the ids of the edges' points are below it
 };
 
 // loops[0], loops[1]: the snapped loops of the subject and the clip, each with its

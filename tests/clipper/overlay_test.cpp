@@ -32,7 +32,8 @@ struct Pieces {
 Pieces combine(const std::vector<Loop2>& subject, const std::vector<Loop2>& clip) {
   const std::vector<Loop2> loops[2] = {subject, clip};
   const OverlayEdges edges = overlay(loops);
-  return {assemble_polygons(edges.inside), assemble_polygons(edges.outside)};
+  return {assemble_polygons(edges.inside, edges.point_count),
+          assemble_polygons(edges.outside, edges.point_count)};
 }
 
 TEST(Overlay, OverlappingSquaresSharingAVertexRow) {
