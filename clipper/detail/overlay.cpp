@@ -71,6 +71,7 @@ class Graph {
   void collect_incidence();
   void spread_windings();
   std::vector<Winding> windings_outside_parts(const std::vector<std::uint32_t>& seeds) const;
+  void spread_part(std::uint32_t seed, const Winding& outside);
   void spread_around(std::uint32_t v, std::uint32_t from_edge, std::vector<std::uint32_t>& todo);
 
   std::span<std::uint32_t> edges_at(std::uint32_t v) {
@@ -266,8 +267,68 @@ std::vector<Winding> Graph::windings_outside_parts(const std::vector<std::uint32
   return out;
 }
 
+// Spreads the windings over the part of `seed`, its lowest-leftmost vertex, whose
+// outside (the sector straight left of it) has the windings `outside`.
+void Graph::spread_part(std::uint32_t seed, const Winding& outside) {
+  const std::span<std::uint32_t> at = edges_at(seed);
+  if (at.empty()) return;
+  // Every edge of the seed runs to the right of it, or straight up: the sector left of
+  // the one turned furthest counter-clockwise contains the direction straight left,
+  // outside all of the part's loops.
+  const Point2& p = index_.point(seed);
+  std::uint32_t top = at.front();
+  for (const std::uint32_t e : at) {
+    if (orient2d(p, index_.point(far_end(edges_[top], seed)),
+                 index_.point(far_end(edges_[e], seed))) == Orientation::kCounterClockwise) {
+      top = e;
+    }
+  }
+  Edge& first = edges_[top];
+  first.right = first.lo == seed ? outside - first.multiplicity : outside;
+  first.known = true;
+  std::vector<char>& done = w_.done;
+  std::vector<std::uint32_t>& todo = w_.todo;  // pairs: a vertex, and an edge known
+  todo.assign({seed, top, far_end(first, seed), top});
+  while (!todo.empty()) {
+    const std::uint32_t e = todo.back();
+    todo.pop_back();
+    const std::uint32_t v = todo.back();
+    todo.pop_back();
+    if (done[v]) continue;
+    done[v] = 1;
+    spread_around(v, e, todo);
+  }
+}
+
 void Graph::spread_windings() {
   const std::size_t count = index_.size();
+  std::vector<char>& done = w_.done;
+  done.assign(count, 0);
+  if (count == 0) return;
+  // Most overlays are one connected part. The lowest-leftmost vertex of all lies outside
+  // every loop, so the spreading starts there with no winding; only where it leaves
+  // vertices unreached are the parts found and located against each other. (Where two
+  // distinct points compare equal, a zero of either sign, the parts are found too, as
+  // they pick their seeds.)
+  std::uint32_t lowest = 0;
+  bool tie = false;
+  for (std::uint32_t v = 1; v < count; ++v) {
+    const Point2& p = index_.point(v);
+    const Point2& q = index_.point(lowest);
+    if (p < q) {
+      lowest = v;
+      tie = false;
+    } else if (!(q < p)) {
+      tie = true;
+    }
+  }
+  if (!tie) {
+    spread_part(lowest, Winding{});
+    if (std::find(done.begin(), done.end(), 0) == done.end()) return;
+    for (Edge& e : edges_) e.known = false;
+    done.assign(count, 0);
+  }
+
   constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   part_.assign(count, kNone);
   // The connected parts, each with its lowest-leftmost vertex.
@@ -299,38 +360,7 @@ void Graph::spread_windings() {
   // Parts are located against each other.
   const std::vector<Winding> outside =
       seeds.size() > 1 ? windings_outside_parts(seeds) : std::vector<Winding>(seeds.size());
-  std::vector<char>& done = w_.done;
-  done.assign(count, 0);
-  std::vector<std::uint32_t>& todo = w_.todo;  // pairs: a vertex, and an edge known
-  for (std::uint32_t part = 0; part < seeds.size(); ++part) {
-    const std::uint32_t seed = seeds[part];
-    const std::span<std::uint32_t> at = edges_at(seed);
-    if (at.empty()) continue;
-    // Every edge of the seed runs to the right of it, or straight up: the sector left of
-    // the one turned furthest counter-clockwise contains the direction straight left,
-    // outside all of the part's loops.
-    const Point2& p = index_.point(seed);
-    std::uint32_t top = at.front();
-    for (const std::uint32_t e : at) {
-      if (orient2d(p, index_.point(far_end(edges_[top], seed)),
-                   index_.point(far_end(edges_[e], seed))) == Orientation::kCounterClockwise) {
-        top = e;
-      }
-    }
-    Edge& first = edges_[top];
-    first.right = first.lo == seed ? outside[part] - first.multiplicity : outside[part];
-    first.known = true;
-    todo.assign({seed, top, far_end(first, seed), top});
-    while (!todo.empty()) {
-      const std::uint32_t e = todo.back();
-      todo.pop_back();
-      const std::uint32_t v = todo.back();
-      todo.pop_back();
-      if (done[v]) continue;
-      done[v] = 1;
-      spread_around(v, e, todo);
-    }
-  }
+  for (std::uint32_t part = 0; part < seeds.size(); ++part) spread_part(seeds[part], outside[part]);
 }
 
 OverlayEdges Graph::combine() const {
