@@ -142,27 +142,16 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     e.ymin = std::min(e.from.y, e.to.y) - reach;
     e.ymax = std::max(e.from.y, e.to.y) + reach;
   }
-  // Vertices by x, edges by the left side of their boxes: each edge meets only the
-  // vertices and edges in its box's x-range.
-  thread_local std::vector<std::uint32_t> by_x, by_left;
-  by_x.resize(edges.size());
-  for (std::uint32_t k = 0; k < edges.size(); ++k) by_x[k] = k;
-  by_left = by_x;
-  std::sort(by_x.begin(), by_x.end(),
-            [](std::uint32_t a, std::uint32_t b) { return edges[a].from.x < edges[b].from.x; });
-  std::sort(by_left.begin(), by_left.end(),
-            [](std::uint32_t a, std::uint32_t b) { return edges[a].xmin < edges[b].xmin; });
+  // At most kShortcutEdges edges: every pair is looked at, box first (a sweep's sorting
+  // cost more than it saved at these sizes).
   std::size_t splits = 0;
   // Vertices: apart from one another, and each clear of every edge or in its way between
   // its ends (then found there by both edges the vertex ends). Every vertex starts an
   // edge, and a point within the reach of it lies in that edge's grown box.
   for (std::uint32_t m = 0; m < edges.size(); ++m) {
     const Edge& e = edges[m];
-    auto k = std::lower_bound(by_x.begin(), by_x.end(), e.xmin, [](std::uint32_t index, double x) {
-      return edges[index].from.x < x;
-    });
-    for (; k != by_x.end() && edges[*k].from.x <= e.xmax; ++k) {
-      const Point2& v = edges[*k].from;
+    for (const Edge& other : edges) {
+      const Point2& v = other.from;
       if (!e.near(v) || v == e.from) continue;
       if (!apart(v, e.from, reach)) return false;
       if (v == e.to || off_line(v, e.from, e.to, reach)) continue;
@@ -174,14 +163,11 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   // Proper crossings, rounded: apart from every vertex and clear of every edge but their
   // own two.
   std::size_t crossings = 0;
-  for (std::size_t first = 0; first < by_left.size(); ++first) {
-    const std::uint32_t i = by_left[first];
+  for (std::uint32_t i = 0; i < edges.size(); ++i) {
     const Edge& a = edges[i];
-    for (std::size_t second = first + 1;
-         second < by_left.size() && edges[by_left[second]].xmin <= a.xmax; ++second) {
-      const std::uint32_t j = by_left[second];
+    for (std::uint32_t j = i + 1; j < edges.size(); ++j) {
       const Edge& b = edges[j];
-      if (a.ymax < b.ymin || b.ymax < a.ymin) continue;
+      if (a.xmax < b.xmin || b.xmax < a.xmin || a.ymax < b.ymin || b.ymax < a.ymin) continue;
       if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
       if (!properly_cross(a.from, a.to, b.from, b.to)) continue;
       // A vertex of one in the other's way (a hair across it): routed through, not crossed.
