@@ -121,10 +121,8 @@ Determinant exact_determinant(const Point2& a, const Point2& b, const Point2& c)
                                       two_diff(c.x, a.x));
 }
 
-// Shewchuk's ccwerrboundA: when |det| exceeds this times the permanent, the rounded
-// determinant has the exact sign.
+// The unit roundoff u (orient2d's bound, kOrient2dBound, is in predicates.h).
 constexpr double kEpsilon = 0x1p-53;
-constexpr double kOrientBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 // Shewchuk's o3derrboundA, the same for the 3x3 determinant.
 constexpr double kOrient3Bound = (7.0 + 56.0 * kEpsilon) * kEpsilon;
 
@@ -135,12 +133,7 @@ Orientation to_orientation(double s) {
 
 }  // namespace
 
-Orientation orient2d(const Point2& a, const Point2& b, const Point2& c) {
-  const double left = (b.x - a.x) * (c.y - a.y);
-  const double right = (b.y - a.y) * (c.x - a.x);
-  const double det = left - right;
-  const double bound = kOrientBound * (std::fabs(left) + std::fabs(right));
-  if (det > bound || -det > bound) return to_orientation(det);
+Orientation orient2d_exact(const Point2& a, const Point2& b, const Point2& c) {
   return to_orientation(exact_determinant(a, b, c).sign());
 }
 
@@ -154,7 +147,7 @@ int dot_sign(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
   const double left = (b.x - a.x) * (d.x - c.x);
   const double right = (b.y - a.y) * (d.y - c.y);
   const double dot = left + right;
-  const double bound = kOrientBound * (std::fabs(left) + std::fabs(right));
+  const double bound = kOrient2dBound * (std::fabs(left) + std::fabs(right));
   if (dot > bound) return 1;
   if (-dot > bound) return -1;
   // (b − a)·(d − c) = bax * dcx − (−bay) * dcy.

@@ -8,6 +8,7 @@
 // the given doubles, provided no intermediate product underflows (inputs of magnitude
 // above about 1e-140, or zero) or overflows (below about 1e150).
 
+#include <cmath>
 #include <glm/vec3.hpp>
 
 #include "clipper/point.h"
@@ -17,7 +18,11 @@ namespace shadowgen::clipper {
 enum class Orientation { kClockwise = -1, kCollinear = 0, kCounterClockwise = 1 };
 
 // Sign of (b - a) x (c - a): counter-clockwise when c lies left of the line a -> b.
-Orientation orient2d(const Point2& a, const Point2& b, const Point2& c);
+// Inline: the clipper asks it millions of times, nearly always settled by the filter.
+inline Orientation orient2d(const Point2& a, const Point2& b, const Point2& c);
+
+// orient2d's answer from the exact determinant, where its filter cannot tell.
+Orientation orient2d_exact(const Point2& a, const Point2& b, const Point2& c);
 
 // The determinant of orient2d itself, rounded once from its exact value: the sign is
 // exact and the magnitude has a relative error below 2^-52.
@@ -64,5 +69,19 @@ int compare_y(const Midpoint2& m, double y);
 
 // Sign of (q - p) x (m - p), exact in the same sense as orient2d.
 Orientation orient2d(const Point2& p, const Point2& q, const Midpoint2& m);
+
+// Shewchuk's ccwerrboundA: when |det| exceeds this times the permanent, the rounded
+// determinant of orient2d has the exact sign.
+inline constexpr double kOrient2dBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+
+inline Orientation orient2d(const Point2& a, const Point2& b, const Point2& c) {
+  const double left = (b.x - a.x) * (c.y - a.y);
+  const double right = (b.y - a.y) * (c.x - a.x);
+  const double det = left - right;
+  const double bound = kOrient2dBound * (std::fabs(left) + std::fabs(right));
+  if (det > bound) return Orientation::kCounterClockwise;
+  if (-det > bound) return Orientation::kClockwise;
+  return orient2d_exact(a, b, c);
+}
 
 }  // namespace shadowgen::clipper
