@@ -48,7 +48,7 @@ struct Walks {
 // per clip (inside and outside pieces), and for the small polygons of shadow generation
 // allocating it anew took about a tenth of the tracing's time.
 struct TraceWorkspace {
-  std::vector<std::size_t> first, leaving, fill, position;
+  std::vector<std::size_t> first, leaving, fill, position, stack_ids;
   std::vector<char> used;
   Walks walks;
 };
@@ -136,9 +136,10 @@ class Tracer {
 // Splits closed walk k at every repeated vertex into closed walks without repeats.
 // `position` is indexed by point id, kNotOnStack for every id on entry and on exit.
 void split_at_repeats(const Walks& walks, std::size_t k, std::vector<std::size_t>& position,
-                      std::vector<Loop2>& out) {
+                      std::vector<std::size_t>& stack_ids, std::vector<Loop2>& out) {
   Loop2 stack;
-  std::vector<std::size_t> stack_ids;
+  stack.reserve(walks.starts[k + 1] - walks.starts[k]);
+  stack_ids.clear();
   for (std::size_t i = walks.starts[k]; i < walks.starts[k + 1]; ++i) {
     const Point2& p = walks.points[i];
     const std::size_t id = walks.ids[i];
@@ -211,8 +212,9 @@ PolygonSet2 assemble_polygons(const std::vector<DirectedEdge>& edges, std::size_
     tracer.trace(walks);
     std::vector<std::size_t>& position = workspace.position;
     position.assign(tracer.point_count(), kNotOnStack);
+    loops.reserve(walks.starts.size() - 1);
     for (std::size_t k = 0; k + 1 < walks.starts.size(); ++k) {
-      split_at_repeats(walks, k, position, loops);
+      split_at_repeats(walks, k, position, workspace.stack_ids, loops);
     }
     if (edges.size() > kKeptEdges) workspace = TraceWorkspace{};
   }
