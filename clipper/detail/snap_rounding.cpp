@@ -1,6 +1,7 @@
 #include "snap_rounding.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -136,23 +137,40 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     }
   }
   const double reach = kClearPixels * snap_distance({magnitude, magnitude});
-  for (Edge& e : edges) {
+  // At most kShortcutEdges edges: every pair is looked at, boxes first (a sweep's sorting
+  // cost more than it saved at these sizes). The vertices and boxes are also laid out
+  // coordinate by coordinate, so that a box is tested against all of them at once.
+  const std::size_t n = edges.size();
+  std::array<double, kShortcutEdges> vx, vy, bx0, bx1, by0, by1;
+  for (std::size_t k = 0; k < n; ++k) {
+    Edge& e = edges[k];
     e.xmin = std::min(e.from.x, e.to.x) - reach;
     e.xmax = std::max(e.from.x, e.to.x) + reach;
     e.ymin = std::min(e.from.y, e.to.y) - reach;
     e.ymax = std::max(e.from.y, e.to.y) + reach;
+    vx[k] = e.from.x;
+    vy[k] = e.from.y;
+    bx0[k] = e.xmin;
+    bx1[k] = e.xmax;
+    by0[k] = e.ymin;
+    by1[k] = e.ymax;
   }
-  // At most kShortcutEdges edges: every pair is looked at, box first (a sweep's sorting
-  // cost more than it saved at these sizes).
+  std::array<unsigned char, kShortcutEdges> hit;
   std::size_t splits = 0;
   // Vertices: apart from one another, and each clear of every edge or in its way between
   // its ends (then found there by both edges the vertex ends). Every vertex starts an
   // edge, and a point within the reach of it lies in that edge's grown box.
-  for (std::uint32_t m = 0; m < edges.size(); ++m) {
+  for (std::uint32_t m = 0; m < n; ++m) {
     const Edge& e = edges[m];
-    for (const Edge& other : edges) {
-      const Point2& v = other.from;
-      if (!e.near(v) || v == e.from) continue;
+    for (std::size_t k = 0; k < n; ++k) {
+      hit[k] = static_cast<unsigned char>(
+          static_cast<int>(vx[k] >= e.xmin) & static_cast<int>(vx[k] <= e.xmax) &
+          static_cast<int>(vy[k] >= e.ymin) & static_cast<int>(vy[k] <= e.ymax));
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      if (hit[k] == 0) continue;
+      const Point2& v = edges[k].from;
+      if (v == e.from) continue;
       if (!apart(v, e.from, reach)) return false;
       if (v == e.to || off_line(v, e.from, e.to, reach)) continue;
       if (!in_way(v, e.from, e.to) || !apart(v, e.to, reach)) return false;
@@ -163,11 +181,16 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   // Proper crossings, rounded: apart from every vertex and clear of every edge but their
   // own two.
   std::size_t crossings = 0;
-  for (std::uint32_t i = 0; i < edges.size(); ++i) {
+  for (std::uint32_t i = 0; i < n; ++i) {
     const Edge& a = edges[i];
-    for (std::uint32_t j = i + 1; j < edges.size(); ++j) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      hit[j] = static_cast<unsigned char>(
+          static_cast<int>(bx0[j] <= a.xmax) & static_cast<int>(a.xmin <= bx1[j]) &
+          static_cast<int>(by0[j] <= a.ymax) & static_cast<int>(a.ymin <= by1[j]));
+    }
+    for (std::uint32_t j = i + 1; j < n; ++j) {
+      if (hit[j] == 0) continue;
       const Edge& b = edges[j];
-      if (a.xmax < b.xmin || b.xmax < a.xmin || a.ymax < b.ymin || b.ymax < a.ymin) continue;
       if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
       if (!properly_cross(a.from, a.to, b.from, b.to)) continue;
       // A vertex of one in the other's way (a hair across it): routed through, not crossed.
