@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -155,21 +156,22 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     by0[k] = e.ymin;
     by1[k] = e.ymax;
   }
-  std::array<unsigned char, kShortcutEdges> hit;
+  static_assert(kShortcutEdges <= 64, "one bit per edge in a 64-bit mask");
   std::size_t splits = 0;
   // Vertices: apart from one another, and each clear of every edge or in its way between
   // its ends (then found there by both edges the vertex ends). Every vertex starts an
   // edge, and a point within the reach of it lies in that edge's grown box.
   for (std::uint32_t m = 0; m < n; ++m) {
     const Edge& e = edges[m];
+    std::uint64_t hits = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      hit[k] = static_cast<unsigned char>(
-          static_cast<int>(vx[k] >= e.xmin) & static_cast<int>(vx[k] <= e.xmax) &
-          static_cast<int>(vy[k] >= e.ymin) & static_cast<int>(vy[k] <= e.ymax));
+      const bool in =
+          static_cast<bool>(static_cast<int>(vx[k] >= e.xmin) & static_cast<int>(vx[k] <= e.xmax) &
+                            static_cast<int>(vy[k] >= e.ymin) & static_cast<int>(vy[k] <= e.ymax));
+      hits |= static_cast<std::uint64_t>(in) << k;
     }
-    for (std::size_t k = 0; k < n; ++k) {
-      if (hit[k] == 0) continue;
-      const Point2& v = edges[k].from;
+    for (; hits != 0; hits &= hits - 1) {
+      const Point2& v = edges[static_cast<std::size_t>(std::countr_zero(hits))].from;
       if (v == e.from) continue;
       if (!apart(v, e.from, reach)) return false;
       if (v == e.to || off_line(v, e.from, e.to, reach)) continue;
@@ -183,13 +185,15 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   std::size_t crossings = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
     const Edge& a = edges[i];
+    std::uint64_t hits = 0;
     for (std::size_t j = i + 1; j < n; ++j) {
-      hit[j] = static_cast<unsigned char>(
+      const bool meet = static_cast<bool>(
           static_cast<int>(bx0[j] <= a.xmax) & static_cast<int>(a.xmin <= bx1[j]) &
           static_cast<int>(by0[j] <= a.ymax) & static_cast<int>(a.ymin <= by1[j]));
+      hits |= static_cast<std::uint64_t>(meet) << j;
     }
-    for (std::uint32_t j = i + 1; j < n; ++j) {
-      if (hit[j] == 0) continue;
+    for (; hits != 0; hits &= hits - 1) {
+      const auto j = static_cast<std::uint32_t>(std::countr_zero(hits));
       const Edge& b = edges[j];
       if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
       if (!properly_cross(a.from, a.to, b.from, b.to)) continue;
