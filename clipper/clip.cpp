@@ -39,11 +39,22 @@ Box2 bounds(const Boundary& loops) {
 ClipResult clip_normalized(PolygonSet2 a, const Boundary& clip_loops, const Box2& clip_box) {
   ClipResult result;
   if (a.empty()) return result;
-  Boundary loops[2] = {boundary_of(a), clip_loops};
-  if (clip_loops.empty() || !bounds(loops[0]).touches_or_overlaps(clip_box)) {
+  Box2 box;
+  for (const PolygonWithHoles2& p : a) {
+    box.add(box_of(p.outer));
+    for (const Loop2& h : p.holes) box.add(box_of(h));
+  }
+  if (clip_loops.empty() || !box.touches_or_overlaps(clip_box)) {
     result.outside = std::move(a);
     return result;
   }
+  // The subject's loops are its own from here on: moved, not copied.
+  Boundary loops[2];
+  for (PolygonWithHoles2& p : a) {
+    loops[0].push_back(std::move(p.outer));
+    for (Loop2& h : p.holes) loops[0].push_back(std::move(h));
+  }
+  loops[1] = clip_loops;
   // Snapped together, the two boundaries form a plane graph in doubles, and every
   // decision from here on is exact on it.
   detail::snap_round(loops);
@@ -65,7 +76,7 @@ ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
 }
 
 ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_region) {
-  return clip(PolygonSet2{subject}, PolygonSet2{clip_region});
+  return clip_normalized(normalized_polygon(subject), normalized_polygon(clip_region));
 }
 
 ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHoles2> clips) {
@@ -74,7 +85,7 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
   // snap rounding and one overlay then give every piece, all from the same snapped
   // graph, so pieces that share a boundary share its vertices. Clips whose boxes miss
   // the subject's cannot meet it and are left out.
-  PolygonSet2 s = normalized(PolygonSet2{subject});
+  PolygonSet2 s = normalized_polygon(subject);
   if (s.empty()) return {};
   const Box2 box = box_of(s.front());  // one polygon in, at most one out
   PolygonSet2 near;
@@ -85,10 +96,10 @@ ClipResult clip(const PolygonWithHoles2& subject, std::span<const PolygonWithHol
 }
 
 ClipRegion::ClipRegion(const PolygonWithHoles2& clip_region)
-    : loops_(boundary_of(normalized(PolygonSet2{clip_region}))), box_(bounds(loops_)) {}
+    : loops_(boundary_of(normalized_polygon(clip_region))), box_(bounds(loops_)) {}
 
 ClipResult ClipRegion::clip(const PolygonWithHoles2& subject) const {
-  return clip_normalized(normalized(PolygonSet2{subject}), loops_, box_);
+  return clip_normalized(normalized_polygon(subject), loops_, box_);
 }
 
 PolygonSet2 intersection(const PolygonSet2& a, const PolygonSet2& b) { return clip(a, b).inside; }

@@ -162,22 +162,36 @@ bool encloses_counter_clockwise(const Loop2& loop) {
   return is_counter_clockwise(loop);
 }
 
+namespace {
+
+void append_normalized(const PolygonWithHoles2& p, PolygonSet2& out) {
+  PolygonWithHoles2 q;
+  q.outer = p.outer;
+  if (!clean_loop(q.outer)) return;
+  if (!encloses_counter_clockwise(q.outer)) std::reverse(q.outer.begin(), q.outer.end());
+  q.holes.reserve(p.holes.size());
+  for (const Loop2& h : p.holes) {
+    Loop2 hole = h;
+    if (!clean_loop(hole)) continue;
+    if (encloses_counter_clockwise(hole)) std::reverse(hole.begin(), hole.end());
+    q.holes.push_back(std::move(hole));
+  }
+  out.push_back(std::move(q));
+}
+
+}  // namespace
+
 PolygonSet2 normalized(const PolygonSet2& polygons) {
   PolygonSet2 out;
   out.reserve(polygons.size());
-  for (const PolygonWithHoles2& p : polygons) {
-    PolygonWithHoles2 q;
-    q.outer = p.outer;
-    if (!clean_loop(q.outer)) continue;
-    if (!encloses_counter_clockwise(q.outer)) std::reverse(q.outer.begin(), q.outer.end());
-    for (const Loop2& h : p.holes) {
-      Loop2 hole = h;
-      if (!clean_loop(hole)) continue;
-      if (encloses_counter_clockwise(hole)) std::reverse(hole.begin(), hole.end());
-      q.holes.push_back(std::move(hole));
-    }
-    out.push_back(std::move(q));
-  }
+  for (const PolygonWithHoles2& p : polygons) append_normalized(p, out);
+  return out;
+}
+
+PolygonSet2 normalized_polygon(const PolygonWithHoles2& polygon) {
+  PolygonSet2 out;
+  out.reserve(1);
+  append_normalized(polygon, out);
   return out;
 }
 

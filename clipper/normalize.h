@@ -18,6 +18,8 @@ bool remove_spikes(Loop2& loop);
 // Cleans every loop, drops loops without area, orients outer loops counter-clockwise and
 // holes clockwise. A polygon whose outer loop has no area is dropped with its holes.
 PolygonSet2 normalized(const PolygonSet2& polygons);
+// The same for one polygon: none or one.
+PolygonSet2 normalized_polygon(const PolygonWithHoles2& polygon);
 
 // Exact orientation of a loop without spikes (at least three vertices, not all on one
 // line): the turn at its lexicographically smallest vertex, which is never straight.
