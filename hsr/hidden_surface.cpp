@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <queue>
+#include <stdexcept>
 #include <utility>
 
 #include "clipper/box.h"
@@ -323,34 +324,51 @@ std::vector<Fragment> sort_regions(std::vector<std::vector<Piece>> by_region,
 
 VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const View& view,
                                        const HsrOptions& options) {
+  std::vector<Plane3> planes(polygons.size());
+  for_each_in_parallel(polygons.size(), [&](std::size_t i) { planes[i] = plane_of(polygons[i]); });
+  return remove_hidden_surfaces(polygons, planes, view, options);
+}
+
+VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons,
+                                       std::span<const Plane3> planes, const View& view,
+                                       const HsrOptions& options) {
+  if (planes.size() != polygons.size()) {
+    throw std::invalid_argument("remove_hidden_surfaces: one plane per polygon");
+  }
   VisibleSurfaces result;
   HsrStats& stats = result.stats;
   stats.input_polygons = polygons.size();
-  result.planes.resize(polygons.size());
+  result.planes.assign(planes.begin(), planes.end());
   result.nearness.resize(polygons.size());
   std::vector<char> facing(polygons.size(), 0);
-  std::vector<Piece> pieces;
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    result.planes[i] = plane_of(polygons[i]);
+  // Each polygon's nearness and image, in parallel; the pieces then in input order.
+  std::vector<PolygonSet2> images(polygons.size());
+  std::vector<char> edge_on(polygons.size(), 0);
+  for_each_in_parallel(polygons.size(), [&](std::size_t i) {
     // Relative to the eye: far from the origin, the order of two faces meeting at an edge
     // (a wall on the ground) depends on offsets that the absolute plane loses.
     const glm::dvec3& normal = result.planes[i].normal;
     const std::optional<Nearness> nearness =
         view.nearness_on(normal, view.offset_from_eye(polygons[i].outer, normal));
     if (!nearness) {
-      ++stats.edge_on;
-      continue;
+      edge_on[i] = 1;
+      return;
     }
     result.nearness[i] = *nearness;
     facing[i] = view.is_perspective() ? view.offset_from_eye(polygons[i].outer, normal) < 0.0
                                       : glm::dot(normal, view.forward()) < 0.0;
-    PolygonSet2 image = clip_of(i, [&] { return project_polygon(polygons[i], view); });
-    if (image.empty()) {
+    images[i] = clip_of(i, [&] { return project_polygon(polygons[i], view); });
+  });
+  std::vector<Piece> pieces;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    if (edge_on[i]) {
+      ++stats.edge_on;
+    } else if (images[i].empty()) {
       ++stats.outside_view;
-      continue;
+    } else {
+      ++stats.projected_polygons;
+      for (PolygonWithHoles2& p : images[i]) pieces.push_back({std::move(p), i});
     }
-    ++stats.projected_polygons;
-    for (PolygonWithHoles2& p : image) pieces.push_back({std::move(p), i});
   }
 
   std::vector<clipper::Box2> boxes;

@@ -111,6 +111,12 @@ class PolygonClipError : public std::runtime_error {
 VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons, const View& view,
                                        const HsrOptions& options = {});
 
+// The same with each polygon's plane given (planes[i] == plane_of(polygons[i])), as
+// shadow generation has them for every light: not worked out again.
+VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons,
+                                       std::span<const Plane3> planes, const View& view,
+                                       const HsrOptions& options = {});
+
 // The image of `polygon` in `view`: clipped to the view's frustum (near plane first, in
 // 3D, so polygons crossing it are cut, never dropped), then projected. Empty when nothing
 // of it is in view or it is seen edge-on. Throws clipper::SnapRoundingError where the cut

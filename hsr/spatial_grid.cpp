@@ -108,4 +108,16 @@ void SpatialGrid::query(const clipper::Box2& box, std::vector<std::size_t>& out)
   }
 }
 
+void SpatialGrid::query_shared(const clipper::Box2& box, std::vector<std::size_t>& out) const {
+  out.insert(out.end(), wide_.begin(), wide_.end());
+  int x0, y0, x1, y1;
+  if (!cell_range(box, x0, y0, x1, y1)) return;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const std::vector<std::size_t>& cell = cells_[static_cast<std::size_t>(y) * nx_ + x];
+      out.insert(out.end(), cell.begin(), cell.end());
+    }
+  }
+}
+
 }  // namespace shadowgen::hsr

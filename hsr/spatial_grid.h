@@ -24,6 +24,9 @@ class SpatialGrid {
   void erase_wide(std::size_t item);
   // Appends, once each, the items whose cells meet `box` (a superset of the overlapping).
   void query(const clipper::Box2& box, std::vector<std::size_t>& out);
+  // The same without the once-each bookkeeping, so that several threads may query at
+  // once: an item whose box spans several cells comes once per cell.
+  void query_shared(const clipper::Box2& box, std::vector<std::size_t>& out) const;
 
   // True when `box` would go to the wide list.
   bool is_wide(const clipper::Box2& box) const;

@@ -278,16 +278,17 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
     return result;
   }
 
-  const detail::FaceParts parts = detail::flatten(scene);
+  const int threads =
+      options.threads ? static_cast<int>(options.threads) : tbb::info::default_concurrency();
+  tbb::task_arena arena(threads);
+  detail::FaceParts parts;
+  arena.execute([&] { parts = detail::flatten(scene); });
   std::mutex report_mutex;
   // Lights in parallel, and within each light the regions of its views (hsr/
   // image_regions.h) and its receivers, all on one pool of `threads` threads. The failure
   // passed on is the first light's whatever the threads did. With sun paths, the lights
   // go in batches, each summed before the next starts.
-  const int threads =
-      options.threads ? static_cast<int>(options.threads) : tbb::info::default_concurrency();
   const std::size_t batch_size = result.shadowed.sun_paths.empty() ? todo.size() : kLightsPerBatch;
-  tbb::task_arena arena(threads);
   arena.execute([&] {
     for (std::size_t first = 0; first < todo.size(); first += batch_size) {
       const std::vector<std::size_t> batch(

@@ -7,6 +7,7 @@
 #include "clipper/box.h"
 #include "hsr/convex_window.h"
 #include "hsr/hidden_surface.h"
+#include "hsr/parallel.h"
 #include "hsr/spatial_grid.h"
 #include "part_failure.h"
 
@@ -37,18 +38,21 @@ class GroupPieces {
 
   // The pieces of other members than `receiver` within `image`, the receiver's image,
   // appended to `out`. Not when empty().
-  void within(std::size_t receiver, const clipper::PolygonSet2& image, clipper::PolygonSet2& out) {
+  // Not when empty(). Calls may run in parallel.
+  void within(std::size_t receiver, const clipper::PolygonSet2& image,
+              clipper::PolygonSet2& out) const {
     clipper::Box2 box;
     std::vector<hsr::ConvexWindow> windows;
     for (const auto& p : image) {
       box.add(clipper::box_of(p));
       windows.emplace_back(p);
     }
-    near_.clear();
-    grid_->query(box, near_);
-    // In the pieces' own order, so the result does not depend on the grid's.
-    std::sort(near_.begin(), near_.end());
-    for (std::size_t i : near_) {
+    std::vector<std::size_t> near;
+    grid_->query_shared(box, near);
+    // Once each, in the pieces' own order, so the result does not depend on the grid's.
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (std::size_t i : near) {
       if (pieces_[i].owner == receiver || !box.overlaps(boxes_[i])) continue;
       // The image's parts are disjoint: the piece within each, in turn.
       for (const hsr::ConvexWindow& window : windows) {
@@ -66,7 +70,6 @@ class GroupPieces {
   std::vector<clipper::Box2> boxes_;
   clipper::Box2 extent_;
   std::optional<hsr::SpatialGrid> grid_;  // of the boxes, when there are pieces
-  std::vector<std::size_t> near_;
 };
 
 // The receivers of each coplanar group of two or more.
@@ -88,15 +91,17 @@ std::vector<clipper::PolygonSet2> seen_on_shared_planes(
   std::vector<clipper::PolygonSet2> extra(receivers.size());
   const std::span<const hsr::Polygon3> polygons = receivers.polygons();
   for (const auto& [group, members] : coplanar_receivers(receivers)) {
-    GroupPieces pieces(members, seen);
+    const GroupPieces pieces(members, seen);
     if (pieces.empty()) continue;
-    for (std::size_t k : members) {
-      if (!receivers.lit_side(k)) continue;
+    // The members in parallel (a city's grounds are one group): each writes its own list.
+    hsr::for_each_in_parallel(members.size(), [&](std::size_t i) {
+      const std::size_t k = members[i];
+      if (!receivers.lit_side(k)) return;
       on_part(receivers.part(k), [&] {
         const clipper::PolygonSet2 image = hsr::project_polygon(polygons[k], view);
         if (!image.empty()) pieces.within(k, image, extra[k]);
       });
-    }
+    });
   }
   return extra;
 }

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "coplanar_groups.h"
+#include "hsr/parallel.h"
 
 namespace shadowgen::detail {
 
@@ -16,7 +17,6 @@ FaceParts flatten(const Scene& scene) {
     for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k) {
       const hsr::Polygon3& p = scene.faces[f].parts[k];
       parts.polygons.push_back(p);
-      parts.planes.push_back(hsr::plane_of(p));
       parts.owners.push_back({f, k});
       for (const glm::dvec3& v : p.outer) {
         lo = glm::min(lo, v);
@@ -24,6 +24,11 @@ FaceParts flatten(const Scene& scene) {
       }
     }
   }
+  // The planes in parallel, on the threads of the calling task arena.
+  parts.planes.resize(parts.polygons.size());
+  hsr::for_each_in_parallel(parts.polygons.size(), [&parts](std::size_t i) {
+    parts.planes[i] = hsr::plane_of(parts.polygons[i]);
+  });
   // The box's point nearest the world's origin, not its middle: an image coordinate is
   // then off by a few ulps of min(2|p|, the box's diagonal) for every scene point p. The
   // middle of a box that spans 1e14 would cost a face near the origin 1e-2 in its lit

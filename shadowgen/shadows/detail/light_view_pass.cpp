@@ -18,7 +18,7 @@ std::vector<clipper::PolygonSet2> seen_by_view(const Receivers& receivers, const
                                                const hsr::HsrOptions& hsr, LightStats& stats) {
   hsr::VisibleSurfaces visible;
   try {
-    visible = hsr::remove_hidden_surfaces(receivers.polygons(), view, hsr);
+    visible = hsr::remove_hidden_surfaces(receivers.polygons(), receivers.planes(), view, hsr);
   } catch (const hsr::PolygonClipError& e) {
     throw PartFailure(receivers.part(e.polygon()), e.problem());
   }
