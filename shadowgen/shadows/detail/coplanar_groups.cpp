@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "clipper/predicates.h"
+#include "hsr/parallel.h"
 #include "hsr/vector_length.h"
 
 namespace shadowgen::detail {
@@ -74,36 +75,57 @@ std::vector<int> coplanar_groups(std::span<const hsr::Polygon3> polygons,
   // Fitted planes of exactly coplanar polygons differ only by rounding: a generous window
   // finds every candidate, the exact test decides.
   const double window = 1e-9 * std::max(scale, 1e-300);
-  struct Representative {
-    std::size_t polygon;
-    glm::dvec3 triple[3];
-    int id;
-    std::size_t members;
-  };
-  std::vector<Representative> reps;
-  std::size_t first_rep = 0;
-  int next_id = 0;
-  for (std::size_t i : order) {
-    if (glm::length(planes[i].normal) == 0.0) continue;  // no area: no plane
-    while (first_rep < reps.size() &&
-           canon[i].offset - canon[reps[first_rep].polygon].offset > window) {
-      ++first_rep;
+  // Where consecutive offsets lie more than the window apart, no polygon after the gap can
+  // join a group before it: the runs between such gaps are settled independently, in
+  // parallel, each numbering its groups from 0 in its own order; the numbers are then
+  // shifted by the groups of the runs before, which gives the numbering of one pass.
+  std::vector<std::size_t> runs{0};
+  for (std::size_t t = 1; t < n; ++t) {
+    if (canon[order[t]].offset - canon[order[t - 1]].offset > window) runs.push_back(t);
+  }
+  runs.push_back(n);
+  std::vector<int> groups_in_run(runs.size() - 1, 0);
+  hsr::for_each_in_parallel(runs.size() - 1, [&](std::size_t run) {
+    struct Representative {
+      std::size_t polygon;
+      glm::dvec3 triple[3];
+      int id;
+    };
+    std::vector<Representative> reps;
+    std::size_t first_rep = 0;
+    int next_id = 0;
+    for (std::size_t t = runs[run]; t < runs[run + 1]; ++t) {
+      const std::size_t i = order[t];
+      if (glm::length(planes[i].normal) == 0.0) continue;  // no area: no plane
+      while (first_rep < reps.size() &&
+             canon[i].offset - canon[reps[first_rep].polygon].offset > window) {
+        ++first_rep;
+      }
+      bool placed = false;
+      for (std::size_t r = first_rep; r < reps.size() && !placed; ++r) {
+        const Representative& rep = reps[r];
+        if (glm::dot(canon[i].normal, canon[rep.polygon].normal) < 1.0 - 1e-9) continue;
+        if (!exactly_on_plane(polygons[i], rep.triple)) continue;
+        group[i] = rep.id;
+        group[rep.polygon] = rep.id;
+        placed = true;
+      }
+      if (placed) continue;
+      Representative rep{i, {}, next_id};
+      if (!spanning_triple(polygons[i].outer, rep.triple)) continue;
+      ++next_id;
+      reps.push_back(rep);
     }
-    bool placed = false;
-    for (std::size_t r = first_rep; r < reps.size() && !placed; ++r) {
-      Representative& rep = reps[r];
-      if (glm::dot(canon[i].normal, canon[rep.polygon].normal) < 1.0 - 1e-9) continue;
-      if (!exactly_on_plane(polygons[i], rep.triple)) continue;
-      group[i] = rep.id;
-      group[rep.polygon] = rep.id;
-      ++rep.members;
-      placed = true;
+    groups_in_run[run] = next_id;
+  });
+  int shift = 0;
+  for (std::size_t run = 0; run + 1 < runs.size(); ++run) {
+    if (shift != 0) {
+      for (std::size_t t = runs[run]; t < runs[run + 1]; ++t) {
+        if (group[order[t]] >= 0) group[order[t]] += shift;
+      }
     }
-    if (placed) continue;
-    Representative rep{i, {}, next_id, 1};
-    if (!spanning_triple(polygons[i].outer, rep.triple)) continue;
-    ++next_id;
-    reps.push_back(rep);
+    shift += groups_in_run[run];
   }
   return group;
 }
