@@ -22,6 +22,9 @@ using Loop2 = std::vector<Point2>;
 struct PolygonWithHoles2 {
   Loop2 outer;
   std::vector<Loop2> holes;
+
+  // The same loops, vertex for vertex, in the same order.
+  friend bool operator==(const PolygonWithHoles2&, const PolygonWithHoles2&) = default;
 };
 
 // A region made of disjoint polygons with holes (a "multipolygon").
