@@ -90,7 +90,8 @@ std::vector<clipper::PolygonSet2> seen_on_shared_planes(
     const std::vector<clipper::PolygonSet2>& seen) {
   std::vector<clipper::PolygonSet2> extra(receivers.size());
   const std::span<const hsr::Polygon3> polygons = receivers.polygons();
-  for (const auto& [group, members] : coplanar_receivers(receivers)) {
+  for (const auto& group : coplanar_receivers(receivers)) {
+    const std::vector<std::size_t>& members = group.second;
     const GroupPieces pieces(members, seen);
     if (pieces.empty()) continue;
     // The members in parallel (a city's grounds are one group): each writes its own list.
