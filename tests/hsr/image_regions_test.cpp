@@ -2,24 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include <random>
 #include <vector>
+
+#include "tests/hsr/scenes.h"
 
 namespace shadowgen::hsr {
 namespace {
-
-std::vector<clipper::Box2> random_boxes(std::uint64_t seed, std::size_t count) {
-  std::mt19937_64 random(seed);
-  // Denser on the left: quantile cuts, not equal widths, balance the regions.
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<clipper::Box2> boxes;
-  for (std::size_t k = 0; k < count; ++k) {
-    const double x = 100.0 * unit(random) * unit(random), y = 50.0 * unit(random);
-    const double w = 0.1 + unit(random), h = 0.1 + unit(random);
-    boxes.push_back({x, y, x + w, y + h});
-  }
-  return boxes;
-}
 
 double area(const clipper::Box2& b) { return (b.xmax - b.xmin) * (b.ymax - b.ymin); }
 
@@ -29,7 +17,7 @@ TEST(ImageRegions, FewPiecesMakeOneRegion) {
   EXPECT_EQ(region_count_for(100000), 24u);
   EXPECT_EQ(region_count_for(100000000), 256u);
   EXPECT_TRUE(image_regions({}, 4).empty());
-  const std::vector<clipper::Box2> boxes = random_boxes(1, 10);
+  const std::vector<clipper::Box2> boxes = test::random_image_boxes(1, 10);
   const std::vector<clipper::Box2> one = image_regions(boxes, 1);
   ASSERT_EQ(one.size(), 1u);
   for (const clipper::Box2& b : boxes) EXPECT_TRUE(one[0].contains(b));
@@ -38,7 +26,7 @@ TEST(ImageRegions, FewPiecesMakeOneRegion) {
 // The regions tile the pieces' box: no two overlap, their areas add up to the box's, and
 // every piece's centre lies in one of them; quantile cuts give each about as many.
 TEST(ImageRegions, RegionsTileTheImageWithBalancedCounts) {
-  const std::vector<clipper::Box2> boxes = random_boxes(2, 20000);
+  const std::vector<clipper::Box2> boxes = test::random_image_boxes(2, 20000);
   clipper::Box2 extent;
   for (const clipper::Box2& b : boxes) extent.add(b);
   for (std::size_t count : {2u, 6u, 16u, 25u}) {

@@ -303,4 +303,18 @@ Scene almost_edge_on(std::uint64_t seed, const glm::dvec3& direction) {
   return scene;
 }
 
+std::vector<clipper::Box2> random_image_boxes(std::uint64_t seed, std::size_t count,
+                                              std::size_t wide_every) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<clipper::Box2> boxes;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double x = 100.0 * unit(random) * unit(random), y = 50.0 * unit(random);
+    const bool wide = wide_every != 0 && k % wide_every == 0;
+    const double w = wide ? 80.0 : 0.1 + unit(random), h = wide ? 40.0 : 0.1 + unit(random);
+    boxes.push_back({x, y, x + w, y + h});
+  }
+  return boxes;
+}
+
 }  // namespace shadowgen::test

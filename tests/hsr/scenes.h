@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "clipper/box.h"
 #include "hsr/polygon3.h"
 #include "hsr/view.h"
 
@@ -85,5 +86,11 @@ Scene near_parallel_stack(std::uint64_t seed, double gap);
 // 1e-3, 1e-6, 1e-9, 1e-12 or 0 radians (the last seen exactly edge-on when `direction`
 // is an axis). One orthographic view along `direction`, which must point downward.
 Scene almost_edge_on(std::uint64_t seed, const glm::dvec3& direction);
+
+// Image-space boxes of pieces: x in [0, 100], denser to the left (quantile cuts, not equal
+// widths, balance image regions over them), y in [0, 50], sides 0.1 to 1.1; every
+// `wide_every`-th box (0: none) is 80 × 40 instead, as wide as a ground plane.
+std::vector<clipper::Box2> random_image_boxes(std::uint64_t seed, std::size_t count,
+                                              std::size_t wide_every = 0);
 
 }  // namespace shadowgen::test
