@@ -1,7 +1,6 @@
 #include "snap_rounding.h"
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +8,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "box_masks.h"
 #include "clipper/clip.h"
 #include "clipper/predicates.h"
 #include "close_pairs.h"
@@ -142,7 +142,7 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   // cost more than it saved at these sizes). The vertices and boxes are also laid out
   // coordinate by coordinate, so that a box is tested against all of them at once.
   const std::size_t n = edges.size();
-  std::array<double, kShortcutEdges> vx, vy, bx0, bx1, by0, by1;
+  MaskLane vx, vy, bx0, bx1, by0, by1;
   for (std::size_t k = 0; k < n; ++k) {
     Edge& e = edges[k];
     e.xmin = std::min(e.from.x, e.to.x) - reach;
@@ -156,20 +156,15 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     by0[k] = e.ymin;
     by1[k] = e.ymax;
   }
-  static_assert(kShortcutEdges <= 64, "one bit per edge in a 64-bit mask");
+  for (MaskLane* lane : {&vx, &vy, &bx0, &bx1, &by0, &by1}) lane->pad(n);
+  static_assert(kShortcutEdges <= MaskLane::kCapacity, "one bit per edge in a 64-bit mask");
   std::size_t splits = 0;
   // Vertices: apart from one another, and each clear of every edge or in its way between
   // its ends (then found there by both edges the vertex ends). Every vertex starts an
   // edge, and a point within the reach of it lies in that edge's grown box.
   for (std::uint32_t m = 0; m < n; ++m) {
     const Edge& e = edges[m];
-    std::uint64_t hits = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const bool in =
-          static_cast<bool>(static_cast<int>(vx[k] >= e.xmin) & static_cast<int>(vx[k] <= e.xmax) &
-                            static_cast<int>(vy[k] >= e.ymin) & static_cast<int>(vy[k] <= e.ymax));
-      hits |= static_cast<std::uint64_t>(in) << k;
-    }
+    std::uint64_t hits = boxes_meeting(vx, vx, vy, vy, n, e.xmin, e.xmax, e.ymin, e.ymax);
     for (; hits != 0; hits &= hits - 1) {
       const Point2& v = edges[static_cast<std::size_t>(std::countr_zero(hits))].from;
       if (v == e.from) continue;
@@ -185,13 +180,10 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   std::size_t crossings = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
     const Edge& a = edges[i];
-    std::uint64_t hits = 0;
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const bool meet = static_cast<bool>(
-          static_cast<int>(bx0[j] <= a.xmax) & static_cast<int>(a.xmin <= bx1[j]) &
-          static_cast<int>(by0[j] <= a.ymax) & static_cast<int>(a.ymin <= by1[j]));
-      hits |= static_cast<std::uint64_t>(meet) << j;
-    }
+    // The boxes after this one's: bit i + 1 and up.
+    const std::uint64_t later = i + 1 == 64 ? 0 : ~std::uint64_t{0} << (i + 1);
+    std::uint64_t hits =
+        later & boxes_meeting(bx0, bx1, by0, by1, n, a.xmin, a.xmax, a.ymin, a.ymax);
     for (; hits != 0; hits &= hits - 1) {
       const auto j = static_cast<std::uint32_t>(std::countr_zero(hits));
       const Edge& b = edges[j];
