@@ -34,12 +34,20 @@ Point2 crossing_point(const Point2& a_start, const Point2& a_end, const Point2& 
   const double o1 = std::fabs(orient2d_value(q0, q1, p1));
   const double t = o0 / (o0 + o1);
   Point2 p{p0.x + t * (p1.x - p0.x), p0.y + t * (p1.y - p0.y)};
-  // The parameter's error moves the point along the shorter segment by 4u of its length,
-  // and the rounding by u·|P|: within 5u of each coordinate's magnitude only where the
-  // segment is short beside the smaller coordinate. Elsewhere, exactly.
+  // The parameter is within 6u of its own value (each determinant 2u, whose errors half
+  // cancel in the quotient, then the sum and the quotient u each), and the step along the
+  // shorter segment, t·(p1 − p0), within 8u of its own value per coordinate with the
+  // difference and the product: that coordinate of the point is off by at most
+  // 8u·|P.x − p0.x| + u·|P.x| (the sum's rounding). That is within 5u·|P.x| where the step
+  // is at most 3/8 of the coordinate (4u with room for p standing for P), in each
+  // coordinate; or where the whole shorter segment is short beside the smaller coordinate
+  // (4·length + |P.x| + |P.y| ≤ 4·min(|P.x|, |P.y|)), which holds for crossings of short
+  // edges away from the axes. Elsewhere (long edges, crossings near an axis), exactly.
   const double smaller = std::min(std::fabs(p.x), std::fabs(p.y));
   const double bound = 4.0 * std::sqrt(std::min(la, lb)) + std::fabs(p.x) + std::fabs(p.y);
-  if (!(bound <= 4.0 * smaller)) p = crossing_point_exact(p0, p1, q0, q1);
+  const bool short_steps = 8.0 * std::fabs(p.x - p0.x) <= 3.0 * std::fabs(p.x) &&
+                           8.0 * std::fabs(p.y - p0.y) <= 3.0 * std::fabs(p.y);
+  if (!short_steps && !(bound <= 4.0 * smaller)) p = crossing_point_exact(p0, p1, q0, q1);
   const double xlo = std::max(std::min(a0.x, a1.x), std::min(b0.x, b1.x));
   const double xhi = std::min(std::max(a0.x, a1.x), std::max(b0.x, b1.x));
   const double ylo = std::max(std::min(a0.y, a1.y), std::min(b0.y, b1.y));

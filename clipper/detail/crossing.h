@@ -13,13 +13,14 @@ namespace shadowgen::clipper::detail {
 // endpoints). Each coordinate of the result lies within 5u of its own magnitude,
 //     |x − P.x| ≤ 5u·|P.x|,  |y − P.y| ≤ 5u·|P.y|,   u = 2^-53,
 // of the exact crossing P, whatever the angle and however long the segments. Where the
-// shorter segment is short beside the smaller coordinate this comes from the parameter
-// along it, |o0| / (|o0| + |o1|) from two exact orientation determinants of opposite sign
-// rounded once each, accurate to a few ulps (error 4u·|segment| + u·(|P.x| + |P.y|));
+// step along the shorter segment to the point is small beside each coordinate (or that
+// segment is short beside the smaller coordinate) this comes from the parameter along it,
+// |o0| / (|o0| + |o1|) from two exact orientation determinants of opposite sign rounded
+// once each, accurate to a few ulps (error 8u·|P − p0| + u·|P| per coordinate);
 // elsewhere (long edges, crossings near an axis) from exact determinants throughout
-// (predicates.h). The
-// result is kept inside both segments' boxes and does not depend on the order of the two
-// segments or of their endpoints (an edge and its reverse give the same point).
+// (predicates.h). The result is kept inside both segments' boxes and does not depend on
+// the order of the two segments or of their endpoints (an edge and its reverse give the
+// same point).
 Point2 crossing_point(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1);
 
 // The order of points along the segment p -> q, for points on it or a hair off it

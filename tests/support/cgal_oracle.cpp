@@ -717,4 +717,16 @@ ExactUnionComparison compare_exact_unions(std::span<const PolygonSet2> a,
   return result;
 }
 
+bool near_exact_crossing(const Point2& p, const Point2& a0, const Point2& a1, const Point2& b0,
+                         const Point2& b1, double relative) {
+  const Kernel::Line_2 a(ExactPoint(a0.x, a0.y), ExactPoint(a1.x, a1.y));
+  const Kernel::Line_2 b(ExactPoint(b0.x, b0.y), ExactPoint(b1.x, b1.y));
+  const auto meet = CGAL::intersection(a, b);
+  const ExactPoint* at = meet ? boost::get<ExactPoint>(&*meet) : nullptr;
+  if (at == nullptr) return false;
+  const ExactNumber r(relative);
+  return CGAL::abs(ExactNumber(p.x) - at->x()) <= r * CGAL::abs(at->x()) &&
+         CGAL::abs(ExactNumber(p.y) - at->y()) <= r * CGAL::abs(at->y());
+}
+
 }  // namespace shadowgen::test

@@ -118,4 +118,11 @@ struct ExactUnionComparison {
 ExactUnionComparison compare_exact_unions(std::span<const PolygonSet2> a,
                                           std::span<const PolygonSet2> b);
 
+// Whether each coordinate of `p` lies within `relative` times its own magnitude of the
+// exact crossing P of the lines through a0, a1 and through b0, b1 (not parallel):
+// |p.x − P.x| ≤ relative·|P.x| and |p.y − P.y| ≤ relative·|P.y|, decided exactly.
+bool near_exact_crossing(const clipper::Point2& p, const clipper::Point2& a0,
+                         const clipper::Point2& a1, const clipper::Point2& b0,
+                         const clipper::Point2& b1, double relative);
+
 }  // namespace shadowgen::test
