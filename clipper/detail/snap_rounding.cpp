@@ -111,6 +111,7 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   struct Edge {
     Point2 from, to;
     double xmin, xmax, ymin, ymax;  // the box, grown by the reach
+    std::uint32_t next;             // the edge leaving `to`, in the same loop
     bool near(const Point2& p) const {
       return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax;
     }
@@ -129,12 +130,14 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   double magnitude = 0.0;
   for (const auto& side : loops) {
     for (const Loop2& loop : side) {
+      if (edges.size() + loop.size() > kShortcutEdges) return false;
+      const auto first = static_cast<std::uint32_t>(edges.size());
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const Point2& p = loop[i];
-        edges.push_back({p, loop[i + 1 == loop.size() ? 0 : i + 1], 0, 0, 0, 0});
+        const std::size_t next = i + 1 == loop.size() ? 0 : i + 1;
+        edges.push_back({p, loop[next], 0, 0, 0, 0, first + static_cast<std::uint32_t>(next)});
         magnitude = std::max({magnitude, std::fabs(p.x), std::fabs(p.y)});
       }
-      if (edges.size() > kShortcutEdges) return false;
     }
   }
   const double reach = kClearPixels * snap_distance({magnitude, magnitude});
@@ -161,10 +164,14 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
   std::size_t splits = 0;
   // Vertices: apart from one another, and each clear of every edge or in its way between
   // its ends (then found there by both edges the vertex ends). Every vertex starts an
-  // edge, and a point within the reach of it lies in that edge's grown box.
+  // edge, and a point within the reach of it lies in that edge's grown box. An edge's
+  // own ends are not looked at from it: its end is the next edge's start, whose test
+  // against this edge's start (in the next edge's box when they are not apart) tells.
+  auto bit = [](std::uint32_t k) { return std::uint64_t{1} << k; };
   for (std::uint32_t m = 0; m < n; ++m) {
     const Edge& e = edges[m];
-    std::uint64_t hits = boxes_meeting(vx, vx, vy, vy, n, e.xmin, e.xmax, e.ymin, e.ymax);
+    std::uint64_t hits =
+        ~(bit(m) | bit(e.next)) & boxes_meeting(vx, vx, vy, vy, n, e.xmin, e.xmax, e.ymin, e.ymax);
     for (; hits != 0; hits &= hits - 1) {
       const Point2& v = edges[static_cast<std::size_t>(std::countr_zero(hits))].from;
       if (v == e.from) continue;
@@ -182,8 +189,9 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     const Edge& a = edges[i];
     // The boxes after this one's: bit i + 1 and up.
     const std::uint64_t later = i + 1 == 64 ? 0 : ~std::uint64_t{0} << (i + 1);
+    // Nor the next edge, which shares an end with it.
     std::uint64_t hits =
-        later & boxes_meeting(bx0, bx1, by0, by1, n, a.xmin, a.xmax, a.ymin, a.ymax);
+        later & ~bit(a.next) & boxes_meeting(bx0, bx1, by0, by1, n, a.xmin, a.xmax, a.ymin, a.ymax);
     for (; hits != 0; hits &= hits - 1) {
       const auto j = static_cast<std::uint32_t>(std::countr_zero(hits));
       const Edge& b = edges[j];
