@@ -150,7 +150,7 @@ bool encloses_counter_clockwise(const Loop2& loop) {
   double magnitude = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const Point2& a = loop[i];
-    const Point2& b = loop[(i + 1) % n];
+    const Point2& b = loop[i + 1 == n ? 0 : i + 1];
     const double left = a.x * b.y;
     const double right = b.x * a.y;
     sum += left - right;

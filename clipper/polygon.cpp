@@ -47,9 +47,9 @@ std::size_t vertex_count(const PolygonSet2& polygons) {
 double rounding_area_bound(const Loop2& loop) {
   constexpr double kUnit = 0x1p-53;
   double perimeter = 0.0, magnitude = 0.0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
+  for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
     const Point2& a = loop[i];
-    const Point2& b = loop[(i + 1) % loop.size()];
+    const Point2& b = loop[i + 1 == n ? 0 : i + 1];
     perimeter += std::hypot(b.x - a.x, b.y - a.y);
     magnitude = std::max({magnitude, std::fabs(a.x), std::fabs(a.y)});
   }

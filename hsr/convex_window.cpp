@@ -30,7 +30,7 @@ bool all_outside(const clipper::Point2& a, const clipper::Point2& b, int turn,
 // Is there an edge of the convex `loop` (turning `turn`) with all of `points` beyond it?
 bool separated_by_edge_of(const clipper::Loop2& loop, int turn, const clipper::Loop2& points) {
   for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
-    if (all_outside(loop[i], loop[(i + 1) % n], turn, points)) return true;
+    if (all_outside(loop[i], loop[i + 1 == n ? 0 : i + 1], turn, points)) return true;
   }
   return false;
 }
@@ -39,7 +39,7 @@ bool separated_by_edge_of(const clipper::Loop2& loop, int turn, const clipper::L
 bool within(const clipper::Loop2& loop, int turn, const clipper::Loop2& points) {
   for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
     const clipper::Point2& a = loop[i];
-    const clipper::Point2& b = loop[(i + 1) % n];
+    const clipper::Point2& b = loop[i + 1 == n ? 0 : i + 1];
     for (const clipper::Point2& p : points) {
       if (sign_of(clipper::orient2d(a, b, p)) * turn < 0) return false;
     }
@@ -80,8 +80,9 @@ int convex_turn(const clipper::Loop2& loop) {
   int turn = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const clipper::Point2& a = loop[i];
-    const clipper::Point2& b = loop[(i + 1) % n];
-    const clipper::Point2& c = loop[(i + 2) % n];
+    const std::size_t j = i + 1 == n ? 0 : i + 1;
+    const clipper::Point2& b = loop[j];
+    const clipper::Point2& c = loop[j + 1 == n ? 0 : j + 1];
     if (a == b) return 0;
     const int s = sign_of(clipper::orient2d(a, b, c));
     if (s == 0) {

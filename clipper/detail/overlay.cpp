@@ -208,14 +208,16 @@ void Graph::spread_around(std::uint32_t v, std::uint32_t from_edge,
   const std::size_t start =
       static_cast<std::size_t>(std::find(at.begin(), at.end(), from_edge) - at.begin());
   Winding left = left_of_outward(edges_[from_edge], v);
+  std::size_t next = start;
   for (std::size_t step = 1; step < k; ++step) {
-    Edge& e = edges_[at[(start + step) % k]];
+    next = next + 1 == k ? 0 : next + 1;
+    Edge& e = edges_[at[next]];
     left = left + outward_multiplicity(e, v);
     if (e.known) continue;
     e.right = e.lo == v ? left - e.multiplicity : left;
     e.known = true;
     todo.push_back(far_end(e, v));
-    todo.push_back(at[(start + step) % k]);
+    todo.push_back(at[next]);
   }
 }
 
