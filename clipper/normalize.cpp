@@ -88,9 +88,9 @@ bool remove_spikes(Loop2& loop) {
     return false;
   }
   // Still all on one line: no area.
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    if (orient2d(loop[i], loop[(i + 1) % loop.size()], loop[(i + 2) % loop.size()]) !=
-        Orientation::kCollinear) {
+  for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
+    const std::size_t j = i + 1 == n ? 0 : i + 1;
+    if (orient2d(loop[i], loop[j], loop[j + 1 == n ? 0 : j + 1]) != Orientation::kCollinear) {
       return true;
     }
   }
@@ -108,13 +108,13 @@ bool is_counter_clockwise(const Loop2& loop) {
   if (std::count(loop.begin(), loop.end(), *lowest) == 1) {
     // Passed once: no bridge ends there, and the turn there tells (the usual case).
     const std::size_t i = static_cast<std::size_t>(lowest - loop.begin());
-    return orient2d(loop[(i + n - 1) % n], loop[i], loop[(i + 1) % n]) ==
+    return orient2d(loop[i == 0 ? n - 1 : i - 1], loop[i], loop[i + 1 == n ? 0 : i + 1]) ==
            Orientation::kCounterClockwise;
   }
   std::map<std::pair<Point2, Point2>, int> net;  // undirected edge (low, high): +1 low -> high
   for (std::size_t i = 0; i < n; ++i) {
     const Point2& a = loop[i];
-    const Point2& b = loop[(i + 1) % n];
+    const Point2& b = loop[i + 1 == n ? 0 : i + 1];
     if (a == b) continue;
     if (a < b)
       ++net[{a, b}];
