@@ -161,7 +161,12 @@ void Graph::collect_edges() {
     const auto begin = runs.begin() + first[lo], end = runs.begin() + first[lo + 1];
     std::sort(begin, end, [](const Run& a, const Run& b) { return a.hi < b.hi; });
     for (auto r = begin; r != end; ++r) {
-      if (r == begin || r->hi != (r - 1)->hi) edges_.push_back({lo, r->hi});
+      if (r == begin || r->hi != (r - 1)->hi) {
+        // Made in place: a temporary Edge copied in cost a stalled load per edge.
+        Edge& e = edges_.emplace_back();
+        e.lo = lo;
+        e.hi = r->hi;
+      }
       edges_.back().multiplicity[r->operand] += r->sign;
     }
   }
