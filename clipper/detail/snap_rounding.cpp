@@ -112,9 +112,6 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     Point2 from, to;
     double xmin, xmax, ymin, ymax;  // the box, grown by the reach
     std::uint32_t next;             // the edge leaving `to`, in the same loop
-    bool near(const Point2& p) const {
-      return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax;
-    }
   };
   // A point an edge is to be routed through.
   struct Through {
@@ -203,9 +200,11 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
         continue;
       }
       const Point2 at = crossing_point(a.from, a.to, b.from, b.to);
-      for (std::uint32_t m = 0; m < edges.size(); ++m) {
+      // The edges whose grown boxes hold the crossing.
+      for (std::uint64_t near = boxes_meeting(bx0, bx1, by0, by1, n, at.x, at.x, at.y, at.y);
+           near != 0; near &= near - 1) {
+        const auto m = static_cast<std::uint32_t>(std::countr_zero(near));
         const Edge& e = edges[m];
-        if (!e.near(at)) continue;
         if (!apart(at, e.from, reach)) return false;
         if (m != i && m != j && !off_line(at, e.from, e.to, reach)) return false;
       }
