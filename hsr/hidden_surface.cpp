@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <glm/geometric.hpp>
 #include <queue>
 #include <stdexcept>
@@ -280,20 +281,35 @@ std::vector<std::vector<Piece>> split_into_regions(std::vector<Piece> pieces,
     by_region[0] = std::move(pieces);
     return by_region;
   }
-  for (Piece& piece : pieces) {
+  // Each piece's region, or its parts in every region it reaches, found in parallel; the
+  // pieces then go to their regions in input order.
+  constexpr std::size_t kAcross = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> home(pieces.size(), kAcross);
+  std::vector<std::vector<std::pair<std::size_t, PolygonWithHoles2>>> parts(pieces.size());
+  std::vector<HsrStats> piece_stats(pieces.size());
+  for_each_in_parallel(pieces.size(), [&](std::size_t i) {
+    const Piece& piece = pieces[i];
     const clipper::Box2 box = clipper::box_of(piece.shape);
-    const auto home = std::find_if(regions.begin(), regions.end(),
-                                   [&box](const clipper::Box2& r) { return r.contains(box); });
-    if (home != regions.end()) {
-      by_region[static_cast<std::size_t>(home - regions.begin())].push_back(std::move(piece));
-      continue;
+    const auto in = std::find_if(regions.begin(), regions.end(),
+                                 [&box](const clipper::Box2& r) { return r.contains(box); });
+    if (in != regions.end()) {
+      home[i] = static_cast<std::size_t>(in - regions.begin());
+      return;
     }
     for (std::size_t r = 0; r < regions.size(); ++r) {
       if (!regions[r].overlaps(box)) continue;
-      for (PolygonWithHoles2& q : within_rectangle(piece, regions[r], stats)) {
-        by_region[r].push_back({std::move(q), piece.parent});
+      for (PolygonWithHoles2& q : within_rectangle(piece, regions[r], piece_stats[i])) {
+        parts[i].emplace_back(r, std::move(q));
       }
     }
+  });
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    stats.clips += piece_stats[i].clips;
+    if (home[i] != kAcross) {
+      by_region[home[i]].push_back(std::move(pieces[i]));
+      continue;
+    }
+    for (auto& [r, q] : parts[i]) by_region[r].push_back({std::move(q), pieces[i].parent});
   }
   return by_region;
 }
@@ -305,9 +321,25 @@ std::vector<Fragment> sort_regions(std::vector<std::vector<Piece>> by_region,
                                    const std::vector<char>& facing, HsrStats& stats) {
   std::vector<std::vector<Fragment>> found(by_region.size());
   std::vector<HsrStats> region_stats(by_region.size());
-  for_each_in_parallel(by_region.size(), [&](std::size_t r) {
-    AreaSort(nearness, facing, region_stats[r]).run(std::move(by_region[r]), found[r]);
+  // The regions with the most pieces first, so that the last to finish is a small one
+  // rather than one thread left with a large region while the others idle.
+  std::vector<std::size_t> order(by_region.size());
+  for (std::size_t r = 0; r < order.size(); ++r) order[r] = r;
+  std::stable_sort(order.begin(), order.end(), [&by_region](std::size_t a, std::size_t b) {
+    return by_region[a].size() > by_region[b].size();
   });
+  std::vector<std::exception_ptr> failures(by_region.size());
+  for_each_in_parallel(order.size(), [&](std::size_t k) {
+    const std::size_t r = order[k];
+    try {
+      AreaSort(nearness, facing, region_stats[r]).run(std::move(by_region[r]), found[r]);
+    } catch (...) {
+      failures[r] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
   std::vector<Fragment> fragments;
   for (std::size_t r = 0; r < found.size(); ++r) {
     stats.templates += region_stats[r].templates;

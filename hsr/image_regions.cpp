@@ -9,14 +9,19 @@ namespace {
 constexpr std::size_t kPiecesPerRegion = 4096;
 constexpr std::size_t kMaxRegions = 256;
 
-// `parts` - 1 cuts at quantiles of `values` (sorted here), strictly increasing and
+// `parts` - 1 cuts at quantiles of `values` (reordered here), strictly increasing and
 // strictly inside (lo, hi); fewer where values repeat.
 std::vector<double> quantile_cuts(std::vector<double> values, std::size_t parts, double lo,
                                   double hi) {
-  std::sort(values.begin(), values.end());
+  // Each quantile put in its place, the values below it before it: the cuts a full sort
+  // would give, without sorting all of them.
   std::vector<double> cuts{lo};
+  auto sorted_from = values.begin();
   for (std::size_t k = 1; k < parts; ++k) {
-    const double cut = values[k * values.size() / parts];
+    const auto at = values.begin() + static_cast<std::ptrdiff_t>(k * values.size() / parts);
+    std::nth_element(sorted_from, at, values.end());
+    sorted_from = at;
+    const double cut = *at;
     if (cut > cuts.back() && cut < hi) cuts.push_back(cut);
   }
   cuts.push_back(hi);
