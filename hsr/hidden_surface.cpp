@@ -44,10 +44,10 @@ auto clip_of(std::size_t parent, Clip&& clip) {
 }
 
 // The part of `piece` within rectangle `r` (a tile of a wide polygon, an image region).
-PolygonSet2 within_rectangle(const Piece& piece, const clipper::Box2& r, HsrStats& stats) {
+// One clip, for the caller to count.
+PolygonSet2 within_rectangle(const Piece& piece, const clipper::Box2& r) {
   const PolygonWithHoles2 rect{
       {{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}}, {}};
-  ++stats.clips;
   return clip_of(piece.parent, [&] { return clipper::clip(piece.shape, rect).inside; });
 }
 
@@ -94,7 +94,8 @@ class AreaSort {
       // template over it, each time in whole: cut it into tiles first, so each template
       // clips only the tiles it covers. Tiles of one parent merge again at the end.
       for (const clipper::Box2& t : grid.tiles(box, kTileBlock)) {
-        for (PolygonWithHoles2& q : within_rectangle(p, t, stats_)) {
+        ++stats_.clips;
+        for (PolygonWithHoles2& q : within_rectangle(p, t)) {
           add({std::move(q), p.parent});
         }
       }
@@ -281,35 +282,41 @@ std::vector<std::vector<Piece>> split_into_regions(std::vector<Piece> pieces,
     by_region[0] = std::move(pieces);
     return by_region;
   }
-  // Each piece's region, or its parts in every region it reaches, found in parallel; the
-  // pieces then go to their regions in input order.
+  // Each piece's region, found in parallel; then the parts of the pieces that cross a
+  // region's side, clipped to every region they reach, in parallel too; then the pieces
+  // go to their regions in input order.
   constexpr std::size_t kAcross = static_cast<std::size_t>(-1);
   std::vector<std::size_t> home(pieces.size(), kAcross);
-  std::vector<std::vector<std::pair<std::size_t, PolygonWithHoles2>>> parts(pieces.size());
-  std::vector<HsrStats> piece_stats(pieces.size());
   for_each_in_parallel(pieces.size(), [&](std::size_t i) {
-    const Piece& piece = pieces[i];
-    const clipper::Box2 box = clipper::box_of(piece.shape);
+    const clipper::Box2 box = clipper::box_of(pieces[i].shape);
     const auto in = std::find_if(regions.begin(), regions.end(),
                                  [&box](const clipper::Box2& r) { return r.contains(box); });
-    if (in != regions.end()) {
-      home[i] = static_cast<std::size_t>(in - regions.begin());
-      return;
-    }
+    if (in != regions.end()) home[i] = static_cast<std::size_t>(in - regions.begin());
+  });
+  std::vector<std::size_t> across;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (home[i] == kAcross) across.push_back(i);
+  }
+  std::vector<std::vector<std::pair<std::size_t, PolygonWithHoles2>>> parts(across.size());
+  for_each_in_parallel(across.size(), [&](std::size_t k) {
+    const Piece& piece = pieces[across[k]];
+    const clipper::Box2 box = clipper::box_of(piece.shape);
     for (std::size_t r = 0; r < regions.size(); ++r) {
       if (!regions[r].overlaps(box)) continue;
-      for (PolygonWithHoles2& q : within_rectangle(piece, regions[r], piece_stats[i])) {
-        parts[i].emplace_back(r, std::move(q));
+      for (PolygonWithHoles2& q : within_rectangle(piece, regions[r])) {
+        parts[k].emplace_back(r, std::move(q));
       }
     }
   });
+  std::size_t k = 0;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    stats.clips += piece_stats[i].clips;
     if (home[i] != kAcross) {
       by_region[home[i]].push_back(std::move(pieces[i]));
       continue;
     }
-    for (auto& [r, q] : parts[i]) by_region[r].push_back({std::move(q), pieces[i].parent});
+    const clipper::Box2 box = clipper::box_of(pieces[i].shape);
+    for (const clipper::Box2& r : regions) stats.clips += r.overlaps(box) ? 1 : 0;
+    for (auto& [r, q] : parts[k++]) by_region[r].push_back({std::move(q), pieces[i].parent});
   }
   return by_region;
 }
