@@ -134,6 +134,10 @@ Orientation to_orientation(double s) {
 }  // namespace
 
 Orientation orient2d_exact(const Point2& a, const Point2& b, const Point2& c) {
+  // Two of the points the same (faces that share a vertex test it against their edges
+  // all the time): one difference is exactly zero, and so is the determinant. The
+  // filter cannot tell, its bound being zero too.
+  if (a == c || b == c || a == b) return Orientation::kCollinear;
   return to_orientation(exact_determinant(a, b, c).sign());
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace shadowgen::clipper {
 namespace {
@@ -47,6 +48,28 @@ TEST(Orient2d, ValueHasTheExactSignAndIsAccurate) {
   EXPECT_EQ(orient2d(a, b, left), Orientation::kCounterClockwise);
   EXPECT_DOUBLE_EQ(orient2d_value(a, b, left), std::ldexp(1.0, -26));
   EXPECT_EQ(orient2d(b, a, left), Orientation::kClockwise);
+}
+
+// Two of the three points the same: the determinant is exactly zero, whatever the
+// coordinates (the filter's bound is zero too, so these reach the exact stage).
+TEST(Orient2d, TwoPointsTheSameAreCollinear) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coordinate(-1e6, 1e6);
+  for (int i = 0; i < 1000; ++i) {
+    const Point2 a{coordinate(rng), coordinate(rng)}, b{coordinate(rng), coordinate(rng)};
+    ASSERT_EQ(orient2d(a, b, a), Orientation::kCollinear);
+    ASSERT_EQ(orient2d(a, b, b), Orientation::kCollinear);
+    ASSERT_EQ(orient2d(a, a, b), Orientation::kCollinear);
+    ASSERT_EQ(orient2d_exact(a, b, a), Orientation::kCollinear);
+  }
+  // A zero of either sign is one coordinate.
+  EXPECT_EQ(orient2d(Point2{0.0, 1.0}, Point2{3.0, 7.0}, Point2{-0.0, 1.0}),
+            Orientation::kCollinear);
+  EXPECT_EQ(orient2d_exact(Point2{1e-300, 0.0}, Point2{-0.0, 2e-300}, Point2{1e-300, -0.0}),
+            Orientation::kCollinear);
+  // Distinct points keep their exact answer.
+  EXPECT_EQ(orient2d_exact(Point2{0.0, 0.0}, Point2{1.0, 0.0}, Point2{0.5, 0x1p-1000}),
+            Orientation::kCounterClockwise);
 }
 
 // The same grid against a direction square to the line's: (12, 12) − p against
