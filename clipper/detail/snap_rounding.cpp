@@ -80,7 +80,7 @@ class LoopOfRoutes {
 // leaving the loops as they came, where that is not shown; snap_round then runs the
 // rounds, which give the same loops wherever this gives any
 // (SnapRound.TheShortcutGivesWhatTheRoundsGive).
-constexpr std::size_t kShortcutEdges = 64;
+constexpr std::size_t kShortcutEdges = 128;
 constexpr double kClearPixels = 8.0;
 
 // Whether p lies off the line through a and b by more than `reach`, in doubles with a
@@ -157,62 +157,64 @@ bool snap_round_separated(std::vector<Loop2> (&loops)[2], SnapRoundingStats* sta
     by1[k] = e.ymax;
   }
   for (MaskLane* lane : {&vx, &vy, &bx0, &bx1, &by0, &by1}) lane->pad(n);
-  static_assert(kShortcutEdges <= MaskLane::kCapacity, "one bit per edge in a 64-bit mask");
+  static_assert(kShortcutEdges <= MaskLane::kCapacity, "a lane for every edge");
   std::size_t splits = 0;
   // Vertices: apart from one another, and each clear of every edge or in its way between
   // its ends (then found there by both edges the vertex ends). Every vertex starts an
   // edge, and a point within the reach of it lies in that edge's grown box. An edge's
   // own ends are not looked at from it: its end is the next edge's start, whose test
   // against this edge's start (in the next edge's box when they are not apart) tells.
-  auto bit = [](std::uint32_t k) { return std::uint64_t{1} << k; };
   for (std::uint32_t m = 0; m < n; ++m) {
     const Edge& e = edges[m];
-    std::uint64_t hits =
-        ~(bit(m) | bit(e.next)) & boxes_meeting(vx, vx, vy, vy, n, e.xmin, e.xmax, e.ymin, e.ymax);
-    for (; hits != 0; hits &= hits - 1) {
-      const Point2& v = edges[static_cast<std::size_t>(std::countr_zero(hits))].from;
-      if (v == e.from) continue;
-      if (!apart(v, e.from, reach)) return false;
-      if (v == e.to || off_line(v, e.from, e.to, reach)) continue;
-      if (!in_way(v, e.from, e.to) || !apart(v, e.to, reach)) return false;
-      through.push_back({m, v});
-      splits += 2;
-    }
+    const bool clear =
+        each_box_meeting(vx, vx, vy, vy, 0, n, e.xmin, e.xmax, e.ymin, e.ymax, [&](std::size_t k) {
+          if (k == m || k == e.next) return true;
+          const Point2& v = edges[k].from;
+          if (v == e.from) return true;
+          if (!apart(v, e.from, reach)) return false;
+          if (v == e.to || off_line(v, e.from, e.to, reach)) return true;
+          if (!in_way(v, e.from, e.to) || !apart(v, e.to, reach)) return false;
+          through.push_back({m, v});
+          splits += 2;
+          return true;
+        });
+    if (!clear) return false;
   }
   // Proper crossings, rounded: apart from every vertex and clear of every edge but their
-  // own two.
+  // own two. Each pair once: the boxes after this one's, but for the next edge's, which
+  // shares an end with it.
   std::size_t crossings = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
     const Edge& a = edges[i];
-    // The boxes after this one's: bit i + 1 and up.
-    const std::uint64_t later = i + 1 == 64 ? 0 : ~std::uint64_t{0} << (i + 1);
-    // Nor the next edge, which shares an end with it.
-    std::uint64_t hits =
-        later & ~bit(a.next) & boxes_meeting(bx0, bx1, by0, by1, n, a.xmin, a.xmax, a.ymin, a.ymax);
-    for (; hits != 0; hits &= hits - 1) {
-      const auto j = static_cast<std::uint32_t>(std::countr_zero(hits));
-      const Edge& b = edges[j];
-      if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) continue;
-      if (!properly_cross(a.from, a.to, b.from, b.to)) continue;
-      // A vertex of one in the other's way (a hair across it): routed through, not crossed.
-      if (in_way(a.from, b.from, b.to) || in_way(a.to, b.from, b.to) ||
-          in_way(b.from, a.from, a.to) || in_way(b.to, a.from, a.to)) {
-        continue;
-      }
-      const Point2 at = crossing_point(a.from, a.to, b.from, b.to);
-      // The edges whose grown boxes hold the crossing.
-      for (std::uint64_t near = boxes_meeting(bx0, bx1, by0, by1, n, at.x, at.x, at.y, at.y);
-           near != 0; near &= near - 1) {
-        const auto m = static_cast<std::uint32_t>(std::countr_zero(near));
-        const Edge& e = edges[m];
-        if (!apart(at, e.from, reach)) return false;
-        if (m != i && m != j && !off_line(at, e.from, e.to, reach)) return false;
-      }
-      through.push_back({i, at});
-      through.push_back({j, at});
-      ++crossings;
-      splits += 2;
-    }
+    const bool clear = each_box_meeting(
+        bx0, bx1, by0, by1, i + 1, n, a.xmin, a.xmax, a.ymin, a.ymax, [&](std::size_t k) {
+          if (k == a.next) return true;
+          const auto j = static_cast<std::uint32_t>(k);
+          const Edge& b = edges[j];
+          if (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to) return true;
+          if (!properly_cross(a.from, a.to, b.from, b.to)) return true;
+          // A vertex of one in the other's way (a hair across it): routed through, not
+          // crossed.
+          if (in_way(a.from, b.from, b.to) || in_way(a.to, b.from, b.to) ||
+              in_way(b.from, a.from, a.to) || in_way(b.to, a.from, a.to)) {
+            return true;
+          }
+          const Point2 at = crossing_point(a.from, a.to, b.from, b.to);
+          // The edges whose grown boxes hold the crossing.
+          const bool at_clear = each_box_meeting(
+              bx0, bx1, by0, by1, 0, n, at.x, at.x, at.y, at.y, [&](std::size_t m) {
+                const Edge& e = edges[m];
+                if (!apart(at, e.from, reach)) return false;
+                return m == i || m == j || off_line(at, e.from, e.to, reach);
+              });
+          if (!at_clear) return false;
+          through.push_back({i, at});
+          through.push_back({j, at});
+          ++crossings;
+          splits += 2;
+          return true;
+        });
+    if (!clear) return false;
   }
   if (!through.empty() && snap_round_limit() < 1) return false;
   std::sort(through.begin(), through.end(), [](const Through& a, const Through& b) {

@@ -102,14 +102,28 @@ TEST(SnapRound, LongEdgeAcrossANeedleBesideTheAxisEndsNoded) {
 // far from the origin, and on a grid polygon against itself moved a hair (its vertices a
 // pixel or a few from its own edges, mostly left to the rounds). Both ways are taken
 // often.
+// A star of `points` spikes around `centre`, its radii random between half and all of
+// `radius`: dozens of edges, crossing another such star's many times.
+PolygonWithHoles2 random_star(std::mt19937_64& rng, int points, Point2 centre, double radius) {
+  std::uniform_real_distribution<double> spread(0.5, 1.0);
+  PolygonWithHoles2 star;
+  for (int k = 0; k < points; ++k) {
+    const double angle = 6.283185307179586 * k / points, r = radius * spread(rng);
+    star.outer.push_back({centre.x + r * std::cos(angle), centre.y + r * std::sin(angle)});
+  }
+  return star;
+}
+
 TEST(SnapRound, TheShortcutGivesWhatTheRoundsGive) {
   std::mt19937_64 rng(0x5eed5c07);
-  int taken = 0, declined = 0;
+  int taken = 0, declined = 0, taken_past_one_mask = 0;
+  std::uniform_int_distribution<int> spikes(20, 60);
   for (int trial = 0; trial < 3000; ++trial) {
-    const int family = trial % 4;
+    const int family = trial % 5;
     auto make = [&]() -> PolygonWithHoles2 {
       if (family == 0) return test::random_polygon_with_holes(rng);
       if (family == 1 || family == 3) return test::random_grid_polygon(rng);
+      if (family == 4) return random_star(rng, spikes(rng), {trial % 7 * 0.1, 0.3}, 1.0);
       return test::sliver_triangle(rng, 1e6);
     };
     PolygonSet2 subject{make()}, clip{family == 2 ? test::random_grid_polygon(rng) : make()};
@@ -124,9 +138,13 @@ TEST(SnapRound, TheShortcutGivesWhatTheRoundsGive) {
     bool shortcut = false;
     EXPECT_EQ(test::shortcut_disagreement(subject, clip, &shortcut), "") << "trial " << trial;
     ++(shortcut ? taken : declined);
+    // The shortcut's masks hold 64 edges each: pairs of more than that cross from one to
+    // the next.
+    if (shortcut && vertex_count(subject) + vertex_count(clip) > 64) ++taken_past_one_mask;
   }
   EXPECT_GT(taken, 1000);
   EXPECT_GT(declined, 300);
+  EXPECT_GT(taken_past_one_mask, 100);
 }
 
 }  // namespace
