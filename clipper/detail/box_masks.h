@@ -2,15 +2,14 @@
 
 // Bit masks of which of up to 128 points, or boxes, meet one box, 64 at a time: snap
 // rounding's shortcut tests every vertex of a small clip against every edge's box, and a
-// mask of hits lets it visit only the few that matter. The coordinates are laid out one array per
-// coordinate (MaskLanes), so that two are compared in one SSE2 instruction where the target has it;
-// the scalar loop gives the same bits everywhere else (comparisons are exact, and false
-// for NaN either way).
+// mask of hits lets it visit only the few that matter. The coordinates are laid out one
+// array per coordinate (MaskLane), so that two are compared in one SSE2 instruction where
+// the target has it; the scalar loop gives the same bits everywhere else (comparisons are
+// exact, and false for NaN either way).
 
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
