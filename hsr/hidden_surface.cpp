@@ -298,11 +298,13 @@ std::vector<std::vector<Piece>> split_into_regions(std::vector<Piece> pieces,
     if (home[i] == kAcross) across.push_back(i);
   }
   std::vector<std::vector<std::pair<std::size_t, PolygonWithHoles2>>> parts(across.size());
+  std::vector<std::size_t> clips(across.size(), 0);
   for_each_in_parallel(across.size(), [&](std::size_t k) {
     const Piece& piece = pieces[across[k]];
     const clipper::Box2 box = clipper::box_of(piece.shape);
     for (std::size_t r = 0; r < regions.size(); ++r) {
       if (!regions[r].overlaps(box)) continue;
+      ++clips[k];
       for (PolygonWithHoles2& q : within_rectangle(piece, regions[r])) {
         parts[k].emplace_back(r, std::move(q));
       }
@@ -314,8 +316,7 @@ std::vector<std::vector<Piece>> split_into_regions(std::vector<Piece> pieces,
       by_region[home[i]].push_back(std::move(pieces[i]));
       continue;
     }
-    const clipper::Box2 box = clipper::box_of(pieces[i].shape);
-    for (const clipper::Box2& r : regions) stats.clips += r.overlaps(box) ? 1 : 0;
+    stats.clips += clips[k];
     for (auto& [r, q] : parts[k++]) by_region[r].push_back({std::move(q), pieces[i].parent});
   }
   return by_region;
