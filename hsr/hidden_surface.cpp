@@ -107,7 +107,7 @@ class AreaSort {
       queue.pop();
       if (!alive[t]) continue;
       alive[t] = false;
-      grid.erase_wide(t);
+      grid.erase(t);
       ++stats_.templates;
       const Piece template_piece = pieces[t];
       const ConvexWindow template_window(template_piece.shape);
@@ -122,7 +122,7 @@ class AreaSort {
             clip_of(pieces[c].parent, [&] { return template_window.clip(pieces[c].shape); });
         if (r.inside.empty()) continue;
         alive[c] = false;
-        grid.erase_wide(c);
+        grid.erase(c);
         const std::size_t parent = pieces[c].parent;
         for (PolygonWithHoles2& p : r.inside) inside.push_back({std::move(p), parent});
         for (PolygonWithHoles2& p : r.outside) add({std::move(p), parent});

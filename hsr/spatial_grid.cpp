@@ -34,6 +34,7 @@ void SpatialGrid::insert(std::size_t item, const clipper::Box2& box) {
   if (item >= seen_.size()) {
     seen_.resize(item + 1, 0);
     is_wide_.resize(item + 1, false);
+    erased_.resize(item + 1, 0);
   }
   int x0, y0, x1, y1;
   if (!cell_range(box, x0, y0, x1, y1)) return;
@@ -78,8 +79,10 @@ std::vector<clipper::Box2> SpatialGrid::tiles(const clipper::Box2& box, int bloc
   return out;
 }
 
-void SpatialGrid::erase_wide(std::size_t item) {
-  if (item >= is_wide_.size() || !is_wide_[item]) return;
+void SpatialGrid::erase(std::size_t item) {
+  if (item >= erased_.size()) return;  // never inserted
+  erased_[item] = 1;
+  if (!is_wide_[item]) return;
   is_wide_[item] = false;
   const auto it = std::find(wide_.begin(), wide_.end(), item);
   if (it != wide_.end()) {
@@ -103,7 +106,15 @@ void SpatialGrid::query(const clipper::Box2& box, std::vector<std::size_t>& out)
   if (!cell_range(box, x0, y0, x1, y1)) return;
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
-      for (std::size_t item : cells_[static_cast<std::size_t>(y) * nx_ + x]) take(item);
+      // The erased entries are dropped on the way, the others keep their order.
+      std::vector<std::size_t>& cell = cells_[static_cast<std::size_t>(y) * nx_ + x];
+      std::size_t kept = 0;
+      for (const std::size_t item : cell) {
+        if (erased_[item]) continue;
+        cell[kept++] = item;
+        take(item);
+      }
+      cell.resize(kept);
     }
   }
 }
@@ -114,8 +125,9 @@ void SpatialGrid::query_shared(const clipper::Box2& box, std::vector<std::size_t
   if (!cell_range(box, x0, y0, x1, y1)) return;
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
-      const std::vector<std::size_t>& cell = cells_[static_cast<std::size_t>(y) * nx_ + x];
-      out.insert(out.end(), cell.begin(), cell.end());
+      for (const std::size_t item : cells_[static_cast<std::size_t>(y) * nx_ + x]) {
+        if (!erased_[item]) out.push_back(item);
+      }
     }
   }
 }

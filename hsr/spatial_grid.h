@@ -19,13 +19,17 @@ class SpatialGrid {
   SpatialGrid(const clipper::Box2& extent, std::size_t expected_items);
 
   void insert(std::size_t item, const clipper::Box2& box);
-  // Forgets an item of the wide list (cell entries of dead items are left for the caller
-  // to skip: they cost one look each).
-  void erase_wide(std::size_t item);
-  // Appends, once each, the items whose cells meet `box` (a superset of the overlapping).
+  // Forgets an item: no query returns it again. Its cell entries go when a query next
+  // passes them (an area sort kills most pieces it inserts, and their entries outnumbered
+  // the live ones ten to one where they were left for the caller to skip).
+  void erase(std::size_t item);
+  // Appends, once each, the items not erased whose cells meet `box` (a superset of the
+  // overlapping): the wide list's (an erasure moves its last item into the gap), then the
+  // cells' in row order, each cell's in the order they were inserted.
   void query(const clipper::Box2& box, std::vector<std::size_t>& out);
-  // The same without the once-each bookkeeping, so that several threads may query at
-  // once: an item whose box spans several cells comes once per cell.
+  // The same without the once-each bookkeeping or the clearing of erased entries, so that
+  // several threads may query at once: an item whose box spans several cells comes once
+  // per cell.
   void query_shared(const clipper::Box2& box, std::vector<std::size_t>& out) const;
 
   // True when `box` would go to the wide list.
@@ -45,6 +49,7 @@ class SpatialGrid {
   std::vector<std::size_t> wide_;
   std::vector<std::uint32_t> seen_;
   std::vector<bool> is_wide_;
+  std::vector<char> erased_;
   std::uint32_t stamp_ = 0;
 };
 
