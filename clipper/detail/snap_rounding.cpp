@@ -95,12 +95,14 @@ bool off_line(const Point2& p, const Point2& a, const Point2& b, double reach) {
 
 // Whether the rounds' first look routes the whole edge a-b through vertex v: v lies in
 // the edge's box grown by its margin (ContactFinder's candidate test) and the edge passes
-// through v's pixel.
+// through v's pixel. A line further from v than twice the pixel's half width misses the
+// pixel (whose corners, rounded, lie within 1.1 half widths of v in each coordinate):
+// that common answer is given in doubles, before the exact look at the four corners.
 bool in_way(const Point2& v, const Point2& a, const Point2& b) {
   const double margin = 1.25 * std::max(snap_distance(a), snap_distance(b));
   return v.x >= std::min(a.x, b.x) - margin && v.x <= std::max(a.x, b.x) + margin &&
          v.y >= std::min(a.y, b.y) - margin && v.y <= std::max(a.y, b.y) + margin &&
-         within_snap_distance(v, a, b);
+         !off_line(v, a, b, 2.0 * snap_distance(v)) && within_snap_distance(v, a, b);
 }
 
 bool apart(const Point2& p, const Point2& q, double reach) {
