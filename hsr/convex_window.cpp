@@ -101,22 +101,26 @@ ConvexWindow::ConvexWindow(const clipper::PolygonWithHoles2& window)
   if (turn_ == 0) hull_ = convex_hull(window.outer);
 }
 
-clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject) const {
-  // A loop without area is the clipper's to drop.
-  if (subject.outer.size() < 3) return clipper::clip(subject, window_);
+bool ConvexWindow::apart_from(const clipper::PolygonWithHoles2& subject) const {
   // Beside the window: an edge line of the window's hull (its outer loop when convex)
   // with the whole subject on or beyond it.
   const bool beside = turn_ != 0
                           ? separated_by_edge_of(window_.outer, turn_, subject.outer)
                           : hull_.size() >= 3 && separated_by_edge_of(hull_, 1, subject.outer);
-  if (beside) return {{}, {subject}};
+  if (beside) return true;
   const int subject_turn = convex_turn(subject.outer);
-  if (subject_turn != 0 && separated_by_edge_of(subject.outer, subject_turn, window_.outer)) {
-    return {{}, {subject}};
-  }
-  if (turn_ != 0 && window_.holes.empty() && within(window_.outer, turn_, subject.outer)) {
-    return {{subject}, {}};
-  }
+  return subject_turn != 0 && separated_by_edge_of(subject.outer, subject_turn, window_.outer);
+}
+
+bool ConvexWindow::holds(const clipper::PolygonWithHoles2& subject) const {
+  return turn_ != 0 && window_.holes.empty() && within(window_.outer, turn_, subject.outer);
+}
+
+clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject) const {
+  // A loop without area is the clipper's to drop.
+  if (subject.outer.size() < 3) return clipper::clip(subject, window_);
+  if (apart_from(subject)) return {{}, {subject}};
+  if (holds(subject)) return {{subject}, {}};
   if (!region_) region_.emplace(window_);
   return region_->clip(subject);
 }

@@ -29,6 +29,11 @@ class ConvexWindow {
   // the clipper.
   clipper::ClipResult clip(const clipper::PolygonWithHoles2& subject) const;
 
+  // The two tests clip() makes before the clipper, on their own: whether the subject and
+  // the window share no area, and whether the subject lies inside the window whole.
+  bool apart_from(const clipper::PolygonWithHoles2& subject) const;
+  bool holds(const clipper::PolygonWithHoles2& subject) const;
+
  private:
   const clipper::PolygonWithHoles2& window_;
   int turn_ = 0;         // +1: outer loop convex counter-clockwise, -1: clockwise, 0: not convex

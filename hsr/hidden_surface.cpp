@@ -397,7 +397,7 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons,
     result.nearness[i] = *nearness;
     facing[i] = view.is_perspective() ? view.offset_from_eye(polygons[i].outer, normal) < 0.0
                                       : glm::dot(normal, view.forward()) < 0.0;
-    images[i] = clip_of(i, [&] { return project_polygon(polygons[i], view); });
+    images[i] = clip_of(i, [&] { return project_polygon(polygons[i], view, planes[i]); });
   });
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i < polygons.size(); ++i) {

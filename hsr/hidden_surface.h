@@ -122,5 +122,8 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons,
 // of it is in view or it is seen edge-on. Throws clipper::SnapRoundingError where the cut
 // to the frustum fails.
 clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view);
+// The same with the polygon's plane given (plane == plane_of(polygon)).
+clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view,
+                                     const Plane3& plane);
 
 }  // namespace shadowgen::hsr

@@ -6,6 +6,7 @@
 #include "clipper/clip.h"
 #include "clipper/normalize.h"
 #include "detail/half_plane.h"
+#include "hsr/convex_window.h"
 #include "hsr/hidden_surface.h"
 #include "hsr/plane_chart.h"
 
@@ -67,7 +68,11 @@ clipper::PolygonSet2 project_in_front(const Polygon3& polygon, const View& view)
 }  // namespace
 
 clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view) {
-  const Plane3 plane = plane_of(polygon);
+  return project_polygon(polygon, view, plane_of(polygon));
+}
+
+clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view,
+                                     const Plane3& plane) {
   if (!view.nearness_on(plane.normal, view.offset_from_eye(polygon.outer, plane.normal))) {
     return {};  // edge-on: no area in the image
   }
@@ -86,7 +91,24 @@ clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view) 
   if (zmax <= view.near()) return {};
   clipper::PolygonSet2 image =
       zmin >= view.near() ? project_vertices(polygon, view) : project_in_front(polygon, view);
-  if (const auto window = view.window()) image = clipper::intersection(image, {*window});
+  if (const auto window = view.window()) {
+    // A light's view from a point has six such windows: most faces lie wholly inside one
+    // of them and wholly outside the others, which the exact tests of a convex window
+    // settle without a clip. Wholly outside, nothing is in view; wholly inside, the image
+    // is kept as it is (the clip gives it back too, but for vertices within a hot pixel of
+    // one another, which it snaps together).
+    const ConvexWindow frame(*window);
+    auto every_piece = [&image](auto&& test) {
+      return std::all_of(image.begin(), image.end(), test);
+    };
+    if (every_piece(
+            [&frame](const clipper::PolygonWithHoles2& p) { return frame.apart_from(p); })) {
+      return {};
+    }
+    if (!every_piece([&frame](const clipper::PolygonWithHoles2& p) { return frame.holds(p); })) {
+      image = clipper::intersection(image, {*window});
+    }
+  }
   return image;
 }
 

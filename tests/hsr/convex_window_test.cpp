@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "clipper/clip.h"
@@ -68,6 +69,29 @@ TEST(ConvexWindow, GivesTheClippersRegions) {
     if (got.inside.empty() != got.outside.empty()) ++shortcuts;
   }
   EXPECT_GT(shortcuts, 100);
+}
+
+// The two tests on their own say what the clip says: apart, nothing inside; held, the
+// subject inside whole and nothing outside.
+TEST(ConvexWindow, ApartAndHeldAreWhatTheClipSays) {
+  std::mt19937 rng(11);
+  int apart = 0, held = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const PolygonWithHoles2 window = random_polygon(rng), subject = random_polygon(rng);
+    const ConvexWindow w(window);
+    const clipper::ClipResult expected = clipper::clip(subject, window);
+    if (w.apart_from(subject)) {
+      ++apart;
+      EXPECT_EQ(clipper::area(expected.inside), 0.0) << trial;
+    }
+    if (w.holds(subject)) {
+      ++held;
+      EXPECT_EQ(clipper::area(expected.outside), 0.0) << trial;
+      EXPECT_EQ(clipper::area(expected.inside), std::fabs(clipper::area(subject))) << trial;
+    }
+  }
+  EXPECT_GT(apart, 500);
+  EXPECT_GT(held, 30);
 }
 
 }  // namespace

@@ -7,9 +7,12 @@
 
 #include <algorithm>
 #include <iostream>
+#include <random>
 #include <span>
 #include <vector>
 
+#include "clipper/clip.h"
+#include "clipper/normalize.h"
 #include "tests/hsr/scenes.h"
 #include "tests/hsr/visibility_check.h"
 #include "tests/support/cgal_oracle.h"
@@ -164,6 +167,49 @@ TEST(HiddenSurface, PerspectiveNearPlaneCutsTheFloorExactly) {
   const clipper::PolygonSet2 expected{image_of(seen, view)};
   const ExactUnionComparison c = compare_exact_unions(std::span(&ours, 1), std::span(&expected, 1));
   EXPECT_LE(c.symmetric_difference, 1e-15);
+}
+
+// Through a perspective view's window (a point light's six views have one each), the
+// image is the vertices' image clipped to the window, whether a polygon lies wholly
+// inside it, wholly outside it (both settled without a clip) or across its sides; and
+// the same, byte for byte, with the polygon's plane given.
+TEST(HiddenSurface, ImagesThroughAWindowAreTheImagesClippedToIt) {
+  const View view = View::perspective({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 60.0, 0.1);
+  const clipper::PolygonWithHoles2 window = *view.window();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> centre(-3.0, 3.0), offset(-0.4, 0.4), depth(2.0, 5.0);
+  int inside = 0, outside = 0, crossing = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const dvec3 middle{centre(rng), centre(rng), depth(rng)};
+    Polygon3 triangle;
+    for (int k = 0; k < 3; ++k)
+      triangle.outer.push_back(middle + dvec3{offset(rng), offset(rng), offset(rng)});
+    const clipper::PolygonSet2 got = hsr::project_polygon(triangle, view);
+    const clipper::PolygonSet2 whole = clipper::normalized({image_of(triangle, view)});
+    const clipper::PolygonSet2 expected = clipper::intersection(whole, {window});
+    const ExactUnionComparison c =
+        compare_exact_unions(std::span(&got, 1), std::span(&expected, 1));
+    EXPECT_LE(c.symmetric_difference, 1e-15 * c.b_union) << trial;
+    const double seen = clipper::area(expected), all = clipper::area(whole);
+    if (seen == 0.0) {
+      ++outside;
+      EXPECT_TRUE(got.empty()) << trial;
+    } else if (seen == all) {
+      ++inside;
+    } else {
+      ++crossing;
+    }
+    const clipper::PolygonSet2 given =
+        hsr::project_polygon(triangle, view, hsr::plane_of(triangle));
+    ASSERT_EQ(given.size(), got.size()) << trial;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(given[i].outer, got[i].outer) << trial;
+      EXPECT_EQ(given[i].holes, got[i].holes) << trial;
+    }
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 100);
+  EXPECT_GT(crossing, 100);
 }
 
 TEST(HiddenSurface, EdgeOnPolygonIsCountedAndLeavesNoFragment) {

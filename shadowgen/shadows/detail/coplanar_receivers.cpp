@@ -99,7 +99,8 @@ std::vector<clipper::PolygonSet2> seen_on_shared_planes(
       const std::size_t k = members[i];
       if (!receivers.lit_side(k)) return;
       on_part(receivers.part(k), [&] {
-        const clipper::PolygonSet2 image = hsr::project_polygon(polygons[k], view);
+        const clipper::PolygonSet2 image =
+            hsr::project_polygon(polygons[k], view, receivers.planes()[k]);
         if (!image.empty()) pieces.within(k, image, extra[k]);
       });
     });
