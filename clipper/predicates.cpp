@@ -176,6 +176,10 @@ Orientation orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3&
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
   const double bound = kOrient3Bound * permanent;
   if (det > bound || -det > bound) return to_orientation(det);
+  // Two of the points the same (a vertex of a mesh tested against the plane of a
+  // neighbour that shares it): the determinant is exactly zero, which the filter cannot
+  // tell.
+  if (d == a || d == b || d == c || a == b || a == c || b == c) return Orientation::kCollinear;
   // Exact: every difference split in two, the 3x3 determinant expanded into products of
   // three doubles, each added exactly.
   const Pair u[3] = {two_diff(a.x, d.x), two_diff(a.y, d.y), two_diff(a.z, d.z)};

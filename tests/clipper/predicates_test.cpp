@@ -127,6 +127,27 @@ TEST(Orient3d, ExactOnATiltedPlaneAndOneUlpOff) {
   EXPECT_EQ(orient3d(a, b, c, below), Orientation::kCounterClockwise);
 }
 
+// A point tested against a plane through itself (faces sharing a vertex), or a plane
+// through one point twice, is coplanar, whatever the rounding of the filter's products.
+TEST(Orient3d, TwoPointsTheSameAreCoplanar) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> coordinate(-1e6, 1e6);
+  auto point = [&] { return glm::dvec3(coordinate(rng), coordinate(rng), coordinate(rng)); };
+  for (int i = 0; i < 1000; ++i) {
+    const glm::dvec3 a = point(), b = point(), c = point(), d = point();
+    ASSERT_EQ(orient3d(a, b, c, a), Orientation::kCollinear);
+    ASSERT_EQ(orient3d(a, b, c, b), Orientation::kCollinear);
+    ASSERT_EQ(orient3d(a, b, c, c), Orientation::kCollinear);
+    ASSERT_EQ(orient3d(a, a, c, d), Orientation::kCollinear);
+    ASSERT_EQ(orient3d(a, b, b, d), Orientation::kCollinear);
+    ASSERT_EQ(orient3d(c, b, c, d), Orientation::kCollinear);
+  }
+  // Distinct points a hair off the plane keep their exact answer.
+  const glm::dvec3 a{0, 0, 1e8}, b{1, 0, 1e8}, c{0, 1, 1e8};
+  EXPECT_EQ(orient3d(a, b, c, {0.5, 0.5, std::nextafter(1e8, 0.0)}),
+            Orientation::kCounterClockwise);
+}
+
 }  // namespace
 }  // namespace shadowgen::clipper
 
