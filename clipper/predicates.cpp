@@ -180,6 +180,11 @@ Orientation orient3d(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3&
   // neighbour that shares it): the determinant is exactly zero, which the filter cannot
   // tell.
   if (d == a || d == b || d == c || a == b || a == c || b == c) return Orientation::kCollinear;
+  // The four on a plane square to an axis (a model's flat floor or wall): one column of
+  // the determinant is exactly zero.
+  for (int k = 0; k < 3; ++k) {
+    if (a[k] == d[k] && b[k] == d[k] && c[k] == d[k]) return Orientation::kCollinear;
+  }
   // Exact: every difference split in two, the 3x3 determinant expanded into products of
   // three doubles, each added exactly.
   const Pair u[3] = {two_diff(a.x, d.x), two_diff(a.y, d.y), two_diff(a.z, d.z)};

@@ -148,6 +148,27 @@ TEST(Orient3d, TwoPointsTheSameAreCoplanar) {
             Orientation::kCounterClockwise);
 }
 
+// Four points sharing one coordinate lie on a plane square to that axis, whatever the
+// others; one of them a hair off it is not.
+TEST(Orient3d, OnAPlaneSquareToAnAxisIsCoplanar) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coordinate(-1e6, 1e6);
+  for (int i = 0; i < 1000; ++i) {
+    const int axis = i % 3;
+    const double level = coordinate(rng);
+    auto point = [&] {
+      glm::dvec3 p(coordinate(rng), coordinate(rng), coordinate(rng));
+      p[axis] = level;
+      return p;
+    };
+    const glm::dvec3 a = point(), b = point(), c = point();
+    glm::dvec3 d = point();
+    ASSERT_EQ(orient3d(a, b, c, d), Orientation::kCollinear);
+    d[axis] = std::nextafter(level, 2e6);
+    ASSERT_NE(orient3d(a, b, c, d), Orientation::kCollinear);
+  }
+}
+
 }  // namespace
 }  // namespace shadowgen::clipper
 
