@@ -120,6 +120,10 @@ clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject
   // A loop without area is the clipper's to drop.
   if (subject.outer.size() < 3) return clipper::clip(subject, window_);
   if (apart_from(subject)) return {{}, {subject}};
+  return clip_not_apart(subject);
+}
+
+clipper::ClipResult ConvexWindow::clip_not_apart(const clipper::PolygonWithHoles2& subject) const {
   if (holds(subject)) return {{subject}, {}};
   if (!region_) region_.emplace(window_);
   return region_->clip(subject);

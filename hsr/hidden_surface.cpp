@@ -118,8 +118,13 @@ class AreaSort {
       for (std::size_t c : candidates) {
         if (!alive[c] || !boxes[c].overlaps(tbox)) continue;
         ++stats_.clips;
-        clipper::ClipResult r =
-            clip_of(pieces[c].parent, [&] { return template_window.clip(pieces[c].shape); });
+        // Most candidates lie beside the template: they stay as they are.
+        const PolygonWithHoles2& shape = pieces[c].shape;
+        if (shape.outer.size() >= 3 && template_window.apart_from(shape)) continue;
+        clipper::ClipResult r = clip_of(pieces[c].parent, [&] {
+          return shape.outer.size() >= 3 ? template_window.clip_not_apart(shape)
+                                         : template_window.clip(shape);
+        });
         if (r.inside.empty()) continue;
         alive[c] = false;
         grid.erase(c);

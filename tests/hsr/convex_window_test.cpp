@@ -72,7 +72,8 @@ TEST(ConvexWindow, GivesTheClippersRegions) {
 }
 
 // The two tests on their own say what the clip says: apart, nothing inside; held, the
-// subject inside whole and nothing outside.
+// subject inside whole and nothing outside; and past the first, the rest of the clip
+// gives the clipper's regions.
 TEST(ConvexWindow, ApartAndHeldAreWhatTheClipSays) {
   std::mt19937 rng(11);
   int apart = 0, held = 0;
@@ -88,6 +89,11 @@ TEST(ConvexWindow, ApartAndHeldAreWhatTheClipSays) {
       ++held;
       EXPECT_EQ(clipper::area(expected.outside), 0.0) << trial;
       EXPECT_EQ(clipper::area(expected.inside), std::fabs(clipper::area(subject))) << trial;
+    }
+    if (!w.apart_from(subject)) {
+      const clipper::ClipResult got = w.clip_not_apart(subject);
+      EXPECT_NEAR(clipper::area(got.inside), clipper::area(expected.inside), 1e-12) << trial;
+      EXPECT_NEAR(clipper::area(got.outside), clipper::area(expected.outside), 1e-12) << trial;
     }
   }
   EXPECT_GT(apart, 500);
