@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <optional>
 
 #include "clipper/box.h"
 #include "clipper/clip.h"
@@ -25,6 +26,24 @@ clipper::PolygonSet2 project_vertices(const Polygon3& polygon, const View& view)
   clipper::PolygonWithHoles2 p{project_loop(polygon.outer), {}};
   for (const Loop3& h : polygon.holes) p.holes.push_back(project_loop(h));
   return clipper::normalized({p});
+}
+
+// Whether every vertex of `loop`, projected as project_vertices projects it, lies
+// strictly beyond one side of the rectangle `frame`. Then so does every vertex of the
+// normalized image (which keeps a subset of them), and a convex window's exact test
+// finds the image apart from the frame: a face beside a point light's view is settled
+// before its image is made.
+bool beyond_one_side(const Loop3& loop, const View& view, const clipper::Box2& frame) {
+  bool left = true, right = true, below = true, above = true;
+  for (const glm::dvec3& p : loop) {
+    const clipper::Point2 q = view.project(p);
+    left = left && q.x < frame.xmin;
+    right = right && q.x > frame.xmax;
+    below = below && q.y < frame.ymin;
+    above = above && q.y > frame.ymax;
+    if (!(left || right || below || above)) return false;
+  }
+  return true;
 }
 
 // Perspective, for a polygon that crosses the near plane: cut there in 3D, in the
@@ -89,9 +108,14 @@ clipper::PolygonSet2 project_polygon(const Polygon3& polygon, const View& view,
   visit(polygon.outer);
   for (const Loop3& h : polygon.holes) visit(h);
   if (zmax <= view.near()) return {};
+  const std::optional<clipper::PolygonWithHoles2> window = view.window();
+  if (window && zmin >= view.near() &&
+      beyond_one_side(polygon.outer, view, clipper::box_of(window->outer))) {
+    return {};
+  }
   clipper::PolygonSet2 image =
       zmin >= view.near() ? project_vertices(polygon, view) : project_in_front(polygon, view);
-  if (const auto window = view.window()) {
+  if (window) {
     // A light's view from a point has six such windows: most faces lie wholly inside one
     // of them and wholly outside the others, which the exact tests of a convex window
     // settle without a clip. Wholly outside, nothing is in view; wholly inside, the image
