@@ -55,8 +55,11 @@ class GroupPieces {
     for (std::size_t i : near) {
       if (pieces_[i].owner == receiver || !box.overlaps(boxes_[i])) continue;
       // The image's parts are disjoint: the piece within each, in turn.
+      const clipper::PolygonWithHoles2& piece = *pieces_[i].shape;
       for (const hsr::ConvexWindow& window : windows) {
-        for (auto& q : window.clip(*pieces_[i].shape).inside) out.push_back(std::move(q));
+        if (piece.outer.size() < 3) continue;  // no area to share
+        if (window.apart_from(piece)) continue;
+        for (auto& q : window.clip_not_apart(piece).inside) out.push_back(std::move(q));
       }
     }
   }
