@@ -35,6 +35,9 @@ Box2 bounds(const Boundary& loops) {
   return b;
 }
 
+// Clips of more points than this give the loops kept per thread back when done.
+constexpr std::size_t kKeptPoints = std::size_t{1} << 14;
+
 // The clip of a normalized subject by a normalized region given as its loops and box.
 ClipResult clip_normalized(PolygonSet2 a, const Boundary& clip_loops, const Box2& clip_box) {
   ClipResult result;
@@ -48,8 +51,11 @@ ClipResult clip_normalized(PolygonSet2 a, const Boundary& clip_loops, const Box2
     result.outside = std::move(a);
     return result;
   }
-  // The subject's loops are its own from here on: moved, not copied.
-  Boundary loops[2];
+  // The subject's loops are its own from here on: moved, not copied. The clip's are
+  // copied into loops kept per thread, whose storage the next clip reuses (a clip of
+  // two small polygons spent a tenth of its allocations there).
+  thread_local Boundary loops[2];
+  loops[0].clear();
   for (PolygonWithHoles2& p : a) {
     loops[0].push_back(std::move(p.outer));
     for (Loop2& h : p.holes) loops[0].push_back(std::move(h));
@@ -59,6 +65,8 @@ ClipResult clip_normalized(PolygonSet2 a, const Boundary& clip_loops, const Box2
   // decision from here on is exact on it.
   detail::snap_round(loops);
   const detail::OverlayEdges edges = detail::overlay(loops);
+  // A huge clip (a ground's lit region) gives its loops' storage back, as the overlay does.
+  if (edges.point_count > kKeptPoints) loops[0] = loops[1] = Boundary{};
   result.inside = detail::assemble_polygons(edges.inside, edges.point_count);
   result.outside = detail::assemble_polygons(edges.outside, edges.point_count);
   return result;
