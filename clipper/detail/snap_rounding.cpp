@@ -566,16 +566,15 @@ void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats, SnapPa
   // Points cut out of routes held back first: that ends the cycles of cuts. Where it
   // leaves edges crossing, the rounds again putting points back, cycles and all, which
   // pass through noded states (snap_convergence.cpp): each way settled inputs the other
-  // did not.
+  // did not. Either way's result is taken only where the exact check finds it noded,
+  // settled or not: the rounds look again only at pairs with a piece changed in the
+  // last round, and a route held back has left a crossing unseen that way (regression
+  // rounds-settled-short-of-a-crossing-by-a-corner).
   SnapRoundingStats local;
   for (const bool hold_back : {true, false}) {
     SnapRounder rounder(loops, hold_back);
     local = rounder.run(loops);
     if (stats != nullptr) *stats = local;
-    if (local.converged) {
-      rounder.write_back(loops);
-      return;
-    }
     std::vector<Loop2> snapped[2] = {loops[0], loops[1]};
     rounder.write_back(snapped);
     if (noded(snapped)) {
