@@ -72,9 +72,10 @@ enum class SnapPath { kShortcutWhereShown, kRoundsOnly };
 // Whatever way the rounds end (settled, stopped by the round limit, or with points held
 // out of routes: stats->converged false), the snapped edges are checked exactly: meeting
 // only at common vertices or as the very same segment, they are a plane graph, and the
-// loops come back snapped as far as the rounds went. Otherwise it throws SnapRoundingError (clipper/
-// clip.h), after filling `stats`, and the loops are left as they came: a graph that is
-// not noded would give every caller pieces whose areas could be wrong, so none gets one.
+// loops come back snapped as far as the rounds went. Otherwise it throws
+// SnapRoundingError (clipper/clip.h), after filling `stats`, and the loops are left as
+// they came: a graph that is not noded would give every caller pieces whose areas could
+// be wrong, so none gets one.
 void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats = nullptr,
                 SnapPath path = SnapPath::kShortcutWhereShown);
 
