@@ -116,17 +116,20 @@ bool ConvexWindow::holds(const clipper::PolygonWithHoles2& subject) const {
   return turn_ != 0 && window_.holes.empty() && within(window_.outer, turn_, subject.outer);
 }
 
-clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject) const {
+std::optional<clipper::ClipResult> ConvexWindow::clip_unless_apart(
+    const clipper::PolygonWithHoles2& subject) const {
   // A loop without area is the clipper's to drop.
   if (subject.outer.size() < 3) return clipper::clip(subject, window_);
-  if (apart_from(subject)) return {{}, {subject}};
-  return clip_not_apart(subject);
-}
-
-clipper::ClipResult ConvexWindow::clip_not_apart(const clipper::PolygonWithHoles2& subject) const {
-  if (holds(subject)) return {{subject}, {}};
+  if (apart_from(subject)) return std::nullopt;
+  if (holds(subject)) return clipper::ClipResult{{subject}, {}};
   if (!region_) region_.emplace(window_);
   return region_->clip(subject);
+}
+
+clipper::ClipResult ConvexWindow::clip(const clipper::PolygonWithHoles2& subject) const {
+  std::optional<clipper::ClipResult> r = clip_unless_apart(subject);
+  if (!r) return {{}, {subject}};
+  return std::move(*r);
 }
 
 }  // namespace shadowgen::hsr

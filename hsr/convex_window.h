@@ -33,10 +33,10 @@ class ConvexWindow {
   // the window share no area, and whether the subject lies inside the window whole.
   bool apart_from(const clipper::PolygonWithHoles2& subject) const;
   bool holds(const clipper::PolygonWithHoles2& subject) const;
-  // clip() for a subject of three or more vertices that apart_from has found not apart:
-  // a caller that tests first keeps a subject beside the window as it is, without the
-  // copy clip() returns.
-  clipper::ClipResult clip_not_apart(const clipper::PolygonWithHoles2& subject) const;
+  // clip(), but nothing where the subject lies beside the window (apart_from): a caller
+  // that keeps such a subject as it is does without the copy clip() returns.
+  std::optional<clipper::ClipResult> clip_unless_apart(
+      const clipper::PolygonWithHoles2& subject) const;
 
  private:
   const clipper::PolygonWithHoles2& window_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <queue>
 #include <stdexcept>
 #include <utility>
@@ -119,13 +120,10 @@ class AreaSort {
         if (!alive[c] || !boxes[c].overlaps(tbox)) continue;
         ++stats_.clips;
         // Most candidates lie beside the template: they stay as they are.
-        const PolygonWithHoles2& shape = pieces[c].shape;
-        if (shape.outer.size() >= 3 && template_window.apart_from(shape)) continue;
-        clipper::ClipResult r = clip_of(pieces[c].parent, [&] {
-          return shape.outer.size() >= 3 ? template_window.clip_not_apart(shape)
-                                         : template_window.clip(shape);
-        });
-        if (r.inside.empty()) continue;
+        std::optional<clipper::ClipResult> near = clip_of(
+            pieces[c].parent, [&] { return template_window.clip_unless_apart(pieces[c].shape); });
+        if (!near || near->inside.empty()) continue;
+        clipper::ClipResult& r = *near;
         alive[c] = false;
         grid.erase(c);
         const std::size_t parent = pieces[c].parent;

@@ -57,9 +57,9 @@ class GroupPieces {
       // The image's parts are disjoint: the piece within each, in turn.
       const clipper::PolygonWithHoles2& piece = *pieces_[i].shape;
       for (const hsr::ConvexWindow& window : windows) {
-        if (piece.outer.size() < 3) continue;  // no area to share
-        if (window.apart_from(piece)) continue;
-        for (auto& q : window.clip_not_apart(piece).inside) out.push_back(std::move(q));
+        std::optional<clipper::ClipResult> met = window.clip_unless_apart(piece);
+        if (!met) continue;
+        for (auto& q : met->inside) out.push_back(std::move(q));
       }
     }
   }
