@@ -58,9 +58,13 @@
 // rounds first keep such points out, then, where that leaves edges crossing, run again
 // putting them back, stopping after 17 rounds of changes at the first state whose edges
 // are checked exactly to meet only at vertices, within 34 rounds more. Where neither
-// way ends noded, the pieces would still be valid loops but their areas could be wrong
-// by more than the pixels account for (README, Limits), so the call throws
-// SnapRoundingError instead of returning them.
+// way ends noded, the operands are snap rounded on a grid instead (detail/grid_snap.h),
+// which nodes them by construction and moves each vertex of the loops snapped together
+// by less than 12u·M, M their largest coordinate magnitude: the pixel at M, however
+// small the vertex's own magnitude. The result is checked exactly all the same; were it
+// not noded, the pieces would still be valid loops but their areas could be wrong by
+// more than the grid accounts for, so the call would throw SnapRoundingError instead
+// of returning them.
 //
 // Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
 // clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
@@ -75,11 +79,11 @@
 
 namespace shadowgen::clipper {
 
-// The snapping stopped at its round limit with edges still meeting elsewhere than at
-// common vertices (see Limit above): thrown by clip(), intersection(), difference() and
-// merge_adjacent() (merge.h) in place of pieces whose areas could be wrong. The clipper
-// does not know what its operands stand for; a caller that does names it and passes the
-// failure on.
+// The snapping ended with edges still meeting elsewhere than at common vertices, after
+// the rounds and the grid both (see Limit above): thrown by clip(), intersection(),
+// difference() and merge_adjacent() (merge.h) in place of pieces whose areas could be
+// wrong. The clipper does not know what its operands stand for; a caller that does names
+// it and passes the failure on.
 class SnapRoundingError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -97,14 +101,15 @@ auto failing_as(std::size_t index, Work&& work) {
   }
 }
 
-// For tests of that failure, which no known input causes: while one lives, the snapping
-// stops after `rounds` rounds of changes instead of 17, and looks `search` rounds more
-// instead of 34 for edges meeting only at vertices (with 0 and 0 it changes nothing, and
-// operands whose edges cross or end inside one another fail). Process-wide; the previous
-// bounds come back when it ends.
+// For tests of that failure, which no known input causes, and of the grid: while one
+// lives, the snapping stops after `rounds` rounds of changes instead of 17, and looks
+// `search` rounds more instead of 34 for edges meeting only at vertices (with 0 and 0 it
+// changes nothing), and, unless `on_grid`, it does not snap on a grid where the rounds
+// end with edges crossing: then operands whose edges cross or end inside one another
+// fail. Process-wide; the previous bounds come back when it ends.
 class SnapRoundLimitForTesting {
  public:
-  explicit SnapRoundLimitForTesting(int rounds, int search = 0);
+  explicit SnapRoundLimitForTesting(int rounds, int search = 0, bool on_grid = false);
   ~SnapRoundLimitForTesting();
   SnapRoundLimitForTesting(const SnapRoundLimitForTesting&) = delete;
   SnapRoundLimitForTesting& operator=(const SnapRoundLimitForTesting&) = delete;
@@ -112,6 +117,7 @@ class SnapRoundLimitForTesting {
  private:
   int previous_;
   int previous_search_;
+  bool previous_on_grid_;
 };
 
 struct ClipResult {

@@ -30,6 +30,7 @@ constexpr int kSearchRounds = 34;
 // The bounds in force: these but while a SnapRoundLimitForTesting lives (clip.h).
 std::atomic<int> round_limit{kMaxRounds};
 std::atomic<int> search_rounds{kSearchRounds};
+std::atomic<bool> grid_allowed{true};
 
 // Whether two edges meet only at a common endpoint or as the very same segment (exact):
 // no proper crossing, no endpoint of one inside the other.
@@ -49,6 +50,8 @@ bool meet_at_vertices(const Point2& a0, const Point2& a1, const Point2& b0, cons
 int snap_round_limit() { return round_limit.load(std::memory_order_relaxed); }
 
 int snap_round_search() { return search_rounds.load(std::memory_order_relaxed); }
+
+bool snap_on_grid_allowed() { return grid_allowed.load(std::memory_order_relaxed); }
 
 bool noded(const std::vector<Loop2> (&loops)[2]) {
   struct Edge {
@@ -77,13 +80,15 @@ bool noded(const std::vector<Loop2> (&loops)[2]) {
 namespace shadowgen::clipper {
 
 // The test hook of clip.h, here beside the limit it sets.
-SnapRoundLimitForTesting::SnapRoundLimitForTesting(int rounds, int search)
+SnapRoundLimitForTesting::SnapRoundLimitForTesting(int rounds, int search, bool on_grid)
     : previous_(detail::round_limit.exchange(std::max(rounds, 0))),
-      previous_search_(detail::search_rounds.exchange(std::max(search, 0))) {}
+      previous_search_(detail::search_rounds.exchange(std::max(search, 0))),
+      previous_on_grid_(detail::grid_allowed.exchange(on_grid)) {}
 
 SnapRoundLimitForTesting::~SnapRoundLimitForTesting() {
   detail::round_limit.store(previous_);
   detail::search_rounds.store(previous_search_);
+  detail::grid_allowed.store(previous_on_grid_);
 }
 
 }  // namespace shadowgen::clipper

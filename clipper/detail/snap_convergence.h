@@ -17,6 +17,10 @@ namespace shadowgen::clipper::detail {
 int snap_round_limit();
 int snap_round_search();
 
+// Whether the snapping may fall back on a grid (grid_snap.h) where the rounds end with
+// edges crossing: always, but while a SnapRoundLimitForTesting that forbids it lives.
+bool snap_on_grid_allowed();
+
 // Whether the loops' edges all meet only at vertices: the plane graph the overlay needs,
 // which a round limit can leave the snapping short of.
 bool noded(const std::vector<Loop2> (&loops)[2]);

@@ -13,6 +13,8 @@
 #include "clipper/predicates.h"
 #include "close_pairs.h"
 #include "crossing.h"
+#include "grid_snap.h"
+#include "loop_of_routes.h"
 #include "snap.h"
 #include "snap_contacts.h"
 #include "snap_convergence.h"
@@ -47,25 +49,6 @@ bool near_each_other(const Point2& a, const Point2& b, const Point2& from, const
   }
   return std::fabs(a.y - b.y) <= k * (std::fabs(a.y) + std::fabs(b.y));
 }
-
-// A loop put together from its edges' routes, as snap_round returns it: repeats in a row
-// dropped, the last point dropped while it is the first again, and nothing left of a loop
-// snapped to a single point (it bounds nothing).
-class LoopOfRoutes {
- public:
-  explicit LoopOfRoutes(std::size_t expected) { out_.reserve(expected); }
-  void add(const Point2& p) {
-    if (out_.empty() || out_.back() != p) out_.push_back(p);
-  }
-  Loop2 take() {
-    while (out_.size() > 1 && out_.back() == out_.front()) out_.pop_back();
-    if (out_.size() < 2) out_.clear();
-    return std::move(out_);
-  }
-
- private:
-  Loop2 out_;
-};
 
 // The common case decided without rounds: operands of a few edges that meet only where
 // edges cross properly or where a vertex lies in an edge's way (on it, or off it within
@@ -580,6 +563,18 @@ void snap_round(std::vector<Loop2> (&loops)[2], SnapRoundingStats* stats, SnapPa
     if (noded(snapped)) {
       loops[0] = std::move(snapped[0]);
       loops[1] = std::move(snapped[1]);
+      return;
+    }
+  }
+  // Neither way reached a plane graph: snap rounding on a grid does by construction,
+  // moving every vertex further (grid_snap.h).
+  if (snap_on_grid_allowed()) {
+    std::vector<Loop2> gridded[2] = {loops[0], loops[1]};
+    snap_round_on_grid(gridded);
+    if (stats != nullptr) stats->on_grid = true;
+    if (noded(gridded)) {
+      loops[0] = std::move(gridded[0]);
+      loops[1] = std::move(gridded[1]);
       return;
     }
   }

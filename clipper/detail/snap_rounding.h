@@ -19,7 +19,9 @@
 // of a sun path fanning out from one corner), so the rounds first keep them out of that
 // route; where that leaves edges crossing, the rounds run again putting them back, and
 // such cycles pass through states whose edges meet only at vertices (snap_convergence.h).
-// Each way settled inputs the other did not.
+// Each way settled inputs the other did not. Where neither does, the operands are snap
+// rounded on a grid (grid_snap.h), which moves their vertices further but needs no
+// rounds.
 //
 // Vertices in each other's pixels are merged (the one with the wider pixel stays), never
 // along a chain. A piece routed through a vertex off its input edge may lie that far from
@@ -56,6 +58,7 @@ struct SnapRoundingStats {
   bool converged = true;      // false when the round limit stopped it, or it ended
                               // with points held out of routes they were cut from
   bool separated = false;     // decided by the shortcut, without rounds
+  bool on_grid = false;       // neither way of the rounds ended noded: snapped on a grid
 };
 
 // Whether snap_round may take its shortcut (operands of a few edges, well clear of each
@@ -72,7 +75,9 @@ enum class SnapPath { kShortcutWhereShown, kRoundsOnly };
 // Whatever way the rounds end (settled, stopped by the round limit, or with points held
 // out of routes: stats->converged false), the snapped edges are checked exactly: meeting
 // only at common vertices or as the very same segment, they are a plane graph, and the
-// loops come back snapped as far as the rounds went. Otherwise it throws
+// loops come back snapped as far as the rounds went. Otherwise they are snapped on a
+// grid (stats->on_grid), whose result is checked the same way; where that fails too (no
+// input is known to), it throws
 // SnapRoundingError (clipper/clip.h), after filling `stats`, and the loops are left as
 // they came: a graph that is not noded would give every caller pieces whose areas could
 // be wrong, so none gets one.

@@ -18,6 +18,7 @@
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
 #include "tests/support/cgal_oracle.h"
+#include "tests/support/random_polygons.h"
 
 namespace shadowgen::clipper {
 namespace {
@@ -195,21 +196,10 @@ TEST(SnapRoundingError, SunHoursRegionsOfGroundsInManyFansSettle) {
 // more than at the origin, can need a second round to node what the first one made.
 TEST(SnapRoundingError, OneRoundShortOfWhatTheInputNeedsFailsWhereEdgesStillCross) {
   std::mt19937_64 random(1);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   int failed_after_a_round = 0;
   for (int trial = 0; trial < 100; ++trial) {
     std::vector<Loop2> loops[2];
-    for (auto& side : loops) {
-      Loop2 star;
-      for (int k = 0; k < 3 + trial % 5; ++k) {
-        const double angle = unit(random) * M_PI, radius = 1.0 + 0.5 * unit(random);
-        const double hair = 1e-13 * unit(random);
-        const double dx = radius * std::cos(angle), dy = radius * std::sin(angle);
-        star.push_back({1000.0 + dx + hair, 1000.0 + dy - hair});
-        star.push_back({1000.0 - dx + hair, 1000.0 - dy + hair});
-      }
-      side.push_back(star);
-    }
+    for (auto& side : loops) side.push_back(test::almost_concurrent_star(random, 3 + trial % 5));
     std::vector<Loop2> unlimited[2] = {loops[0], loops[1]};
     detail::SnapRoundingStats stats;
     detail::snap_round(unlimited, &stats);

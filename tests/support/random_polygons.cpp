@@ -315,4 +315,17 @@ PolygonWithHoles2 sliver_triangle(std::mt19937_64& rng, double aspect) {
   return polygon;
 }
 
+Loop2 almost_concurrent_star(std::mt19937_64& rng, int lines) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Loop2 star;
+  for (int k = 0; k < lines; ++k) {
+    const double angle = unit(rng) * std::numbers::pi, radius = 1.0 + 0.5 * unit(rng);
+    const double hair = 1e-13 * unit(rng);
+    const double dx = radius * std::cos(angle), dy = radius * std::sin(angle);
+    star.push_back({1000.0 + dx + hair, 1000.0 + dy - hair});
+    star.push_back({1000.0 - dx + hair, 1000.0 - dy + hair});
+  }
+  return star;
+}
+
 }  // namespace shadowgen::test

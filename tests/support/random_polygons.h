@@ -42,6 +42,12 @@ PolygonWithHoles2 random_grid_polygon(std::mt19937_64& rng);
 // direction, its base's midpoint in [-0.2, 0.2]², so two slivers usually cross.
 PolygonWithHoles2 sliver_triangle(std::mt19937_64& rng, double aspect);
 
+// A self-crossing loop of `lines` chords through (1000, 1000), each of length 1 to 3 in
+// a random direction, visited end by end, every end moved by a hair of up to 1e-13:
+// almost concurrent lines, whose rounded crossings crowd around the centre and lie off
+// their lines by more than at the origin. Not normalised.
+Loop2 almost_concurrent_star(std::mt19937_64& rng, int lines);
+
 // Reverses each loop with probability 1/2 and starts it at a random vertex.
 void randomize_loops(PolygonWithHoles2& polygon, std::mt19937_64& rng);
 
