@@ -7,7 +7,9 @@
 //   BM_SunsExport/suns, BM_SunsRender/suns     the city of about 2,000 faces under 10, 30
 //                                        and 100 suns spread over a day's arc (elevations
 //                                        20 to 60 degrees, azimuths over 180 degrees): how
-//                                        the outputs grow with the number of lights.
+//                                        the outputs grow with the number of lights;
+//   BM_SunsExportByLight/suns,           the same export and picture in layers by light.
+//   BM_SunsRenderByLight/suns
 //
 // The picture: 800 × 600, perspective, from above a corner of the city looking at its
 // middle. Counters: faces, lights, obj_mb (the OBJ's size), pieces (the picture's).
@@ -103,11 +105,12 @@ void counters(benchmark::State& state, const ShadowedScene& shadowed) {
   state.counters["lights"] = static_cast<double>(shadowed.scene.lights.size());
 }
 
-void time_export(benchmark::State& state, const ShadowedScene& shadowed) {
+void time_export(benchmark::State& state, const ShadowedScene& shadowed,
+                 ObjFiles (*exporter)(const ShadowedScene&, std::string_view) = obj_export) {
   try {
     ObjFiles files;
     for (auto _ : state) {
-      files = obj_export(shadowed, "out.mtl");
+      files = exporter(shadowed, "out.mtl");
       benchmark::DoNotOptimize(files.obj.data());
     }
     counters(state, shadowed);
@@ -117,12 +120,14 @@ void time_export(benchmark::State& state, const ShadowedScene& shadowed) {
   }
 }
 
-void time_render(benchmark::State& state, const ShadowedScene& shadowed) {
+void time_render(benchmark::State& state, const ShadowedScene& shadowed,
+                 Picture (*renderer)(const ShadowedScene&, const Camera&,
+                                     const RenderOptions&) = render) {
   try {
     const Camera camera = corner_camera(shadowed.scene);
     Picture picture;
     for (auto _ : state) {
-      picture = render(shadowed, camera, RenderOptions{});
+      picture = renderer(shadowed, camera, RenderOptions{});
       benchmark::DoNotOptimize(picture.pieces.data());
     }
     counters(state, shadowed);
@@ -139,8 +144,14 @@ void BM_CityRender(benchmark::State& state) { time_render(state, city(arg(state)
 void BM_SunsExport(benchmark::State& state) {
   time_export(state, suns(static_cast<int>(arg(state))));
 }
+void BM_SunsExportByLight(benchmark::State& state) {
+  time_export(state, suns(static_cast<int>(arg(state))), obj_export_by_light);
+}
 void BM_SunsRender(benchmark::State& state) {
   time_render(state, suns(static_cast<int>(arg(state))));
+}
+void BM_SunsRenderByLight(benchmark::State& state) {
+  time_render(state, suns(static_cast<int>(arg(state))), render_by_light);
 }
 
 BENCHMARK(BM_CityExport)
@@ -156,7 +167,19 @@ BENCHMARK(BM_CityRender)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 BENCHMARK(BM_SunsExport)->Arg(10)->Arg(30)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_SunsExportByLight)
+    ->Arg(10)
+    ->Arg(30)
+    ->Arg(100)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 BENCHMARK(BM_SunsRender)->Arg(10)->Arg(30)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_SunsRenderByLight)
+    ->Arg(10)
+    ->Arg(30)
+    ->Arg(100)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 // --write-database=WORKLOAD:SIZE:PATH, WORKLOAD city (SIZE faces), suns (SIZE suns) or
 // cubes (Thakur, Cheng and Miura's grid of SIZE cubes, 2n × n × n, on a ground, with its

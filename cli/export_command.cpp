@@ -23,9 +23,11 @@ constexpr CommandText kExportText{
     "the OBJ; spaces and other bytes OBJ names cannot hold escaped as %XX): every face split "
     "into the regions lit by the same set of lights, grouped by "
     "face id, one material per light set (\"shadow\", \"sun\", \"sun+lamp\"; shadow grey "
-    "0.2, lit parts lighter); or, with --sun-hours, a sun path's sun-hours regions grouped "
-    "by face and band of hours, one material per band. A scene is generated first; a "
-    "shadowed database is read as it is."};
+    "0.2, lit parts lighter); or, with --by-light, each face whole in shadow and over it "
+    "one layer per light, its lit polygons (group \"<face>@<light>\", one material per "
+    "light), which grows linearly with the lights where light sets do not; or, with "
+    "--sun-hours, a sun path's sun-hours regions grouped by face and band of hours, one "
+    "material per band. A scene is generated first; a shadowed database is read as it is."};
 
 // The MTL goes next to the OBJ, named with the OBJ's stem and ".mtl"; the stem escaped as
 // obj_name() escapes names ("my scene.obj" gets "my%20scene.mtl"), so that the OBJ's
@@ -37,6 +39,7 @@ struct ExportArgs {
   std::string obj;    // OBJ file to write
   ReadingArgs reading;
   SunHoursArgs sun_hours;  // --sun-hours: that path's regions by band instead
+  bool by_light = false;   // --by-light: a layer per light instead of light sets
 };
 
 void run_export(const ExportArgs& args) {
@@ -72,7 +75,8 @@ void run_export(const ExportArgs& args) {
   try {
     files =
         map ? sun_hours_obj_export(shadowed, *map->path, map->bands, mtl_path.filename().string())
-            : obj_export(shadowed, mtl_path.filename().string());
+        : args.by_light ? obj_export_by_light(shadowed, mtl_path.filename().string())
+                        : obj_export(shadowed, mtl_path.filename().string());
   } catch (const GenerationError& e) {
     throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
   }
@@ -88,7 +92,13 @@ void add_export_options(CLI::App& command, ExportArgs& args) {
       ->required();
   add_reading_options(command, args.reading);
   // A sun-hours export writes one path whole: there is nothing for --lights to choose.
-  add_sun_hours_options(command, args.sun_hours, "write")->excludes(command.get_option("--lights"));
+  CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "write");
+  sun_hours->excludes(command.get_option("--lights"));
+  command
+      .add_flag("--by-light", args.by_light,
+                "each face whole in shadow, then one layer per light over it (its lit "
+                "polygons), instead of the faces split by light sets")
+      ->excludes(sun_hours);
 }
 
 }  // namespace

@@ -35,7 +35,10 @@ constexpr CommandText kRenderText{
     "render",
     "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
     "eye, each visible face split by the lights reaching it, flat shaded; or, with "
-    "--sun-hours, split by a sun path's sun hours, coloured by band, with a legend. Reads "
+    "--by-light, each visible face in shadow with one layer per light over it, what that "
+    "light reaches in its share of the shading, which a browser adds up (it grows linearly "
+    "with the lights where light sets do not); or, with --sun-hours, split by a sun path's "
+    "sun hours, coloured by band, with a legend. Reads "
     "only the database; no shadows are recomputed. --png draws the lit picture pixel by pixel "
     "instead or as well, its shadows found by --shadows: the database's (exact), shadow maps "
     "or shadow volumes."};
@@ -58,6 +61,7 @@ struct RenderArgs {
   int height = 600;
   std::vector<std::string> lights;  // --lights: only these are drawn
   SunHoursArgs sun_hours;           // --sun-hours: a sun-hours map of that path instead
+  bool by_light = false;            // --by-light: the SVG in layers by light
 };
 
 // "X,Y,Z" as three finite doubles; nullopt when it is not.
@@ -176,8 +180,9 @@ void run_render(const RenderArgs& args) {
   try {
     if (!args.svg.empty()) {
       const Picture picture =
-          map ? render_sun_hours(shadowed, *map->path, map->bands, camera, options)
-              : render(shadowed, camera, options);
+          map             ? render_sun_hours(shadowed, *map->path, map->bands, camera, options)
+          : args.by_light ? render_by_light(shadowed, camera, options)
+                          : render(shadowed, camera, options);
       svg = svg_document(picture);
     }
     if (!args.png.empty()) png = png_bytes(raster_picture(args, shadowed, camera, options));
@@ -264,6 +269,13 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
   sun_hours->excludes(command.get_option("--lights"));
   // A sun-hours map is drawn as SVG only.
   sun_hours->excludes(png);
+  command
+      .add_flag("--by-light", args.by_light,
+                "with --svg: each visible face in shadow, then one layer per light over it "
+                "(what the light reaches, in its share of the shading), instead of the faces "
+                "split by light sets")
+      ->needs(command.get_option("--svg"))
+      ->excludes(sun_hours);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "detail/obj_text.h"
+#include "hsr/area.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/shadows/light_regions.h"
@@ -84,9 +85,11 @@ void append_face(std::string& obj, const Scene& scene, const Face& face,
 }
 
 // The MTL file: a header saying how the colours are made, then one material per set.
-std::string mtl_text(const Scene& scene,
-                     const std::map<LightSet, std::string, LightSetLess>& names) {
-  std::string mtl = "# shadowgen MTL: one material per set of lights reaching a region.\n# Kd = ";
+std::string mtl_text(const Scene& scene, const std::map<LightSet, std::string, LightSetLess>& names,
+                     std::string_view what) {
+  std::string mtl = "# shadowgen MTL: ";
+  mtl += what;
+  mtl += ".\n# Kd = ";
   append_shortest(mtl, kAmbientGrey);
   mtl += " + ";
   append_shortest(mtl, 1.0 - kAmbientGrey);
@@ -99,6 +102,74 @@ std::string mtl_text(const Scene& scene,
     detail::append_material(mtl, name, colour);
   }
   return mtl;
+}
+
+// A face's group name in the layers by light: obj_name() with '@' escaped as well, which
+// separates it from the light's id.
+std::string face_group_name(std::string_view id) {
+  std::string out;
+  for (const char c : obj_name(id)) {
+    if (c == '@') {
+      out += "%40";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// One face's block of layers by light: the face whole in shadow, then each light's lit
+// polygons on it.
+void append_face_layers(std::string& obj, const ShadowedScene& shadowed, std::size_t f,
+                        const std::map<LightSet, std::string, LightSetLess>& names,
+                        detail::ObjNumbering& numbering) {
+  const Scene& scene = shadowed.scene;
+  const Face& face = scene.faces[f];
+  const std::string group = face_group_name(face.id);
+  obj += "g ";
+  obj += group;
+  obj += '\n';
+  std::vector<LitPolygon> whole;
+  for (std::size_t p = 0; p < face.parts.size(); ++p) {
+    if (hsr::area(face.parts[p]) > 0.0) whole.push_back({p, face.parts[p]});
+  }
+  if (whole.empty()) return;
+  detail::ObjFaceBlock block(face, numbering);
+  block.add_statement("usemtl", names.at(LightSet{}));
+  if (!block.add_polygons(whole)) {
+    throw GenerationError("", face.id, "", "the face could not be split into triangles");
+  }
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    const LitTable::Polygons& lit = shadowed.lit.at(f, l);
+    if (lit.empty()) continue;
+    block.add_statement("g", group + "@" + obj_name(scene.lights[l].id));
+    block.add_statement("usemtl", names.at(LightSet{l}));
+    if (!block.add_polygons(lit)) {
+      // Not the input's fault: valid lit polygons always triangulate.
+      throw GenerationError("", face.id, scene.lights[l].id,
+                            "its lit polygons could not be split into triangles");
+    }
+  }
+  block.append_to(obj, numbering);
+}
+
+// Both files of an export: the OBJ's comment saying what it holds and its mtllib line,
+// then each face's block as `append_face` writes it; the MTL of the materials `names`.
+template <typename AppendFace>
+ObjFiles export_files(const Scene& scene, std::string_view what, std::string_view mtl_file_name,
+                      const std::map<LightSet, std::string, LightSetLess>& names,
+                      std::string_view materials, AppendFace append_face) {
+  ObjFiles files;
+  std::string& obj = files.obj;
+  obj += "# shadowgen OBJ export: ";
+  obj += what;
+  obj += "\nmtllib ";
+  obj += mtl_file_name;
+  obj += '\n';
+  detail::ObjNumbering numbering;
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) append_face(obj, f, numbering);
+  files.mtl = mtl_text(scene, names, materials);
+  return files;
 }
 
 }  // namespace
@@ -139,19 +210,30 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
   const Scene& scene = shadowed.scene;
   const SceneRegions regions = scene_regions(shadowed);
   const std::map<LightSet, std::string, LightSetLess> names = material_names(scene, regions.sets);
+  return export_files(scene, "faces split by the set of lights reaching them", mtl_file_name, names,
+                      "one material per set of lights reaching a region",
+                      [&](std::string& obj, std::size_t f, detail::ObjNumbering& numbering) {
+                        append_face(obj, scene, scene.faces[f], regions.of_face[f], names,
+                                    numbering);
+                      });
+}
 
-  ObjFiles files;
-  std::string& obj = files.obj;
-  obj += "# shadowgen OBJ export: faces split by the set of lights reaching them\n";
-  obj += "mtllib ";
-  obj += mtl_file_name;
-  obj += '\n';
-  detail::ObjNumbering numbering;
+ObjFiles obj_export_by_light(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
+  const Scene& scene = shadowed.scene;
+  check_lit_shape(shadowed, "obj_export_by_light");
+  std::set<LightSet, LightSetLess> sets = {LightSet{}};
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    append_face(obj, scene, scene.faces[f], regions.of_face[f], names, numbering);
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+      if (!shadowed.lit.at(f, l).empty()) sets.insert(LightSet{l});
+    }
   }
-  files.mtl = mtl_text(scene, names);
-  return files;
+  const std::map<LightSet, std::string, LightSetLess> names = material_names(scene, sets);
+  return export_files(scene, "each face in shadow, each light's lit polygons over it",
+                      mtl_file_name, names,
+                      "the shadow, then one material per light reaching a face",
+                      [&](std::string& obj, std::size_t f, detail::ObjNumbering& numbering) {
+                        append_face_layers(obj, shadowed, f, names, numbering);
+                      });
 }
 
 }  // namespace shadowgen

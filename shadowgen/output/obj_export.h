@@ -35,6 +35,26 @@
 // some light of positive intensity is lighter than the shadow. Fall-off with distance is
 // not modelled (a material is one colour). Ks is 0 0 0, d is 1, illum is 1.
 
+// By light (obj_export_by_light): what each light reaches, one layer per light over the
+// face in shadow, in time and size linear in the lights. (The light-set regions above are
+// the arrangement of every light's shadow edges, which grows faster: 100 suns sweeping a
+// face split it into thousands of sets.) Per face, in scene order:
+//
+//   g <face id>                  the face whole, in shadow (faces without area: empty)
+//   v x y z, vn x y z            as above, shared by all the face's groups
+//   usemtl shadow
+//   f ...                        the face's parts
+//   g <face id>@<light id>       one group per light with lit polygons on the face, lights
+//   usemtl <light id>            in scene order: the light's lit polygons, triangulated
+//   f ...                        as regions are above
+//
+// The layers lie on their face and on one another: a viewer shows the groups it is asked
+// to, or a light's layer and the shadow beneath it. Materials: "shadow", then one per light
+// reaching some face, in scene order, named obj_name(light id) (~2, ~3, ... where a name
+// is taken) and coloured by the colour rule for the set of that light alone. In these
+// group names the face id has '@' escaped too (%40), so it is what comes before the first
+// '@' and the light id what follows it.
+
 #include <cstddef>
 #include <glm/vec3.hpp>
 #include <span>
@@ -68,5 +88,9 @@ struct ObjFiles {
 // and GenerationError naming the face should a region fail to triangulate (valid
 // regions do not).
 ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name);
+
+// The layers by light (above); throws as obj_export does, naming the face and the light
+// whose lit polygons fail to triangulate.
+ObjFiles obj_export_by_light(const ShadowedScene& shadowed, std::string_view mtl_file_name);
 
 }  // namespace shadowgen

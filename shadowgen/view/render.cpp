@@ -51,6 +51,51 @@ class LightSetTiling : public detail::FaceTiling {
   std::size_t rest_ = detail::kNoRegion;
 };
 
+// Each light's lit polygons a layer over the face in shadow, coloured by that light's
+// term of the shading formula alone.
+class LightLayerTiling : public detail::FaceTiling {
+ public:
+  LightLayerTiling(const ShadowedScene& shadowed, const RenderOptions& options)
+      : shadowed_(shadowed), options_(options) {}
+
+  void load(std::size_t face) override {
+    lights_.clear();
+    for (std::size_t l = 0; l < shadowed_.scene.lights.size(); ++l) {
+      if (!shadowed_.lit.at(face, l).empty()) lights_.push_back(l);
+    }
+    face_ = face;
+  }
+  std::size_t size() const override { return lights_.size(); }
+  std::span<const LitPolygon> polygons(std::size_t region) const override {
+    return shadowed_.lit.at(face_, lights_[region]);
+  }
+  std::size_t rest() const override { return detail::kNoRegion; }
+  bool layered() const override { return true; }
+
+  void style(Piece& piece, std::size_t region, const glm::dvec3& centroid,
+             const glm::dvec3& normal) const override {
+    const Scene& scene = shadowed_.scene;
+    piece.face_id = scene.faces[piece.face].id;
+    const Rgb shadow = shade(scene, {}, centroid, normal, options_);
+    if (region == detail::kNoRegion) {
+      piece.light_set = light_set_name(scene, {});
+      piece.colour = shadow;
+      return;
+    }
+    piece.lights = {lights_[region]};
+    piece.light_set = light_set_name(scene, piece.lights);
+    piece.layer = 1 + lights_[region];
+    const Rgb lit = shade(scene, piece.lights, centroid, normal, options_);
+    piece.colour = {lit.r - shadow.r, lit.g - shadow.g, lit.b - shadow.b};
+  }
+
+ private:
+  const ShadowedScene& shadowed_;
+  const RenderOptions& options_;
+  std::vector<std::size_t> lights_;  // the lights with lit polygons on the face
+  std::size_t face_ = 0;
+};
+
 }  // namespace
 
 namespace {
@@ -118,6 +163,15 @@ Picture render(const ShadowedScene& shadowed, const Camera& camera, const Render
   check_lit_shape(shadowed, "render");
   LightSetTiling tiling(shadowed, options);
   return detail::paint_picture(shadowed.scene, camera, options, tiling);
+}
+
+Picture render_by_light(const ShadowedScene& shadowed, const Camera& camera,
+                        const RenderOptions& options) {
+  check_lit_shape(shadowed, "render_by_light");
+  LightLayerTiling tiling(shadowed, options);
+  Picture picture = detail::paint_picture(shadowed.scene, camera, options, tiling);
+  picture.layered = true;
+  return picture;
 }
 
 }  // namespace shadowgen

@@ -43,6 +43,20 @@
 // lies on the front side only, so nothing reaches the back (a wall lit from the other
 // side does not show its lit pattern through itself).
 //
+// Layers by light (render_by_light): instead of splitting fragments by light sets, whose
+// regions grow faster than the lights (the arrangement of every light's shadow edges),
+// every visible fragment is drawn whole in shadow (albedo · ambient) and, over it, one
+// layer per light in scene order: the fragment clipped by the image of that light's lit
+// polygons, coloured by that light's term of the formula alone,
+//
+//   albedo ⊙ (1 − ambient) · (1/N) · intensity_L · max(0, n·l_L) · f_L,
+//
+// at the piece's centroid (the difference of shade() for {L} and for no light, so clamped
+// alike). Added up over the base, as an SVG viewer blends the layers (svg_writer.h), they
+// give the formula's sum. Time and pieces grow linearly with the lights. The base pieces
+// and each layer's pieces do not overlap among themselves; layers overlap the base and
+// one another.
+//
 // Pieces are in pixel coordinates (x right, y down, (0, 0) the top-left corner); their
 // loops are oriented so that clipper::area is positive (outer loops have positive signed
 // area in these numbers). The picture's pieces never overlap and cover exactly the image
@@ -87,6 +101,8 @@ struct Piece {
   // Sun-hours maps (sun_hours_map.h): the hours of the piece's region; lights and
   // light_set are then empty.
   std::optional<double> sun_hours;
+  // Layers by light (render_by_light): 0 the base in shadow, 1 + L the layer of light L.
+  std::size_t layer = 0;
 };
 
 // A legend beside the picture, for sun-hours maps: caption lines, then one swatch per
@@ -116,13 +132,18 @@ struct Picture {
   Rgb background;
   std::vector<Piece> pieces;
   RenderStats stats;
-  Legend legend;  // no entries but in a sun-hours map
+  Legend legend;         // no entries but in a sun-hours map
+  bool layered = false;  // layers by light: the base's pieces, then each layer's
 };
 
 // Throws std::invalid_argument for a bad camera or size (see CameraView) and when `lit`
 // is not shaped [face][light].
 Picture render(const ShadowedScene& shadowed, const Camera& camera,
                const RenderOptions& options = {});
+
+// The layers by light (above); throws as render() does.
+Picture render_by_light(const ShadowedScene& shadowed, const Camera& camera,
+                        const RenderOptions& options = {});
 
 // The shading formula above for one point of a face's front side lit by `lights`.
 Rgb shade(const Scene& scene, const std::vector<std::size_t>& lights, const glm::dvec3& point,

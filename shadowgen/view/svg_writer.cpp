@@ -111,7 +111,15 @@ std::string svg_document(const Picture& picture) {
   out += "\" fill=\"";
   append_colour(out, picture.background);
   out += "\"/>\n";
+  std::size_t open_layer = 0;
   for (const Piece& piece : picture.pieces) {
+    if (piece.layer != open_layer) {
+      if (open_layer != 0) out += "</g>\n";
+      open_layer = piece.layer;
+      out += "<g style=\"mix-blend-mode:plus-lighter\" data-light=";
+      append_attribute_value(out, piece.light_set);
+      out += ">\n";
+    }
     out += "<path d=\"";
     append_loop(out, piece.shape.outer);
     for (const clipper::Loop2& hole : piece.shape.holes) append_loop(out, hole);
@@ -130,6 +138,7 @@ std::string svg_document(const Picture& picture) {
     if (piece.back_side) out += " data-side=\"back\"";
     out += "/>\n";
   }
+  if (open_layer != 0) out += "</g>\n";
   if (legend) append_legend(out, picture.legend, picture.width);
   out += "</svg>\n";
   return out;

@@ -22,6 +22,17 @@
 //   <text x=".." y="..">≥ 10 h</text>                            then its label
 //   </g>
 //
+// Layers by light (render.h, render_by_light): the base's paths as above
+// (data-lights="shadow"), then each light's layer in a group whose paths a viewer adds to
+// what lies beneath them, which gives the lit picture's sum of lights:
+//
+//   <g style="mix-blend-mode:plus-lighter" data-light="sun">
+//   <path d="..." fill="#rrggbb" fill-rule="evenodd" data-face="wall" data-lights="sun"/>
+//   </g>
+//
+// (Browsers blend so; a viewer that does not, Inkscape for one, shows each layer's own
+// colours over the base: hide the layers but one to see what that light reaches.)
+//
 // A path holds the piece's outer loop and its holes as closed subpaths; even-odd filling
 // makes the holes. Coordinates are pixels, y down, printed in the shortest form that reads
 // back to the same double (std::to_chars), so the picture is exact at any zoom. A piece

@@ -128,6 +128,59 @@ TEST_F(ExportCli, CourtyardFromDatabaseAndFromSceneMatchTheReport) {
   std::printf("courtyard, two lights: worst relative area error %.3g\n", worst);
 }
 
+// --by-light: per face its whole group, then one layer per light reaching it, whose
+// triangles add up to the report's lit area; the same from the scene and the database.
+TEST_F(ExportCli, ByLightWritesALayerPerLightMatchingTheReport) {
+  const fs::path db = dir_ / "courtyard.shadowed.json";
+  ASSERT_EQ(run({"generate", kCourtyard.string(), "-o", db.string()}).code, 0);
+  const Outcome r =
+      run({"export", db.string(), "--obj", (dir_ / "layers.obj").string(), "--by-light"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::string obj_text = contents(dir_ / "layers.obj");
+  const ObjText obj = parse_obj(obj_text);
+  ASSERT_TRUE(obj.errors.empty()) << obj.errors.front();
+  std::vector<std::string> groups;
+  for (const auto& g : obj.groups) groups.push_back(g.name);
+  EXPECT_EQ(groups,
+            (std::vector<std::string>{"ground", "ground@sun", "ground@lamp", "wall-south",
+                                      "wall-south@sun", "canopy", "canopy@sun", "canopy@lamp"}));
+  const MtlText mtl = parse_mtl(contents(dir_ / "layers.mtl"));
+  EXPECT_EQ(mtl.order, (std::vector<std::string>{"shadow", "sun", "lamp"}));
+
+  const Outcome report = run({"report", db.string()});
+  ASSERT_EQ(report.code, 0) << report.err;
+  std::size_t checked = 0;
+  for (const ReportRow& row : parse_report(report.out)) {
+    const auto whole = std::find_if(obj.groups.begin(), obj.groups.end(),
+                                    [&row](const auto& g) { return g.name == row.face; });
+    ASSERT_NE(whole, obj.groups.end()) << row.face;
+    EXPECT_LE(relative_error(material_areas(*whole).at("shadow"), row.area), 1e-9) << row.face;
+    const auto layer = std::find_if(obj.groups.begin(), obj.groups.end(), [&row](const auto& g) {
+      return g.name == row.face + "@" + row.light;
+    });
+    if (row.lit_area == 0.0) {
+      EXPECT_EQ(layer, obj.groups.end()) << row.face << "@" << row.light;
+      continue;
+    }
+    ASSERT_NE(layer, obj.groups.end()) << row.face << "@" << row.light;
+    EXPECT_LE(relative_error(material_areas(*layer).at(row.light), row.lit_area), 1e-9);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 5u);
+
+  const Outcome from_scene =
+      run({"export", kCourtyard.string(), "--obj", (dir_ / "scene.obj").string(), "--by-light"});
+  ASSERT_EQ(from_scene.code, 0) << from_scene.err;
+  EXPECT_EQ(without_mtllib(obj_text), without_mtllib(contents(dir_ / "scene.obj")));
+  // A layer per light and a sun-hours map are two exports, not one.
+  EXPECT_EQ(run({"export", db.string(), "--obj", (dir_ / "x.obj").string(), "--by-light",
+                 "--sun-hours", "day"})
+                .code,
+            2);
+  EXPECT_FALSE(fs::exists(dir_ / "x.obj"));
+}
+
 // An OBJ whose name has a space: mtllib separates file names by spaces, so the MTL is
 // named with the escaped stem and mtllib names it as it is (it once read "mtllib my
 // scene.mtl", two files that do not exist).
@@ -295,7 +348,7 @@ TEST_F(ExportCli, HelpAndUsage) {
   EXPECT_NE(top.out.find("export"), std::string::npos) << top.out;
   const Outcome help = run({"export", "--help"});
   EXPECT_EQ(help.code, 0);
-  for (const char* option : {"--obj", "--strict", "--threads", "--quiet"}) {
+  for (const char* option : {"--obj", "--by-light", "--strict", "--threads", "--quiet"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option << "\n" << help.out;
   }
   EXPECT_EQ(run({"export", kCourtyard.string()}).code, 2);                 // no --obj

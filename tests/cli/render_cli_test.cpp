@@ -166,6 +166,39 @@ TEST_F(RenderCli, LightsDrawsOnlyThoseLights) {
   EXPECT_FALSE(fs::exists(dir_ / "no.svg"));
 }
 
+// --by-light: the base covers what the light-set picture covers, face by face, and each
+// light's layer what that picture's pieces lit by the light cover; a valid SVG.
+TEST_F(RenderCli, ByLightLayersCoverWhatTheLightSetsCover) {
+  const fs::path sets = dir_ / "sets.svg", layers = dir_ / "layers.svg";
+  ASSERT_EQ(run({"render", db_.string(), "--view", "main", "--svg", sets.string()}).code, 0);
+  const Outcome r =
+      run({"render", db_.string(), "--view", "main", "--svg", layers.string(), "--by-light"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  ExpectValidSvg(layers);
+  const SvgAreas s = measure(contents(sets)), l = measure(contents(layers));
+  ASSERT_FALSE(s.by_face.empty());
+  for (const auto& [face, area] : s.by_face) {
+    EXPECT_NEAR(l.by_face_and_light.at({face, "shadow"}), area, 1e-6) << face;
+    for (const char* light : {"sun", "lamp"}) {
+      const auto lit = s.by_face_and_light.find({face, light});
+      const auto layer = l.by_face_and_light.find({face, light});
+      EXPECT_NEAR(layer == l.by_face_and_light.end() ? 0.0 : layer->second,
+                  lit == s.by_face_and_light.end() ? 0.0 : lit->second, 1e-6)
+          << face << ", " << light;
+    }
+  }
+  const std::string text = contents(layers);
+  EXPECT_NE(text.find("<g style=\"mix-blend-mode:plus-lighter\" data-light=\"sun\">"),
+            std::string::npos);
+  // Layers are an SVG's; a sun-hours map is not split by lights at all.
+  EXPECT_EQ(run({"render", db_.string(), "--view", "main", "--png", (dir_ / "x.png").string(),
+                 "--by-light"})
+                .code,
+            2);
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
 TEST_F(RenderCli, PerspectiveFromEyeAndFittedOrthographic) {
   const fs::path inside = dir_ / "inside.svg";
   // From inside the courtyard, under the canopy, looking at the wall's windows.

@@ -220,6 +220,10 @@ class Painter {
       return;
     }
     if (f != current_face_) project_regions(f);
+    if (tiling_.layered()) {
+      paint_layers(parent, shape);
+      return;
+    }
     clipper::PolygonSet2 remaining{shape};
     const clipper::Box2 box = box_of(remaining);
     for (std::size_t r = 0; r < images_.size() && !remaining.empty(); ++r) {
@@ -246,6 +250,20 @@ class Painter {
         }
       }
       for (RegionImage& image : images_[r]) image.box = box_of(image.shape);
+    }
+  }
+
+  // The fragment whole, then what of it lies in each layer.
+  void paint_layers(std::size_t parent, const clipper::PolygonWithHoles2& shape) {
+    add_piece(parent, kNoRegion, false, shape);
+    const clipper::Box2 box = clipper::box_of(shape);
+    for (std::size_t r = 0; r < images_.size(); ++r) {
+      const RegionImage& image = images_[r][parents_.owner[parent].second];
+      if (image.shape.empty() || !image.box.overlaps(box)) continue;
+      ++picture_.stats.region_clips;
+      for (const clipper::PolygonWithHoles2& inside : clipper::clip(shape, image.shape).inside) {
+        add_piece(parent, r, false, inside);
+      }
     }
   }
 
@@ -314,6 +332,11 @@ Picture paint_picture(const Scene& scene, const Camera& camera, const RenderOpti
   // 2. and 3., face by face (fragments are sorted by parent, parents by face).
   Painter painter(scene, tiling, camera_view, parents, visible.planes, picture);
   for (const auto& [parent, shape] : fragments) painter.paint(parent, shape);
+  if (tiling.layered()) {
+    // The base first, then each layer whole (the painter met them fragment by fragment).
+    std::stable_sort(picture.pieces.begin(), picture.pieces.end(),
+                     [](const Piece& a, const Piece& b) { return a.layer < b.layer; });
+  }
   picture.stats.pieces = picture.pieces.size();
   for (const Piece& piece : picture.pieces) picture.stats.back_side_pieces += piece.back_side;
   return picture;

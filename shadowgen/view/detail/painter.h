@@ -41,6 +41,10 @@ class FaceTiling {
   // plane of unit front normal `normal`.
   virtual void style(Piece& piece, std::size_t region, const glm::dvec3& centroid,
                      const glm::dvec3& normal) const = 0;
+  // Whether the regions are layers that may overlap (render_by_light): then each visible
+  // fragment is painted whole with the look of no region, and each region takes what of
+  // the whole fragment lies in it, not what the others leave.
+  virtual bool layered() const { return false; }
 };
 
 // The picture of `scene`'s faces split by `tiling`. Throws std::invalid_argument for a bad

@@ -362,10 +362,100 @@ TEST(ObjExport, OutputIsDeterministic) {
   EXPECT_EQ(a.mtl, c.mtl);
 }
 
+// Layers by light: per face a group of the whole face in shadow, then one group per light
+// reaching it whose triangles add up to that light's lit area; "shadow" and one material
+// per light reaching some face, coloured by the rule for that light alone.
+void ExpectLayersMatch(const ShadowedScene& s, const ObjFiles& files, double tolerance) {
+  const test::ObjText obj = test::parse_obj(files.obj);
+  const test::MtlText mtl = test::parse_mtl(files.mtl);
+  ASSERT_TRUE(obj.errors.empty()) << obj.errors.front();
+  ASSERT_TRUE(mtl.errors.empty()) << mtl.errors.front();
+  const Scene& scene = s.scene;
+  auto group_name = [](const std::string& id) {
+    std::string out;
+    for (const char c : obj_name(id)) out += c == '@' ? std::string("%40") : std::string(1, c);
+    return out;
+  };
+  std::vector<bool> reaches(scene.lights.size(), false);
+  std::size_t g = 0;
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    const Face& face = scene.faces[f];
+    ASSERT_LT(g, obj.groups.size());
+    const test::ObjGroup& base = obj.groups[g++];
+    EXPECT_EQ(base.name, group_name(face.id));
+    const double face_area = area(face.parts);
+    const std::map<std::string, double> shadow = test::material_areas(base);
+    if (face_area > 0.0) {
+      ASSERT_EQ(shadow.size(), 1u) << face.id;
+      EXPECT_EQ(shadow.begin()->first, "shadow");
+      EXPECT_LE(relative_error(shadow.begin()->second, face_area), tolerance) << face.id;
+    }
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+      if (s.lit[f][l].empty()) continue;
+      reaches[l] = true;
+      ASSERT_LT(g, obj.groups.size());
+      const test::ObjGroup& layer = obj.groups[g++];
+      EXPECT_EQ(layer.name, group_name(face.id) + "@" + obj_name(scene.lights[l].id));
+      const std::map<std::string, double> lit = test::material_areas(layer);
+      ASSERT_EQ(lit.size(), 1u) << layer.name;
+      EXPECT_LE(std::abs(lit.begin()->second - lit_area(s.lit[f][l])), tolerance * face_area)
+          << layer.name;
+      const std::string& material = lit.begin()->first;
+      ASSERT_EQ(mtl.kd.count(material), 1u) << material;
+      const glm::dvec3 kd = light_set_colour(scene, std::vector<std::size_t>{l});
+      EXPECT_EQ(mtl.kd.at(material), (test::Vec3{kd.x, kd.y, kd.z})) << material;
+    }
+  }
+  EXPECT_EQ(g, obj.groups.size());
+  std::vector<std::string> materials = {"shadow"};
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    if (reaches[l]) materials.push_back(obj_name(scene.lights[l].id));
+  }
+  EXPECT_EQ(mtl.order, materials);
+}
+
+TEST(ObjExport, LayersByLightAddUpToEachLightsLitArea) {
+  const ShadowedScene room = generated(kRoom);
+  ExpectLayersMatch(room, obj_export_by_light(room, "room.mtl"), 1e-9);
+  const ShadowedScene two = generated(kTwoLights);
+  const ObjFiles files = obj_export_by_light(two, "two.mtl");
+  ExpectLayersMatch(two, files, 1e-12);
+  const test::ObjText obj = test::parse_obj(files.obj);
+  ASSERT_EQ(obj.groups.size(), 6u);
+  EXPECT_EQ(obj.groups[1].name, "ground@down");
+  EXPECT_NEAR(test::material_areas(obj.groups[1]).at("down"), 84.0, 1e-12);
+  EXPECT_NEAR(test::material_areas(obj.groups[2]).at("slant"), 84.0, 1e-12);
+}
+
+// A face id and a light id holding '@' (as a sun path's instants do): the face's '@' is
+// escaped, so the first '@' of a group name separates the two.
+TEST(ObjExport, LayersByLightKeepFaceAndLightApart) {
+  const ShadowedScene s = generated(R"({
+    "format": "shadowgen-scene/1",
+    "polygons": [
+      {"id": "roof@north", "outer": [[0,0,0],[10,0,0],[10,10,0],[0,10,0]]},
+      {"id": "square", "outer": [[2,3,1],[6,3,1],[6,7,1],[2,7,1]]}
+    ],
+    "lights": [{"id": "sun@noon", "type": "directional", "direction": [0,0,-1]},
+               {"id": "shadow", "type": "directional", "direction": [0,0,1]}]
+  })");
+  const ObjFiles files = obj_export_by_light(s, "at.mtl");
+  ExpectLayersMatch(s, files, 1e-12);
+  const test::ObjText obj = test::parse_obj(files.obj);
+  ASSERT_EQ(obj.groups.size(), 4u);
+  EXPECT_EQ(obj.groups[0].name, "roof%40north");
+  EXPECT_EQ(obj.groups[1].name, "roof%40north@sun@noon");
+  EXPECT_EQ(test::material_areas(obj.groups[1]).at("sun@noon"), 84.0);
+  // The light facing away from every face reaches none and gets no material.
+  EXPECT_EQ(test::parse_mtl(files.mtl).order, (std::vector<std::string>{"shadow", "sun@noon"}));
+  EXPECT_EQ(files.obj, obj_export_by_light(s, "at.mtl").obj);
+}
+
 TEST(ObjExport, MisshapedDatabaseThrows) {
   ShadowedScene s = generated(kTwoLights);
   s.lit = LitTable(s.scene.faces.size() - 1, s.scene.lights.size());  // a face short
   EXPECT_THROW(obj_export(s, "x.mtl"), std::invalid_argument);
+  EXPECT_THROW(obj_export_by_light(s, "x.mtl"), std::invalid_argument);
 }
 
 }  // namespace

@@ -232,6 +232,89 @@ TEST(Render, TopDownOrthographicLitAreasEqualTheDatabase) {
   ExpectInsidePicture(picture);
 }
 
+// Layers by light against the light sets' picture from a perspective camera: per face,
+// the base covers what the light-set pieces cover, each light's layer what the pieces of
+// sets holding it cover; base and layers each do not overlap among themselves; the
+// layers' colours add up to the light-set pieces' (the sun is directional, so a face's
+// colour does not depend on the point; the lamp's term does, so only the sun's is
+// checked there); pieces come base first, then light by light.
+TEST(Render, LayersByLightAddUpToTheLightSetsPicture) {
+  const ShadowedScene shadowed = generated(kGroundScene);
+  Camera camera;
+  camera.eye = {14, -9, 8};
+  camera.target = {5, 5, 0};
+  camera.fov_deg = 40;
+  const RenderOptions options = picture_size(320, 240);
+  const Picture sets = render(shadowed, camera, options);
+  const Picture layers = render_by_light(shadowed, camera, options);
+  EXPECT_FALSE(sets.layered);
+  EXPECT_TRUE(layers.layered);
+  const Scene& scene = shadowed.scene;
+  const std::size_t lights = scene.lights.size();
+  // [face][0]: all; [face][1 + L]: lit by L.
+  auto areas = [&](const Picture& picture, bool by_layer) {
+    std::vector<std::vector<double>> a(scene.faces.size(), std::vector<double>(1 + lights, 0.0));
+    for (const Piece& piece : picture.pieces) {
+      const double area = clipper::area(piece.shape);
+      if (by_layer) {
+        a[piece.face][piece.layer] += area;
+        continue;
+      }
+      a[piece.face][0] += area;
+      for (const std::size_t l : piece.lights) a[piece.face][1 + l] += area;
+    }
+    return a;
+  };
+  const auto expected = areas(sets, false), got = areas(layers, true);
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+    for (std::size_t k = 0; k <= lights; ++k) {
+      EXPECT_NEAR(got[f][k], expected[f][k], 1e-9 * options.width * options.height)
+          << scene.faces[f].id << ", layer " << k;
+    }
+  }
+  std::size_t previous = 0;
+  std::vector<std::vector<Piece>> by_layer(1 + lights);
+  for (const Piece& piece : layers.pieces) {
+    EXPECT_GE(piece.layer, previous);
+    previous = piece.layer;
+    by_layer[piece.layer].push_back(piece);
+    if (piece.layer == 0) {
+      EXPECT_TRUE(piece.lights.empty());
+      EXPECT_EQ(piece.light_set, "shadow");
+    } else {
+      EXPECT_EQ(piece.lights, std::vector<std::size_t>{piece.layer - 1});
+      EXPECT_EQ(piece.light_set, scene.lights[piece.layer - 1].id);
+    }
+  }
+  for (std::vector<Piece>& pieces : by_layer) {
+    ASSERT_FALSE(pieces.empty());
+    Picture one;
+    one.pieces = std::move(pieces);
+    ExpectNoOverlap(one, 1e-9 * options.width * options.height);
+  }
+  // Colours on the ground, which is seen from its front: shadow, and shadow plus the sun's
+  // layer where the sun alone reaches.
+  const std::size_t ground = 0, sun = 0;
+  const Piece* base = nullptr;
+  const Piece* sun_layer = nullptr;
+  for (const Piece& piece : layers.pieces) {
+    if (piece.face != ground) continue;
+    if (piece.layer == 0 && base == nullptr) base = &piece;
+    if (piece.layer == 1 + sun && sun_layer == nullptr) sun_layer = &piece;
+  }
+  ASSERT_NE(base, nullptr);
+  ASSERT_NE(sun_layer, nullptr);
+  for (const Piece& piece : sets.pieces) {
+    if (piece.face != ground) continue;
+    if (piece.lights.empty()) {
+      EXPECT_EQ(piece.colour.r, base->colour.r);
+    } else if (piece.lights == std::vector<std::size_t>{sun}) {
+      EXPECT_NEAR(piece.colour.r, base->colour.r + sun_layer->colour.r, 1e-15);
+      EXPECT_NEAR(piece.colour.g, base->colour.g + sun_layer->colour.g, 1e-15);
+    }
+  }
+}
+
 TEST(Render, OrthographicUpAndFittedScale) {
   const ShadowedScene shadowed = generated(kGroundScene);
   const Camera camera = looking_down({5, 5, 0.25}, {5, 5, 0}, 0.0);  // 0: fit

@@ -75,6 +75,47 @@ TEST(SvgWriter, FrameBackgroundAndOnePathPerPiece) {
   EXPECT_TRUE(svg.ends_with("</svg>\n"));
 }
 
+// Layers by light: the base's paths bare, then each layer's in one blending group named
+// by its light; every group closed before the next opens and before the document ends.
+TEST(SvgWriter, LayersByLightAreGroupsBlendedOverTheBase) {
+  Picture picture = two_pieces();
+  picture.layered = true;
+  Piece base = picture.pieces[0], sun = base, sun_too = base, lamp = base;
+  base.lights = {};
+  base.light_set = "shadow";
+  sun.lights = {0};
+  sun.light_set = "sun";
+  sun.layer = 1;
+  sun_too.lights = {0};
+  sun_too.light_set = "sun";
+  sun_too.layer = 1;
+  lamp.lights = {1};
+  lamp.light_set = "l\"amp";
+  lamp.layer = 2;
+  picture.pieces = {base, base, sun, sun_too, lamp};
+  const std::string svg = svg_document(picture);
+  const std::string sun_group = "<g style=\"mix-blend-mode:plus-lighter\" data-light=\"sun\">\n";
+  const std::string lamp_group =
+      "<g style=\"mix-blend-mode:plus-lighter\" data-light=\"l&quot;amp\">\n";
+  const std::size_t first_sun = svg.find(sun_group), first_lamp = svg.find(lamp_group);
+  ASSERT_NE(first_sun, std::string::npos) << svg;
+  ASSERT_NE(first_lamp, std::string::npos) << svg;
+  EXPECT_EQ(svg.find(sun_group, first_sun + 1), std::string::npos);
+  // Two base paths before the first group, two in the sun's, one in the lamp's.
+  auto paths = [&svg](std::size_t from, std::size_t to) {
+    std::size_t n = 0;
+    for (std::size_t at = svg.find("<path", from); at < to; at = svg.find("<path", at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(paths(0, first_sun), 2u);
+  EXPECT_EQ(paths(first_sun, first_lamp), 2u);
+  EXPECT_EQ(paths(first_lamp, svg.size()), 1u);
+  EXPECT_NE(svg.find("/>\n</g>\n<g style"), std::string::npos);
+  EXPECT_NE(svg.find("/>\n</g>\n</svg>\n"), std::string::npos);
+  // A picture not in layers has no group.
+  EXPECT_EQ(svg_document(two_pieces()).find("<g"), std::string::npos);
+}
+
 TEST(SvgWriter, CoordinatesReadBackExactly) {
   const Picture picture = two_pieces();
   const std::string svg = svg_document(picture);
