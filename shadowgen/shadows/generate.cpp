@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "clipper/clip.h"
+#include "detail/closed_solids.h"
 #include "detail/face_parts.h"
 #include "detail/light_view_pass.h"
 #include "detail/lit_parts.h"
@@ -31,9 +32,11 @@ namespace {
 // The lit detail polygons of every face for one light, lit[face]: the receivers in its
 // range, seen through each of its views, the parts it grazes worked out in their planes,
 // each part's views joined.
-std::vector<std::vector<LitPolygon>> light_one(const detail::FaceParts& parts, const Light& light,
-                                               const GenerateOptions& options, LightStats& stats) {
-  const detail::Receivers receivers(parts, light, stats);
+std::vector<std::vector<LitPolygon>> light_one(const detail::FaceParts& parts,
+                                               const detail::ClosedSolids* solids,
+                                               const Light& light, const GenerateOptions& options,
+                                               LightStats& stats) {
+  const detail::Receivers receivers(parts, light, stats, solids);
   const std::vector<hsr::View> views =
       light_views(light, receivers.polygons(), receivers.planes(), parts.centre);
   stats.frusta = views.size();
@@ -47,14 +50,12 @@ std::vector<std::vector<LitPolygon>> light_one(const detail::FaceParts& parts, c
 }
 
 // light_one, its failures named by the face and the light being worked on.
-std::vector<std::vector<LitPolygon>> light_one_named(const Scene& scene,
-                                                     const detail::FaceParts& parts,
-                                                     std::size_t light,
-                                                     const GenerateOptions& options,
-                                                     LightStats& stats) {
+std::vector<std::vector<LitPolygon>> light_one_named(
+    const Scene& scene, const detail::FaceParts& parts, const detail::ClosedSolids* solids,
+    std::size_t light, const GenerateOptions& options, LightStats& stats) {
   const std::string& light_id = scene.lights[light].id;
   try {
-    return light_one(parts, scene.lights[light], options, stats);
+    return light_one(parts, solids, scene.lights[light], options, stats);
   } catch (const detail::PartFailure& e) {
     const std::string& face_id = scene.faces[parts.owners[e.part()].face].id;
     throw GenerationError("", face_id, light_id,
@@ -283,6 +284,8 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
   tbb::task_arena arena(threads);
   detail::FaceParts parts;
   arena.execute([&] { parts = detail::flatten(scene); });
+  std::optional<detail::ClosedSolids> solids;
+  if (!sampled && options.leave_out_solids_backs) solids.emplace(parts);
   std::mutex report_mutex;
   // Lights in parallel, and within each light the regions of its views (hsr/
   // image_regions.h) and its receivers, all on one pool of `threads` threads. The failure
@@ -302,7 +305,8 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
         if (sampled) {
           estimated[i] = options.estimate(scene.lights[l]);
         } else {
-          per_light[i] = light_one_named(scene, parts, l, options, result.stats[l]);
+          per_light[i] = light_one_named(scene, parts, solids ? &*solids : nullptr, l, options,
+                                         result.stats[l]);
         }
         result.stats[l].seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

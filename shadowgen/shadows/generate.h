@@ -12,7 +12,9 @@
 //     only those that see part of the scene, so a light may stand anywhere, inside the
 //     scene included;
 //   - faces wholly beyond range.end are left out entirely; faces turned away from the
-//     light (or seeing it edge-on) get no lit area but still occlude.
+//     light (or seeing it edge-on) get no lit area but still occlude, except on the back
+//     of a closed solid the light is outside of, where the solid's faces toward the
+//     light occlude all they would (detail/closed_solids.h).
 // The visible fragments are mapped back onto their parent face's plane and merged per
 // (face, light). Lights are independent and run in parallel. The stages of one light are
 // in detail/: receivers.h (the parts in range), light_view_pass.h (per view: hidden-
@@ -40,6 +42,10 @@ struct LightStats {
   std::size_t faces_considered = 0;  // within range
   std::size_t faces_culled_range = 0;
   std::size_t faces_facing_away = 0;
+  // Of those, the ones on the back of a closed solid the light is outside of, left out of
+  // hidden-surface removal (detail/closed_solids.h): they shadow nothing the solid's
+  // parts facing the light do not.
+  std::size_t faces_behind_solids = 0;
   std::size_t faces_grazed = 0;  // lit regions worked out in their plane (grazing_light.h)
   std::size_t frusta = 0;        // light views used (1 for directional lights)
   std::size_t fragments = 0;
@@ -60,6 +66,10 @@ struct GenerateOptions {
   // instants' lit polygons are then dropped, only their lit areas kept, unless this is
   // set: then each instant keeps its lit polygons as any light does.
   bool keep_instant_polygons = false;
+  // Whether turned-away parts of closed solids are left out as occluders
+  // (detail/closed_solids.h): the lit regions are the same either way (tests compare);
+  // false keeps every part in hidden-surface removal.
+  bool leave_out_solids_backs = true;
   // Whether sun paths get their sun-hours regions (SunPathHours::regions_kept). Without
   // them a path costs its instants' lit areas alone, in time and memory linear in its
   // instants: all that EnergyPlus schedules and irradiation need, and the only way to a

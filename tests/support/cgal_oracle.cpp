@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <cmath>
@@ -727,6 +728,26 @@ bool near_exact_crossing(const Point2& p, const Point2& a0, const Point2& a1, co
   const ExactNumber r(relative);
   return CGAL::abs(ExactNumber(p.x) - at->x()) <= r * CGAL::abs(at->x()) &&
          CGAL::abs(ExactNumber(p.y) - at->y()) <= r * CGAL::abs(at->y());
+}
+
+bool exact_triangles_share_more_than(const std::array<glm::dvec3, 3>& a,
+                                     const std::array<glm::dvec3, 3>& b,
+                                     std::span<const glm::dvec3> common) {
+  using Point3 = Kernel::Point_3;
+  auto point = [](const glm::dvec3& p) { return Point3(p.x, p.y, p.z); };
+  const Kernel::Triangle_3 ta(point(a[0]), point(a[1]), point(a[2]));
+  const Kernel::Triangle_3 tb(point(b[0]), point(b[1]), point(b[2]));
+  const auto meet = CGAL::intersection(ta, tb);
+  if (!meet) return false;
+  auto is_common = [&](const Point3& p) {
+    return std::any_of(common.begin(), common.end(),
+                       [&](const glm::dvec3& c) { return p == point(c); });
+  };
+  if (const Point3* p = boost::get<Point3>(&*meet)) return !is_common(*p);
+  if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&*meet)) {
+    return !(common.size() == 2 && is_common(s->source()) && is_common(s->target()));
+  }
+  return true;  // a triangle or a polygon of the plane they share
 }
 
 }  // namespace shadowgen::test

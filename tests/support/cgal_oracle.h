@@ -12,6 +12,8 @@
 // CGAL's Polygon_with_holes_2 does not allow, is built as outer loop minus holes. The
 // polygons of a set are joined, so a multipolygon is the union of its parts.
 
+#include <array>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <span>
 #include <string>
@@ -124,5 +126,12 @@ ExactUnionComparison compare_exact_unions(std::span<const PolygonSet2> a,
 bool near_exact_crossing(const clipper::Point2& p, const clipper::Point2& a0,
                          const clipper::Point2& a1, const clipper::Point2& b0,
                          const clipper::Point2& b1, double relative);
+
+// Whether the closed triangles a and b (corners not collinear) share a point other than
+// the corners in `common` (corners of both) and the segment between two of them: CGAL's
+// exact intersection of two Triangle_3 (Epeck). With no common corner, whether they meet.
+bool exact_triangles_share_more_than(const std::array<glm::dvec3, 3>& a,
+                                     const std::array<glm::dvec3, 3>& b,
+                                     std::span<const glm::dvec3> common);
 
 }  // namespace shadowgen::test

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "closed_solids.h"
 #include "face_parts.h"
 #include "hsr/polygon3.h"
 #include "shadowgen/model/scene.h"
@@ -18,8 +19,11 @@ namespace shadowgen::detail {
 
 class Receivers {
  public:
-  // Counts the faces culled by range, considered and facing away in `stats`.
-  Receivers(const FaceParts& parts, const Light& light, LightStats& stats);
+  // Counts the faces culled by range, considered and facing away in `stats`. Parts of
+  // `solids` that need not occlude this light (closed_solids.h) are left out: they are
+  // turned away from it, so they get no lit area either.
+  Receivers(const FaceParts& parts, const Light& light, LightStats& stats,
+            const ClosedSolids* solids = nullptr);
 
   std::size_t size() const { return part_.size(); }
   // Receiver k's index in the FaceParts.

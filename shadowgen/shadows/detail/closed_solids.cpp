@@ -1,0 +1,373 @@
+#include "closed_solids.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <span>
+#include <unordered_map>
+#include <utility>
+
+#include "clipper/predicates.h"
+#include "clipper/triangulate.h"
+#include "hsr/plane_chart.h"
+
+namespace shadowgen::detail {
+namespace {
+
+constexpr double kUnit = 0x1p-53;
+
+// A part's triangles on its own corners, each running as its outer loop does (so its
+// front side is the part's, by the right-hand rule); nothing where it does not split.
+std::optional<std::vector<hsr::Triangle3>> triangles_of(const hsr::Polygon3& polygon,
+                                                        const hsr::Plane3& plane) {
+  if (polygon.outer.size() == 3 && polygon.holes.empty()) {
+    return std::vector<hsr::Triangle3>{{polygon.outer[0], polygon.outer[1], polygon.outer[2]}};
+  }
+  const hsr::PlaneChart chart = hsr::chart_facing(plane.normal);
+  std::vector<clipper::Loop2> loops{chart.flatten(polygon.outer)};
+  std::vector<glm::dvec3> corners(polygon.outer);
+  for (const hsr::Loop3& hole : polygon.holes) {
+    loops.push_back(chart.flatten(hole));
+    corners.insert(corners.end(), hole.begin(), hole.end());
+  }
+  const std::optional<std::vector<clipper::Triangle>> split = clipper::triangulate(loops);
+  if (!split) return std::nullopt;
+  std::vector<hsr::Triangle3> out;
+  out.reserve(split->size());
+  for (const clipper::Triangle& t : *split) {
+    out.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  }
+  return out;
+}
+
+// A corner's exact coordinates as a key (0 and -0 alike).
+using CornerKey = std::array<double, 3>;
+CornerKey key_of(const glm::dvec3& p) { return {p.x + 0.0, p.y + 0.0, p.z + 0.0}; }
+struct CornerHash {
+  std::size_t operator()(const CornerKey& k) const noexcept {
+    const clipper::Point2Hash h;
+    return h({k[0], k[1]}) ^ (h({k[2], k[0]}) * 0x9E3779B97F4A7C15ull);
+  }
+};
+
+// One edge of a loop or triangle, by its lower and higher corner id, with the way it runs.
+struct EdgeRun {
+  std::uint32_t low, high;
+  bool up;  // from low to high
+  std::uint32_t part;
+};
+
+// The edges of the closed loop `loop` (repeated corners in a row add none).
+template <typename Id>
+void add_runs(std::vector<EdgeRun>& runs, std::span<const glm::dvec3> loop, Id& id,
+              std::size_t part) {
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const std::uint32_t from = id(loop[k]), to = id(loop[k + 1 == loop.size() ? 0 : k + 1]);
+    if (from == to) continue;
+    runs.push_back(
+        {std::min(from, to), std::max(from, to), from < to, static_cast<std::uint32_t>(part)});
+  }
+}
+
+void sort_runs(std::vector<EdgeRun>& runs) {
+  std::sort(runs.begin(), runs.end(), [](const EdgeRun& a, const EdgeRun& b) {
+    return a.low != b.low ? a.low < b.low : a.high < b.high;
+  });
+}
+
+// Calls visit(uses) with the runs of each edge, runs sorted by sort_runs.
+template <typename Visit>
+void for_each_edge(const std::vector<EdgeRun>& runs, Visit visit) {
+  for (std::size_t g = 0, e = 0; g < runs.size(); g = e) {
+    for (e = g + 1; e < runs.size() && runs[e].low == runs[g].low && runs[e].high == runs[g].high;
+         ++e) {
+    }
+    visit(std::span<const EdgeRun>(runs.data() + g, e - g));
+  }
+}
+
+// One surface through the edge, its two sides run opposite ways: the edge of a closed,
+// consistently oriented surface.
+bool once_each_way(std::span<const EdgeRun> uses) {
+  return uses.size() == 2 && uses[0].up != uses[1].up;
+}
+
+struct Box {
+  glm::dvec3 low, high;
+};
+
+Box box_of(const hsr::Triangle3& t) {
+  return {glm::min(glm::min(t[0], t[1]), t[2]), glm::max(glm::max(t[0], t[1]), t[2])};
+}
+
+bool boxes_meet(const Box& a, const Box& b) {
+  return a.low.x <= b.high.x && b.low.x <= a.high.x && a.low.y <= b.high.y && b.low.y <= a.high.y &&
+         a.low.z <= b.high.z && b.low.z <= a.high.z;
+}
+
+double norm1(const glm::dvec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
+
+// Whether some two of the triangles meet anywhere but where neighbours on a surface must
+// (hsr::triangles_overlap_beyond_shared). Candidates are the pairs whose boxes meet, found
+// in a grid of cubes about the size of the triangles: each pair is looked at in the one
+// cube that holds the higher of the two boxes' low corners.
+bool touches_itself(const std::vector<hsr::Triangle3>& triangles) {
+  std::vector<std::uint32_t> items;
+  std::vector<Box> boxes;
+  std::vector<double> sizes;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    if (hsr::degenerate(triangles[i])) continue;
+    items.push_back(static_cast<std::uint32_t>(i));
+    boxes.push_back(box_of(triangles[i]));
+    const glm::dvec3 e = boxes.back().high - boxes.back().low;
+    sizes.push_back(std::max({e.x, e.y, e.z}));
+  }
+  if (items.size() < 2) return false;
+  Box all = boxes.front();
+  for (const Box& b : boxes) {
+    all.low = glm::min(all.low, b.low);
+    all.high = glm::max(all.high, b.high);
+  }
+  // Cubes as wide as the median triangle, but no more than 64 along the widest side.
+  std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2),
+                   sizes.end());
+  const glm::dvec3 extent = all.high - all.low;
+  double cube = std::max(sizes[sizes.size() / 2], std::max({extent.x, extent.y, extent.z}) / 64.0);
+  if (!(cube > 0.0)) cube = 1.0;
+  auto cell = [&](double v, double low) {
+    return static_cast<std::uint64_t>(std::min(std::floor((v - low) / cube), 1048575.0));
+  };
+  auto cell_of = [&](const glm::dvec3& p) {
+    return std::array<std::uint64_t, 3>{cell(p.x, all.low.x), cell(p.y, all.low.y),
+                                        cell(p.z, all.low.z)};
+  };
+  auto key = [](const std::array<std::uint64_t, 3>& c) {
+    return (c[0] << 40) | (c[1] << 20) | c[2];
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+  for (std::uint32_t k = 0; k < boxes.size(); ++k) {
+    const auto low = cell_of(boxes[k].low), high = cell_of(boxes[k].high);
+    for (std::uint64_t x = low[0]; x <= high[0]; ++x) {
+      for (std::uint64_t y = low[1]; y <= high[1]; ++y) {
+        for (std::uint64_t z = low[2]; z <= high[2]; ++z) entries.emplace_back(key({x, y, z}), k);
+      }
+    }
+  }
+  std::sort(entries.begin(), entries.end());
+  for (std::size_t g = 0, e = 0; g < entries.size(); g = e) {
+    for (e = g + 1; e < entries.size() && entries[e].first == entries[g].first; ++e) {
+    }
+    for (std::size_t i = g; i < e; ++i) {
+      for (std::size_t j = i + 1; j < e; ++j) {
+        const Box& a = boxes[entries[i].second];
+        const Box& b = boxes[entries[j].second];
+        if (!boxes_meet(a, b) || key(cell_of(glm::max(a.low, b.low))) != entries[g].first) {
+          continue;
+        }
+        if (hsr::triangles_overlap_beyond_shared(triangles[items[entries[i].second]],
+                                                 triangles[items[entries[j].second]])) {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+// Whether the closed surface of the triangles bounds its inside outward: its volume,
+// summed from the first corner, positive beyond the sum's rounding (each product within
+// 8u of its terms' magnitudes, the additions within u·n of the terms, and the corners'
+// shift within u of each, which moves the volume by at most u·R per unit of area).
+bool outward(const std::vector<hsr::Triangle3>& triangles) {
+  const glm::dvec3 o = triangles.front()[0];
+  double volume = 0.0, magnitude = 0.0, terms = 0.0, area = 0.0, reach = 0.0;
+  for (const hsr::Triangle3& t : triangles) {
+    const glm::dvec3 a = t[0] - o, b = t[1] - o, c = t[2] - o;
+    const double term = glm::dot(a, glm::cross(b, c));
+    volume += term;
+    terms += std::fabs(term);
+    magnitude += norm1(a) * norm1(b) * norm1(c);
+    area += norm1(b - a) * norm1(c - a);
+    reach = std::max({reach, norm1(a), norm1(b), norm1(c)});
+  }
+  const double n = static_cast<double>(triangles.size());
+  const double bound =
+      8.0 * kUnit * magnitude + 2.0 * n * kUnit * terms + 8.0 * kUnit * reach * area;
+  return volume > bound;
+}
+
+// Whether the light travelling along `direction` reaches the triangle's back side, by more
+// than the rounding of its normal's product with the direction (each within 16u of its
+// terms' magnitudes, generously).
+bool turned_away(const hsr::Triangle3& t, const glm::dvec3& direction) {
+  const glm::dvec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
+  const double along = glm::dot(glm::cross(e1, e2), direction);
+  return along > 32.0 * kUnit * norm1(e1) * norm1(e2) * norm1(direction);
+}
+
+}  // namespace
+
+ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size(), -1) {
+  const std::size_t n = parts.size();
+  // Corners numbered by their exact coordinates.
+  std::unordered_map<CornerKey, std::uint32_t, CornerHash> ids;
+  auto number = [&ids](const hsr::Loop3& loop) {
+    for (const glm::dvec3& p : loop)
+      ids.try_emplace(key_of(p), static_cast<std::uint32_t>(ids.size()));
+  };
+  for (const hsr::Polygon3& polygon : parts.polygons) {
+    number(polygon.outer);
+    for (const hsr::Loop3& hole : polygon.holes) number(hole);
+  }
+  auto id = [&ids](const glm::dvec3& p) { return ids.at(key_of(p)); };
+  // The parts' boundaries first, which need no triangles: parts are joined along the
+  // edges they share, and only components whose every edge runs once each way are
+  // triangulated and looked at further.
+  std::vector<EdgeRun> runs;
+  for (std::size_t i = 0; i < n; ++i) {
+    const hsr::Polygon3& polygon = parts.polygons[i];
+    add_runs(runs, polygon.outer, id, i);
+    for (const hsr::Loop3& hole : polygon.holes) add_runs(runs, hole, id, i);
+  }
+  sort_runs(runs);
+  std::vector<std::size_t> parent(n);
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  auto root = [&parent](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for_each_edge(runs, [&](std::span<const EdgeRun> uses) {
+    for (const EdgeRun& use : uses.subspan(1)) parent[root(use.part)] = root(uses[0].part);
+  });
+  std::vector<char> closed(n, 1);
+  for_each_edge(runs, [&](std::span<const EdgeRun> uses) {
+    if (!once_each_way(uses)) closed[root(uses[0].part)] = 0;
+  });
+  std::map<std::size_t, std::vector<std::size_t>> members;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (closed[root(i)]) members[root(i)].push_back(i);
+  }
+  part_triangles_.resize(n);
+  for (const auto& [r, list] : members) {
+    // Triangulated, the surface must still run through each edge once each way: a
+    // diagonal of one part along which others meet is an edge of four triangles.
+    Solid solid;
+    std::vector<EdgeRun> triangle_runs;
+    bool split = true;
+    for (const std::size_t i : list) {
+      std::optional<std::vector<hsr::Triangle3>> triangles =
+          triangles_of(parts.polygons[i], parts.planes[i]);
+      if (!triangles || triangles->empty()) {
+        split = false;
+        break;
+      }
+      for (const hsr::Triangle3& t : *triangles) {
+        add_runs(triangle_runs, std::span<const glm::dvec3>(t.data(), 3), id, i);
+      }
+      solid.triangles.insert(solid.triangles.end(), triangles->begin(), triangles->end());
+      part_triangles_[i] = std::move(*triangles);
+    }
+    bool manifold = split;
+    if (manifold) {
+      sort_runs(triangle_runs);
+      for_each_edge(triangle_runs, [&](std::span<const EdgeRun> uses) {
+        manifold = manifold && once_each_way(uses);
+      });
+    }
+    if (!manifold || !outward(solid.triangles) || touches_itself(solid.triangles)) {
+      for (const std::size_t i : list) part_triangles_[i].clear();
+      continue;
+    }
+    solid.low = solid.high = solid.triangles.front()[0];
+    for (const hsr::Triangle3& t : solid.triangles) {
+      const Box b = box_of(t);
+      solid.low = glm::min(solid.low, b.low);
+      solid.high = glm::max(solid.high, b.high);
+    }
+    const int index = static_cast<int>(solids_.size());
+    solids_.push_back(std::move(solid));
+    for (const std::size_t i : list) solid_of_part_[i] = index;
+  }
+}
+
+bool ClosedSolids::outside(const Solid& solid, const glm::dvec3& point) const {
+  // The winding number at the point, from a segment to a point beyond the solid's box
+  // (winding number 0): each crossing of a triangle's inside counts +1 where the point
+  // lies behind the triangle (the segment leaves the inside there) and -1 where it lies
+  // in front, decided exactly (orient3d). A segment through a side or a corner, or with
+  // its far end in a triangle's plane, is tried again in another direction; a point on
+  // the surface is not outside.
+  static constexpr std::array<glm::dvec3, 4> kDirections = {
+      glm::dvec3{0.5773502691896258, 0.40138073020291836, 0.7110521567287463},
+      glm::dvec3{-0.31214525826373946, 0.8812935391281427, 0.35469577062918415},
+      glm::dvec3{0.7019236545393874, -0.22132054316468426, -0.6770935823917463},
+      glm::dvec3{-0.6133125680521226, -0.5263316488112826, 0.5890411449640826}};
+  const glm::dvec3 size = solid.high - solid.low;
+  const double far = 4.0 * (norm1(size) + norm1(point - solid.low) + 1.0);
+  for (const glm::dvec3& direction : kDirections) {
+    const glm::dvec3 end = point + far * direction;
+    int winding = 0;
+    bool clear = true;
+    for (const hsr::Triangle3& t : solid.triangles) {
+      if (hsr::degenerate(t)) continue;
+      const int s1 = static_cast<int>(clipper::orient3d(t[0], t[1], t[2], point));
+      const int s2 = static_cast<int>(clipper::orient3d(t[0], t[1], t[2], end));
+      if (s1 == 0) {
+        if (hsr::segment_meets_triangle(point, point, t)) return false;  // on the surface
+        continue;  // in the triangle's plane, beside it: the segment leaves the plane there
+      }
+      if (s1 * s2 > 0) continue;
+      if (s2 == 0) {
+        clear = false;  // the far end in a plane: not expected, try another way
+        break;
+      }
+      const int o1 = static_cast<int>(clipper::orient3d(point, end, t[0], t[1]));
+      const int o2 = static_cast<int>(clipper::orient3d(point, end, t[1], t[2]));
+      const int o3 = static_cast<int>(clipper::orient3d(point, end, t[2], t[0]));
+      if ((o1 > 0 && o2 > 0 && o3 > 0) || (o1 < 0 && o2 < 0 && o3 < 0)) {
+        // Through the inside. orient3d > 0: the point lies behind the triangle, on the
+        // inner side of an outward surface.
+        winding += s1 > 0 ? 1 : -1;
+      } else if ((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0)) {
+        clear = false;  // through a side or a corner
+        break;
+      }
+    }
+    if (clear) return winding == 0;
+  }
+  return false;
+}
+
+std::vector<char> ClosedSolids::need_not_occlude(const Light& light) const {
+  std::vector<char> out(solid_of_part_.size(), 0);
+  if (solids_.empty()) return out;
+  std::vector<char> light_outside(solids_.size(), 1);
+  if (light.type == LightType::kPoint) {
+    for (std::size_t s = 0; s < solids_.size(); ++s) {
+      light_outside[s] = outside(solids_[s], light.position) ? 1 : 0;
+    }
+  }
+  for (std::size_t i = 0; i < solid_of_part_.size(); ++i) {
+    const int s = solid_of_part_[i];
+    if (s < 0 || !light_outside[static_cast<std::size_t>(s)]) continue;
+    bool away = true;
+    for (const hsr::Triangle3& t : part_triangles_[i]) {
+      if (hsr::degenerate(t)) continue;
+      away = light.type == LightType::kDirectional
+                 ? turned_away(t, light.direction)
+                 : clipper::orient3d(t[0], t[1], t[2], light.position) ==
+                       clipper::Orientation::kCounterClockwise;
+      if (!away) break;
+    }
+    out[i] = away ? 1 : 0;
+  }
+  return out;
+}
+
+}  // namespace shadowgen::detail
