@@ -134,7 +134,8 @@ bool touches_itself(const std::vector<hsr::Triangle3>& triangles) {
     all.low = glm::min(all.low, b.low);
     all.high = glm::max(all.high, b.high);
   }
-  // Cubes as wide as the median triangle, but no more than 64 along the widest side.
+  // Cubes as wide as the median triangle, but no more than 64 along the widest side, and
+  // wider while the boxes would fill more than 16 cubes each on average.
   std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2),
                    sizes.end());
   const glm::dvec3 extent = all.high - all.low;
@@ -150,6 +151,15 @@ bool touches_itself(const std::vector<hsr::Triangle3>& triangles) {
   auto key = [](const std::array<std::uint64_t, 3>& c) {
     return (c[0] << 40) | (c[1] << 20) | c[2];
   };
+  for (;;) {
+    std::uint64_t filled = 0;
+    for (const Box& b : boxes) {
+      const auto low = cell_of(b.low), high = cell_of(b.high);
+      filled += (high[0] - low[0] + 1) * (high[1] - low[1] + 1) * (high[2] - low[2] + 1);
+    }
+    if (filled <= 16 * boxes.size() + 4096) break;
+    cube *= 2.0;
+  }
   std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
   for (std::uint32_t k = 0; k < boxes.size(); ++k) {
     const auto low = cell_of(boxes[k].low), high = cell_of(boxes[k].high);
@@ -159,10 +169,17 @@ bool touches_itself(const std::vector<hsr::Triangle3>& triangles) {
       }
     }
   }
+  // Past a budget of candidate pairs (many triangles crowding one cube, as around a vertex
+  // of thousands of neighbours) the surface is taken as touching itself: no solid, and
+  // the parts simply occlude.
+  std::uint64_t budget = 256 * static_cast<std::uint64_t>(boxes.size()) + 65536;
   std::sort(entries.begin(), entries.end());
   for (std::size_t g = 0, e = 0; g < entries.size(); g = e) {
     for (e = g + 1; e < entries.size() && entries[e].first == entries[g].first; ++e) {
     }
+    const std::uint64_t here = (e - g) * (e - g - 1) / 2;
+    if (here > budget) return true;
+    budget -= here;
     for (std::size_t i = g; i < e; ++i) {
       for (std::size_t j = i + 1; j < e; ++j) {
         const Box& a = boxes[entries[i].second];

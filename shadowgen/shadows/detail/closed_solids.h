@@ -13,9 +13,10 @@
 // Decided strictly and exactly, or not at all: a part is left to occlude where anything
 // is in doubt (a surface not closed, touching itself, a shell turned inside out, a part
 // near edge-on to a directional light beyond what rounding can settle, a point light on
-// the surface or its side not settled by any of a few rays). A part that shares its
-// plane with others (coplanar_groups.h) may be left out too: coplanar parts do not shadow
-// each other, and one facing the light keeps, where it lies, the plane's visibility it
+// the surface or its side not settled by any of a few rays, a surface too crowded to
+// check for contacts within a budget of candidate pairs linear in its triangles). A part that
+// shares its plane with others (coplanar_groups.h) may be left out too: coplanar parts do not
+// shadow each other, and one facing the light keeps, where it lies, the plane's visibility it
 // shared with the part turned away.
 
 #include <cstddef>

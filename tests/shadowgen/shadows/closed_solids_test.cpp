@@ -87,6 +87,23 @@ TEST(ClosedSolids, ClosedOutwardBoxesAreSolidsAndNothingElseIs) {
   // A box standing on another shares no edge: each is a solid of its own, touching the
   // other along a face (which the test within one surface does not look at).
   EXPECT_EQ(solids_of(triangulated_cube()), std::vector<int>(12, 0));
+
+  // A cone of many sides crowds thousands of triangles around its apex, past the budget
+  // of pairs looked at for contacts: no solid, and its parts simply occlude. Of few
+  // sides, a solid.
+  for (const int sides : {12, 4000}) {
+    Scene cone;
+    hsr::Loop3 base;
+    for (int k = 0; k < sides; ++k) {
+      const double angle = -2.0 * M_PI * k / sides;
+      base.push_back({std::cos(angle), std::sin(angle), 0.0});
+    }
+    add_face(cone, "base", polygon(base));
+    for (int k = 0; k < sides; ++k) {
+      add_face(cone, "side", polygon({base[(k + 1) % sides], base[k], {0, 0, 2}}));
+    }
+    EXPECT_EQ(solids_of(cone)[0], sides == 12 ? 0 : -1) << sides;
+  }
 }
 
 TEST(ClosedSolids, SurfacesThatTouchOrCrossThemselvesOrTurnInsideOutAreNot) {
