@@ -50,10 +50,21 @@ bool in_triangle(const Point2& p, const Point2& t0, const Point2& t1, const Poin
          sign(clipper::orient2d(t2, t0, p)) * turn >= 0;
 }
 
+// Whether the segment p-q and the triangle t, all in one plane, share a point: an end
+// inside, or the segment across a side (in the plane's projection along `axis`).
+bool segment_meets_triangle_in_plane(const glm::dvec3& p, const glm::dvec3& q, const Triangle3& t,
+                                     int axis) {
+  const Point2 P = drop(p, axis), Q = drop(q, axis);
+  const Point2 T0 = drop(t[0], axis), T1 = drop(t[1], axis), T2 = drop(t[2], axis);
+  return in_triangle(P, T0, T1, T2) || in_triangle(Q, T0, T1, T2) || segments_meet(P, Q, T0, T1) ||
+         segments_meet(P, Q, T1, T2) || segments_meet(P, Q, T2, T0);
+}
+
 // Whether segment u-x, u a corner of t and x in t's plane, enters t from u: x lies in
 // the closed angle of t at u (a direction within it, not against it).
-bool enters_from_corner(const glm::dvec3& u, const glm::dvec3& x, const Triangle3& t) {
-  if (orient3(t[0], t[1], t[2], x) != 0) return false;  // it leaves the plane at u
+bool enters_from_corner(const glm::dvec3& u, const glm::dvec3& x, const Triangle3& t,
+                        bool in_plane) {
+  if (!in_plane && orient3(t[0], t[1], t[2], x) != 0) return false;  // it leaves the plane at u
   const int axis = projecting_axis(t);
   std::size_t k = 0;
   while (t[k] != u) ++k;
@@ -79,15 +90,7 @@ bool degenerate(const Triangle3& t) {
 bool segment_meets_triangle(const glm::dvec3& p, const glm::dvec3& q, const Triangle3& t) {
   const int s1 = orient3(t[0], t[1], t[2], p), s2 = orient3(t[0], t[1], t[2], q);
   if (s1 * s2 > 0) return false;  // both strictly on one side of the plane
-  if (s1 == 0 && s2 == 0) {
-    // In the plane: an end inside, or the segment across a side.
-    const int axis = projecting_axis(t);
-    const Point2 P = drop(p, axis), Q = drop(q, axis);
-    const Point2 T0 = drop(t[0], axis), T1 = drop(t[1], axis), T2 = drop(t[2], axis);
-    return in_triangle(P, T0, T1, T2) || in_triangle(Q, T0, T1, T2) ||
-           segments_meet(P, Q, T0, T1) || segments_meet(P, Q, T1, T2) ||
-           segments_meet(P, Q, T2, T0);
-  }
+  if (s1 == 0 && s2 == 0) return segment_meets_triangle_in_plane(p, q, t, projecting_axis(t));
   // The segment reaches the plane at one point; its line passes through the closed
   // triangle when it passes no side of it the other way round from another (the signs of
   // the lines' Plücker products, here orient3d of the line with each side).
@@ -114,7 +117,7 @@ bool triangles_meet(const Triangle3& a, const Triangle3& b) {
   return false;
 }
 
-bool triangles_overlap_beyond_shared(const Triangle3& a, const Triangle3& b) {
+bool triangles_overlap_beyond_shared(const Triangle3& a, const Triangle3& b, bool coplanar) {
   std::size_t shared = 0, ia[3] = {}, ib[3] = {};
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) {
@@ -125,8 +128,20 @@ bool triangles_overlap_beyond_shared(const Triangle3& a, const Triangle3& b) {
       }
     }
   }
-  if (shared == 0) return triangles_meet(a, b);
   if (shared >= 3) return true;
+  const int axis = coplanar ? projecting_axis(a) : 2;
+  // A side of one meeting the other, decided in the plane where they share it.
+  auto meets = [&](const glm::dvec3& p, const glm::dvec3& q, const Triangle3& t) {
+    return coplanar ? segment_meets_triangle_in_plane(p, q, t, axis)
+                    : segment_meets_triangle(p, q, t);
+  };
+  if (shared == 0) {
+    if (!coplanar) return triangles_meet(a, b);
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (meets(a[k], a[(k + 1) % 3], b) || meets(b[k], b[(k + 1) % 3], a)) return true;
+    }
+    return false;
+  }
   if (shared == 2) {
     // Their planes meet along the common edge, and each triangle meets that line in the
     // edge alone: unless they are coplanar, that is all they share.
@@ -134,10 +149,10 @@ bool triangles_overlap_beyond_shared(const Triangle3& a, const Triangle3& b) {
     const glm::dvec3& v = a[ia[1]];
     const glm::dvec3& x = a[3 - ia[0] - ia[1]];
     const glm::dvec3& y = b[3 - ib[0] - ib[1]];
-    if (orient3(u, v, x, y) != 0) return false;
-    const int axis = projecting_axis(a);
-    const int sx = sign(clipper::orient2d(drop(u, axis), drop(v, axis), drop(x, axis)));
-    const int sy = sign(clipper::orient2d(drop(u, axis), drop(v, axis), drop(y, axis)));
+    if (!coplanar && orient3(u, v, x, y) != 0) return false;
+    const int in = coplanar ? axis : projecting_axis(a);
+    const int sx = sign(clipper::orient2d(drop(u, in), drop(v, in), drop(x, in)));
+    const int sy = sign(clipper::orient2d(drop(u, in), drop(v, in), drop(y, in)));
     return sx * sy >= 0;
   }
   // One common corner u. Were their common part more than u, it would hold a segment from
@@ -148,15 +163,17 @@ bool triangles_overlap_beyond_shared(const Triangle3& a, const Triangle3& b) {
   const glm::dvec3& a2 = a[(ia[0] + 2) % 3];
   const glm::dvec3& b1 = b[(ib[0] + 1) % 3];
   const glm::dvec3& b2 = b[(ib[0] + 2) % 3];
-  // The other corners of one strictly on one side of the other's plane: it meets that
-  // plane at u alone.
-  const int s1 = orient3(a[0], a[1], a[2], b1), s2 = orient3(a[0], a[1], a[2], b2);
-  if (s1 * s2 > 0) return false;
-  const int r1 = orient3(b[0], b[1], b[2], a1), r2 = orient3(b[0], b[1], b[2], a2);
-  if (r1 * r2 > 0) return false;
-  return segment_meets_triangle(a1, a2, b) || segment_meets_triangle(b1, b2, a) ||
-         enters_from_corner(u, a1, b) || enters_from_corner(u, a2, b) ||
-         enters_from_corner(u, b1, a) || enters_from_corner(u, b2, a);
+  if (!coplanar) {
+    // The other corners of one strictly on one side of the other's plane: it meets that
+    // plane at u alone.
+    const int s1 = orient3(a[0], a[1], a[2], b1), s2 = orient3(a[0], a[1], a[2], b2);
+    if (s1 * s2 > 0) return false;
+    const int r1 = orient3(b[0], b[1], b[2], a1), r2 = orient3(b[0], b[1], b[2], a2);
+    if (r1 * r2 > 0) return false;
+  }
+  return meets(a1, a2, b) || meets(b1, b2, a) || enters_from_corner(u, a1, b, coplanar) ||
+         enters_from_corner(u, a2, b, coplanar) || enters_from_corner(u, b1, a, coplanar) ||
+         enters_from_corner(u, b2, a, coplanar);
 }
 
 }  // namespace shadowgen::hsr

@@ -26,7 +26,10 @@ bool triangles_meet(const Triangle3& a, const Triangle3& b);
 // corners they have in common (equal coordinates): with no common corner, anywhere; with
 // one, anywhere else than at it; with two, anywhere off their common edge, and, were
 // they coplanar, anywhere at all but on opposite sides of it (folded onto each other they
-// overlap); with three, they overlap.
-bool triangles_overlap_beyond_shared(const Triangle3& a, const Triangle3& b);
+// overlap); with three, they overlap. `coplanar`: the caller knows them to lie exactly in
+// one plane (shadowgen/shadows/detail/coplanar_groups.h decides that exactly), and every
+// question is settled in the plane's projection, where orient3d would have to find each
+// of its determinants exactly zero the slow way.
+bool triangles_overlap_beyond_shared(const Triangle3& a, const Triangle3& b, bool coplanar = false);
 
 }  // namespace shadowgen::hsr

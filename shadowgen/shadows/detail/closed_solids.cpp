@@ -114,10 +114,11 @@ bool boxes_meet(const Box& a, const Box& b) {
 double norm1(const glm::dvec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
 
 // Whether some two of the triangles meet anywhere but where neighbours on a surface must
-// (hsr::triangles_overlap_beyond_shared). Candidates are the pairs whose boxes meet, found
+// (hsr::triangles_overlap_beyond_shared), told where two lie in one plane (`planes`: the
+// coplanar group of each, -1 for none). Candidates are the pairs whose boxes meet, found
 // in a grid of cubes about the size of the triangles: each pair is looked at in the one
 // cube that holds the higher of the two boxes' low corners.
-bool touches_itself(const std::vector<hsr::Triangle3>& triangles) {
+bool touches_itself(const std::vector<hsr::Triangle3>& triangles, const std::vector<int>& planes) {
   std::vector<std::uint32_t> items;
   std::vector<Box> boxes;
   std::vector<double> sizes;
@@ -161,8 +162,10 @@ bool touches_itself(const std::vector<hsr::Triangle3>& triangles) {
     cube *= 2.0;
   }
   std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+  std::vector<std::array<std::uint64_t, 3>> low_cell(boxes.size());
   for (std::uint32_t k = 0; k < boxes.size(); ++k) {
     const auto low = cell_of(boxes[k].low), high = cell_of(boxes[k].high);
+    low_cell[k] = low;
     for (std::uint64_t x = low[0]; x <= high[0]; ++x) {
       for (std::uint64_t y = low[1]; y <= high[1]; ++y) {
         for (std::uint64_t z = low[2]; z <= high[2]; ++z) entries.emplace_back(key({x, y, z}), k);
@@ -182,13 +185,16 @@ bool touches_itself(const std::vector<hsr::Triangle3>& triangles) {
     budget -= here;
     for (std::size_t i = g; i < e; ++i) {
       for (std::size_t j = i + 1; j < e; ++j) {
-        const Box& a = boxes[entries[i].second];
-        const Box& b = boxes[entries[j].second];
-        if (!boxes_meet(a, b) || key(cell_of(glm::max(a.low, b.low))) != entries[g].first) {
-          continue;
-        }
-        if (hsr::triangles_overlap_beyond_shared(triangles[items[entries[i].second]],
-                                                 triangles[items[entries[j].second]])) {
+        const std::uint32_t p = entries[i].second, q = entries[j].second;
+        if (!boxes_meet(boxes[p], boxes[q])) continue;
+        // The cube of the higher low corner: the greater cell index on each axis.
+        const std::array<std::uint64_t, 3> owner = {std::max(low_cell[p][0], low_cell[q][0]),
+                                                    std::max(low_cell[p][1], low_cell[q][1]),
+                                                    std::max(low_cell[p][2], low_cell[q][2])};
+        if (key(owner) != entries[g].first) continue;
+        const int plane = planes[items[p]];
+        if (hsr::triangles_overlap_beyond_shared(triangles[items[p]], triangles[items[q]],
+                                                 plane >= 0 && plane == planes[items[q]])) {
           return true;
         }
       }
@@ -275,7 +281,12 @@ ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size()
     // Triangulated, the surface must still run through each edge once each way: a
     // diagonal of one part along which others meet is an edge of four triangles.
     Solid solid;
+    // A component of triangles alone has its parts' boundaries for its triangles' edges.
+    const bool all_triangles = std::all_of(list.begin(), list.end(), [&](std::size_t i) {
+      return parts.polygons[i].outer.size() == 3 && parts.polygons[i].holes.empty();
+    });
     std::vector<EdgeRun> triangle_runs;
+    std::vector<int> planes;  // per triangle, its part's coplanar group (exactly one plane)
     bool split = true;
     for (const std::size_t i : list) {
       std::optional<std::vector<hsr::Triangle3>> triangles =
@@ -285,19 +296,21 @@ ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size()
         break;
       }
       for (const hsr::Triangle3& t : *triangles) {
-        add_runs(triangle_runs, std::span<const glm::dvec3>(t.data(), 3), id, i);
+        if (!all_triangles)
+          add_runs(triangle_runs, std::span<const glm::dvec3>(t.data(), 3), id, i);
       }
       solid.triangles.insert(solid.triangles.end(), triangles->begin(), triangles->end());
+      planes.insert(planes.end(), triangles->size(), parts.coplanar[i]);
       part_triangles_[i] = std::move(*triangles);
     }
     bool manifold = split;
-    if (manifold) {
+    if (manifold && !all_triangles) {
       sort_runs(triangle_runs);
       for_each_edge(triangle_runs, [&](std::span<const EdgeRun> uses) {
         manifold = manifold && once_each_way(uses);
       });
     }
-    if (!manifold || !outward(solid.triangles) || touches_itself(solid.triangles)) {
+    if (!manifold || !outward(solid.triangles) || touches_itself(solid.triangles, planes)) {
       for (const std::size_t i : list) part_triangles_[i].clear();
       continue;
     }
