@@ -6,10 +6,8 @@
 #include <optional>
 #include <stdexcept>
 
-#include "clipper/predicates.h"
-#include "clipper/triangulate.h"
 #include "hsr/area.h"
-#include "hsr/plane_chart.h"
+#include "hsr/chart_triangles.h"
 
 namespace shadowgen::sampled {
 
@@ -26,20 +24,12 @@ PartTriangles part_triangles(const hsr::Polygon3& part) {
   out.normal = plane.normal;
   out.area = hsr::area(part);
 
-  // The chart drops a coordinate, exactly, so the ear clipper's exact predicates decide on
-  // the part's own vertices, and the triangles are taken back on them unchanged.
-  const hsr::PlaneChart chart = hsr::chart_facing(plane.normal);
-  std::vector<clipper::Loop2> loops{chart.flatten(part.outer)};
-  for (const hsr::Loop3& hole : part.holes) loops.push_back(chart.flatten(hole));
-  std::vector<clipper::Point2> flat;
-  for (const clipper::Loop2& loop : loops) flat.insert(flat.end(), loop.begin(), loop.end());
-  const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
-  if (!triangles) throw std::runtime_error("a face part could not be split into triangles");
-  for (const clipper::Triangle& t : *triangles) {
-    if (clipper::orient2d(flat[t[0]], flat[t[1]], flat[t[2]]) == clipper::Orientation::kCollinear) {
-      continue;  // no area in the chart, none in the plane
-    }
-    const Triangle3 tri{vertices[t[0]], vertices[t[1]], vertices[t[2]]};
+  const std::optional<hsr::ChartTriangles> split = hsr::chart_triangles(part, plane.normal);
+  if (!split) throw std::runtime_error("a face part could not be split into triangles");
+  for (std::size_t k = 0; k < split->triangles.size(); ++k) {
+    if (split->flat_triangle(k)) continue;  // no area in the chart, none in the plane
+    const clipper::Triangle& t = split->triangles[k];
+    const Triangle3 tri{split->corners[t[0]], split->corners[t[1]], split->corners[t[2]]};
     const double a = 0.5 * glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a));
     if (!(a > 0.0)) continue;
     out.triangles.push_back(tri);

@@ -2,9 +2,7 @@
 
 #include <optional>
 
-#include "clipper/predicates.h"
-#include "clipper/triangulate.h"
-#include "hsr/plane_chart.h"
+#include "hsr/chart_triangles.h"
 #include "shadowgen/model/number_text.h"
 
 namespace shadowgen::detail {
@@ -42,27 +40,16 @@ bool ObjFaceBlock::add_polygons(std::span<const LitPolygon> polygons) {
   for (const LitPolygon& lit : polygons) {
     const glm::dvec3& plane_normal = part_normals_.at(lit.part);
     const std::size_t n = normal(plane_normal);
-    const hsr::PlaneChart chart = hsr::chart_facing(plane_normal);
-    const hsr::Polygon3& polygon = lit.polygon;
-    std::vector<glm::dvec3> corners(polygon.outer);
-    std::vector<clipper::Loop2> loops{chart.flatten(polygon.outer)};
-    for (const hsr::Loop3& h : polygon.holes) {
-      loops.push_back(chart.flatten(h));
-      corners.insert(corners.end(), h.begin(), h.end());
-    }
-    std::vector<clipper::Point2> flat;
-    for (const clipper::Loop2& loop : loops) flat.insert(flat.end(), loop.begin(), loop.end());
-    const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
-    if (!triangles) return false;
-    for (const clipper::Triangle& t : *triangles) {
-      if (clipper::orient2d(flat[t[0]], flat[t[1]], flat[t[2]]) ==
-          clipper::Orientation::kCollinear) {
-        continue;  // no area
-      }
+    const std::optional<hsr::ChartTriangles> split =
+        hsr::chart_triangles(lit.polygon, plane_normal);
+    if (!split) return false;
+    for (std::size_t k = 0; k < split->triangles.size(); ++k) {
+      if (split->flat_triangle(k)) continue;  // no area
+      const clipper::Triangle& t = split->triangles[k];
       lines_ += 'f';
       for (const std::size_t corner : t) {
         lines_ += ' ';
-        lines_ += std::to_string(vertex(corners[corner]) + 1);
+        lines_ += std::to_string(vertex(split->corners[corner]) + 1);
         lines_ += "//";
         lines_ += std::to_string(n + 1);
       }

@@ -14,8 +14,7 @@
 #include <utility>
 
 #include "clipper/predicates.h"
-#include "clipper/triangulate.h"
-#include "hsr/plane_chart.h"
+#include "hsr/chart_triangles.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -29,19 +28,12 @@ std::optional<std::vector<hsr::Triangle3>> triangles_of(const hsr::Polygon3& pol
   if (polygon.outer.size() == 3 && polygon.holes.empty()) {
     return std::vector<hsr::Triangle3>{{polygon.outer[0], polygon.outer[1], polygon.outer[2]}};
   }
-  const hsr::PlaneChart chart = hsr::chart_facing(plane.normal);
-  std::vector<clipper::Loop2> loops{chart.flatten(polygon.outer)};
-  std::vector<glm::dvec3> corners(polygon.outer);
-  for (const hsr::Loop3& hole : polygon.holes) {
-    loops.push_back(chart.flatten(hole));
-    corners.insert(corners.end(), hole.begin(), hole.end());
-  }
-  const std::optional<std::vector<clipper::Triangle>> split = clipper::triangulate(loops);
+  const std::optional<hsr::ChartTriangles> split = hsr::chart_triangles(polygon, plane.normal);
   if (!split) return std::nullopt;
   std::vector<hsr::Triangle3> out;
-  out.reserve(split->size());
-  for (const clipper::Triangle& t : *split) {
-    out.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  out.reserve(split->triangles.size());
+  for (const clipper::Triangle& t : split->triangles) {
+    out.push_back({split->corners[t[0]], split->corners[t[1]], split->corners[t[2]]});
   }
   return out;
 }
