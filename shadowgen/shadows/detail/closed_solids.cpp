@@ -312,6 +312,10 @@ ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size()
       solid.low = glm::min(solid.low, b.low);
       solid.high = glm::max(solid.high, b.high);
     }
+    // Triangles without area cross no ray: what each light asks of the solid leaves them
+    // out once here.
+    std::erase_if(solid.triangles, hsr::degenerate);
+    for (const std::size_t i : list) std::erase_if(part_triangles_[i], hsr::degenerate);
     const int index = static_cast<int>(solids_.size());
     solids_.push_back(std::move(solid));
     for (const std::size_t i : list) solid_of_part_[i] = index;
@@ -337,7 +341,6 @@ bool ClosedSolids::outside(const Solid& solid, const glm::dvec3& point) const {
     int winding = 0;
     bool clear = true;
     for (const hsr::Triangle3& t : solid.triangles) {
-      if (hsr::degenerate(t)) continue;
       const int s1 = static_cast<int>(clipper::orient3d(t[0], t[1], t[2], point));
       const int s2 = static_cast<int>(clipper::orient3d(t[0], t[1], t[2], end));
       if (s1 == 0) {
@@ -380,7 +383,6 @@ std::vector<char> ClosedSolids::need_not_occlude(const Light& light) const {
     if (s < 0 || !light_outside[static_cast<std::size_t>(s)]) continue;
     bool away = true;
     for (const hsr::Triangle3& t : part_triangles_[i]) {
-      if (hsr::degenerate(t)) continue;
       away = light.type == LightType::kDirectional
                  ? turned_away(t, light.direction)
                  : clipper::orient3d(t[0], t[1], t[2], light.position) ==

@@ -42,14 +42,14 @@ class ClosedSolids {
 
  private:
   struct Solid {
-    std::vector<hsr::Triangle3> triangles;
-    glm::dvec3 low{0.0}, high{0.0};  // the box of its corners
+    std::vector<hsr::Triangle3> triangles;  // those with area
+    glm::dvec3 low{0.0}, high{0.0};         // the box of its corners
   };
   bool outside(const Solid& solid, const glm::dvec3& point) const;
 
   std::vector<Solid> solids_;
   std::vector<int> solid_of_part_;
-  std::vector<std::vector<hsr::Triangle3>> part_triangles_;  // of the parts of solids only
+  std::vector<std::vector<hsr::Triangle3>> part_triangles_;  // of solids' parts, those with area
 };
 
 }  // namespace shadowgen::detail
