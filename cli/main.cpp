@@ -19,6 +19,7 @@
 #include "clipper/clip.h"
 #include "hsr/hidden_surface.h"
 #include "shadowgen/model/one_line.h"
+#include "shadowgen/output/atomic_file.h"
 #include "shadowgen/shadows/generate.h"
 
 namespace {
@@ -75,6 +76,9 @@ int run(const shadowgen::cli::Command& command) {
 
 int main(int argc, char** argv) {
   shadowgen::cli::set_aside_memory_for_unwinding(64u << 20);
+  // From the start, so that a closed pipe or the file size limit fails a write with a
+  // message, and a signal at any time leaves no temporary file (atomic_file.h).
+  shadowgen::install_temporary_file_cleanup();
   CLI::App app{"shadowgen: exact polygon shadows (Atherton, Weiler and Greenberg 1978)",
                "shadowgen"};
   app.set_version_flag("--version", std::string("shadowgen ") + SHADOWGEN_VERSION);

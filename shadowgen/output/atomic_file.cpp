@@ -1,11 +1,14 @@
 #include "shadowgen/output/atomic_file.h"
 
 #include <fcntl.h>
+#include <linux/magic.h>
 #include <sys/stat.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -47,27 +50,60 @@ bool is_dash(const fs::path& path) { return path.native() == "-"; }
 // What a destination path names.
 
 enum class Kind {
-  kStandardOutput,
-  kNewFile,  // nothing there yet: a new regular file
-  kReplace,  // an existing regular file
-  kThrough,  // an existing device, FIFO or socket
+  kDescriptor,  // "-", or a link to one of this process's descriptors (/dev/stdout)
+  kNewFile,     // nothing there yet: a new regular file
+  kReplace,     // an existing regular file
+  kThrough,     // an existing device, FIFO or socket
+  kProcLink,    // another /proc link to an open file (another process's descriptor)
 };
 
 struct Destination {
   fs::path shown;   // as given, for messages
   fs::path target;  // after following symbolic links
   Kind kind = Kind::kNewFile;
+  int fd = -1;              // kDescriptor
   struct stat existing {};  // kReplace and kThrough
 };
 
+// Whether `folder` lies on /proc, whose symbolic links (/proc/self/fd/1) are not names of
+// files but handles on open files: what they seem to point to ("/home/u/out.txt",
+// "pipe:[1234]") may not be that file, or no file at all.
+bool on_proc(const fs::path& folder) {
+  struct statfs status {};
+  return ::statfs(folder.empty() ? "." : folder.c_str(), &status) == 0 &&
+         status.f_type == PROC_SUPER_MAGIC;
+}
+
+bool same_inode(const fs::path& a, const fs::path& b) {
+  struct stat status_a {};
+  struct stat status_b {};
+  return ::stat(a.c_str(), &status_a) == 0 && ::stat(b.c_str(), &status_b) == 0 &&
+         status_a.st_dev == status_b.st_dev && status_a.st_ino == status_b.st_ino;
+}
+
+// The descriptor that `link`, a link on /proc, stands for when it is one of this
+// process's (/proc/self/fd/N, /proc/PID/fd/N, /proc/thread-self/fd/N, /dev/fd/N); -1 when
+// it is not.
+int own_descriptor(const fs::path& link) {
+  const std::string& name = link.filename().native();
+  int fd = -1;
+  const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), fd);
+  if (error != std::errc() || end != name.data() + name.size() || fd < 0) return -1;
+  const fs::path folder = link.parent_path();
+  return same_inode(folder, "/proc/self/fd") || same_inode(folder, "/proc/thread-self/fd") ? fd
+                                                                                           : -1;
+}
+
 // Follows links as the kernel does (at most 40), but by hand: the rename must act on the
-// final target, since renaming onto the link would replace the link itself.
+// final target, since renaming onto the link would replace the link itself. A link on
+// /proc is not followed: it is a handle on an open file, written in place.
 Destination resolve(const fs::path& path) {
   Destination destination;
   destination.shown = path;
   destination.target = path;
   if (is_dash(path)) {
-    destination.kind = Kind::kStandardOutput;
+    destination.kind = Kind::kDescriptor;
+    destination.fd = STDOUT_FILENO;
     return destination;
   }
   constexpr int kMaxLinks = 40;
@@ -76,8 +112,16 @@ Destination resolve(const fs::path& path) {
     if (target.empty() || !target.has_filename()) fail(path, "not a file name", EINVAL);
     struct stat status {};
     if (::lstat(target.c_str(), &status) != 0) {
-      if (errno == ENOENT) return destination;  // a new file (there, if it is a link's)
-      fail(path, "cannot examine it", errno);
+      const int error = errno;
+      // Nothing can be made on /proc: a descriptor that is not open (/dev/fd/9).
+      if (error == ENOENT && on_proc(target.parent_path())) fail(path, "cannot open it", error);
+      if (error == ENOENT) return destination;  // a new file (there, if it is a link's)
+      fail(path, "cannot examine it", error);
+    }
+    if (S_ISLNK(status.st_mode) && on_proc(target.parent_path())) {
+      destination.fd = own_descriptor(target);
+      destination.kind = destination.fd >= 0 ? Kind::kDescriptor : Kind::kProcLink;
+      return destination;
     }
     if (S_ISLNK(status.st_mode)) {
       if (links == kMaxLinks) fail(path, "cannot follow its symbolic links", ELOOP);
@@ -92,6 +136,15 @@ Destination resolve(const fs::path& path) {
     destination.kind = S_ISREG(status.st_mode) ? Kind::kReplace : Kind::kThrough;
     return destination;
   }
+}
+
+// The file a destination's content goes to, as same_file compares it: a descriptor by its
+// link on /proc, anything else by the path its links lead to.
+fs::path written_file(const Destination& destination) {
+  if (destination.kind == Kind::kDescriptor) {
+    return fs::path("/proc/self/fd") / std::to_string(destination.fd);
+  }
+  return destination.target;
 }
 
 void write_all(int fd, std::string_view data, const fs::path& shown) {
@@ -122,27 +175,38 @@ class Output {
   virtual void commit() { finish(); }
 };
 
-class StandardOutput final : public Output {
+// One of the process's own descriptors, written at its offset as it stands and left open.
+class DescriptorOutput final : public Output {
  public:
-  explicit StandardOutput(const Destination& destination) : shown_(destination.shown) {
-    // Whatever the program printed before comes first.
-    std::cout.flush();
-    if (!std::cout) fail(shown_, "earlier output failed", EIO);
-    if (std::fflush(stdout) != 0) fail(shown_, "earlier output failed", errno);
+  explicit DescriptorOutput(const Destination& destination)
+      : shown_(destination.shown), fd_(destination.fd) {
+    // Whatever the program printed before on standard output or error comes first.
+    if (fd_ == STDOUT_FILENO) {
+      std::cout.flush();
+      if (!std::cout) fail(shown_, "earlier output failed", EIO);
+      if (std::fflush(stdout) != 0) fail(shown_, "earlier output failed", errno);
+    } else if (fd_ == STDERR_FILENO) {
+      std::cerr.flush();
+      std::clog.flush();
+      (void)std::fflush(stderr);
+    }
   }
-  void write(std::string_view data) override { write_all(STDOUT_FILENO, data, shown_); }
+  void write(std::string_view data) override { write_all(fd_, data, shown_); }
 
  private:
   fs::path shown_;
+  int fd_;
 };
 
 class ThroughFile final : public Output {
  public:
   // Opened in place: no O_CREAT and no O_TRUNC, so that should the device have become a
-  // regular file since it was examined, that file is neither made nor cut short.
+  // regular file since it was examined, that file is neither made nor cut short. A link on
+  // /proc that leads to a regular file is appended to, as `>>` would.
   explicit ThroughFile(const Destination& destination) : shown_(destination.shown) {
+    const int append = destination.kind == Kind::kProcLink ? O_APPEND : 0;
     do {
-      fd_ = ::open(destination.target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+      fd_ = ::open(destination.target.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | append);
     } while (fd_ < 0 && errno == EINTR);
     if (fd_ < 0) fail(shown_, "cannot open it", errno);
   }
@@ -280,9 +344,13 @@ class TemporaryFile final : public Output {
 };
 
 std::unique_ptr<Output> open_output(Destination destination) {
+  // A write to a closed pipe or beyond the file size limit then fails with a message.
+  install_temporary_file_cleanup();
   switch (destination.kind) {
-    case Kind::kStandardOutput:
-      return std::make_unique<StandardOutput>(destination);
+    case Kind::kDescriptor:
+      return std::make_unique<DescriptorOutput>(destination);
+    case Kind::kProcLink:
+      return std::make_unique<ThroughFile>(destination);
     case Kind::kThrough: {
       auto through = std::make_unique<ThroughFile>(destination);
       struct stat status {};
@@ -323,9 +391,7 @@ void write_files_atomically(const std::vector<OutputText>& files) {
     destinations.push_back(resolve(file.path));
     const Destination& added = destinations.back();
     for (std::size_t i = 0; i + 1 < destinations.size(); ++i) {
-      const bool both_stdout =
-          added.kind == Kind::kStandardOutput && destinations[i].kind == Kind::kStandardOutput;
-      if (both_stdout || same_file(destinations[i].target, added.target)) {
+      if (same_file(written_file(destinations[i]), written_file(added))) {
         fail(file.path, "named twice among the files written together", EINVAL);
       }
     }
@@ -353,6 +419,15 @@ void write_files_atomically(const std::vector<OutputText>& files) {
 }
 
 bool is_standard_stream(const std::filesystem::path& path) { return is_dash(path); }
+
+bool same_output(const std::filesystem::path& a, const std::filesystem::path& b) {
+  try {
+    return same_file(written_file(resolve(a)), written_file(resolve(b)));
+  } catch (const std::runtime_error&) {
+    // A path that cannot be written at all: its write reports why.
+    return !is_dash(a) && !is_dash(b) && same_file(a, b);
+  }
+}
 
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
   if (is_dash(a) || is_dash(b)) return false;

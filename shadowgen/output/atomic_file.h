@@ -6,6 +6,14 @@
 //  - "-" is standard output: the text is written to descriptor 1 (after flushing
 //    std::cout and C's stdout, so nothing printed earlier comes after it). A file really
 //    named "-" is reached as "./-".
+//  - A link on /proc is a handle on an open file, not a name: it is written in place,
+//    never renamed over. One of this process's own descriptors (/dev/stdout, /dev/stderr,
+//    /dev/fd/N, /proc/self/fd/N: links to /proc/self/fd) is written as "-" is, through the
+//    descriptor itself at its offset as it stands: a regular file behind it keeps what
+//    was written there before and gets the text after it, as from a shell redirection
+//    (`{ echo before; shadowgen … -o /dev/stdout; } > out.txt` gives "before" and then
+//    the text). Any other link on /proc (another process's descriptor) is opened and
+//    appended to. A descriptor that is not open is an error ("cannot open it").
 //  - A symbolic link is followed to its final target (a dangling link to the file it
 //    would name): the target is replaced and the link stays a link.
 //  - A regular file, or no file yet, is replaced whole: the content goes to a fresh
@@ -22,14 +30,22 @@
 //    close are checked, so /dev/full fails with "No space left on device".
 //  - A folder is refused.
 //
-// Interruption: the paths of the temporary files being written are kept in a fixed,
-// preallocated table. SIGINT, SIGTERM and SIGHUP handlers (installed the first time a
-// temporary file is made, or earlier by install_temporary_file_cleanup) remove them and
-// then end the process by the same signal, as it would have ended without them. A signal
-// whose action is not the default (ignored, or the program's own handler) is left as it
-// is; a program with its own handler can call remove_temporary_files() from it.
-// Only what no handler sees (SIGKILL, a power cut) can leave a temporary file, named
-// ".NAME.tmp-PID-N-RANDOM" beside the destination.
+// Signals: the paths of the temporary files being written are kept in a fixed,
+// preallocated table. Handlers for the signals whose default action ends the process
+// (SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU, SIGVTALRM,
+// SIGPROF, SIGIO, SIGPWR, SIGSTKFLT, and the faults SIGABRT, SIGBUS, SIGFPE, SIGILL,
+// SIGSEGV, SIGSYS, SIGTRAP) remove them and then end the process by the same signal, as
+// it would have ended without them. SIGPIPE and SIGXFSZ are ignored instead, so that a
+// write to a pipe nobody reads, or beyond the file size limit (`ulimit -f`), fails
+// ("write failed: Broken pipe", "write failed: File too large") as any failed write does:
+// the temporary file is removed and the error names the path. All of this is installed
+// the first time an output is opened, or earlier by install_temporary_file_cleanup, and
+// only where a signal has its default action: a signal ignored (nohup, a background job)
+// or with the program's own handler is left as it is; a program with its own handler can
+// call remove_temporary_files() from it. A SIGPIPE or SIGXFSZ ignored here is ignored in
+// the programs this process starts, too. Only what no handler sees (SIGKILL, a power
+// cut, a real-time signal) can leave a temporary file, named ".NAME.tmp-PID-N-RANDOM"
+// beside the destination.
 //
 // Every function throws std::runtime_error "cannot write 'PATH': WHAT: REASON" (or
 // "cannot write standard output: ...") naming the path as given.
@@ -73,6 +89,11 @@ void write_files_atomically(const std::vector<OutputText>& files);
 // Whether `path` is "-", standard input or output.
 bool is_standard_stream(const std::filesystem::path& path);
 
+// Whether writing `a` and writing `b` would write one file, so that one write would lose
+// the other: as same_file, the links to follow followed as a write follows them, and "-"
+// being the file behind descriptor 1 (so "-" is "-", and is /dev/stdout).
+bool same_output(const std::filesystem::path& a, const std::filesystem::path& b);
+
 // Whether the two paths name the same file: by device and inode when both exist
 // (following symbolic links, so a link or a hard link to a file is that file), otherwise
 // by their canonical spellings ("." and ".." and the existing part's links resolved).
@@ -80,9 +101,11 @@ bool is_standard_stream(const std::filesystem::path& path);
 // standard output.
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
-// Installs the SIGINT, SIGTERM and SIGHUP handlers described above where those signals
-// have their default action; idempotent. Writing a file installs them already; a
-// program may call this at its start to settle its signal handling up front.
+// Installs the signal handling described above (handlers, SIGPIPE and SIGXFSZ ignored)
+// where those signals have their default action; idempotent. Opening an output installs
+// it already; a program may call this at its start to settle its signal handling up
+// front (so that standard output written with std::cout also fails on a closed pipe
+// rather than ending the process without a word).
 void install_temporary_file_cleanup();
 
 // Removes the temporary files being written right now. Async-signal-safe, for a

@@ -35,7 +35,25 @@ static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads s
 constexpr std::size_t kSlots = 64;
 std::array<TemporarySlot, kSlots> temporary_slots;
 
-constexpr std::array<int, 3> kCleanupSignals = {SIGINT, SIGTERM, SIGHUP};
+// The signals whose default action ends the process (signal(7)), real-time ones aside:
+// their handler removes the temporary files first. The faults are among them, so that a
+// crash in the middle of a write leaves nothing either.
+constexpr std::array kCleanupSignals = {
+    SIGHUP, SIGINT, SIGQUIT,   SIGTERM, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU, SIGVTALRM, SIGPROF,
+    SIGIO,  SIGPWR, SIGSTKFLT, SIGABRT, SIGBUS,  SIGFPE,  SIGILL,  SIGSEGV, SIGSYS,    SIGTRAP};
+
+// Signals a failed write raises, ignored so that the write fails with an error the
+// writer reports instead: EPIPE (a pipe nobody reads) and EFBIG (beyond RLIMIT_FSIZE).
+constexpr std::array kIgnoredSignals = {SIGPIPE, SIGXFSZ};
+
+// Whether `signal_number` still has its default action, which alone is replaced: an
+// ignored signal (nohup, a background job) stays ignored, and a program's own handler
+// stays in charge.
+bool has_default_action(int signal_number) {
+  struct sigaction current {};
+  if (::sigaction(signal_number, nullptr, &current) != 0) return false;
+  return (current.sa_flags & SA_SIGINFO) == 0 && current.sa_handler == SIG_DFL;
+}
 
 extern "C" void remove_temporaries_and_reraise(int signal_number) {
   const int saved_errno = errno;
@@ -74,12 +92,11 @@ void unregister_temporary(int slot) {
 }  // namespace detail
 
 void install_temporary_file_cleanup() {
+  for (const int signal_number : kIgnoredSignals) {
+    if (has_default_action(signal_number)) ::signal(signal_number, SIG_IGN);
+  }
   for (const int signal_number : kCleanupSignals) {
-    struct sigaction current {};
-    if (::sigaction(signal_number, nullptr, &current) != 0) continue;
-    // Only the default action is replaced: an ignored signal (nohup, a background job)
-    // stays ignored, and a program's own handler stays in charge.
-    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler != SIG_DFL) continue;
+    if (!has_default_action(signal_number)) continue;
     struct sigaction action {};
     action.sa_handler = remove_temporaries_and_reraise;
     sigemptyset(&action.sa_mask);

@@ -7,6 +7,7 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -285,6 +286,72 @@ TEST_F(AtomicFile, DashIsStandardOutput) {
   EXPECT_EQ(file_count(), 0u);
 }
 
+// /dev/stdout is a link to /proc/self/fd/1, which names the open file behind descriptor 1,
+// not a path to rename over: a shell's `{ echo before; … -o /dev/stdout; echo after; }
+// > out.txt` keeps "before" and "after" around the text, and a pipe gets the text.
+TEST_F(AtomicFile, ALinkToAnOpenDescriptorIsWrittenAtItsOffset) {
+  const fs::path path = dir_ / "out.txt";
+  std::cout.flush();
+  std::fflush(stdout);
+  const int file = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  ASSERT_GE(file, 0);
+  ASSERT_EQ(::write(file, "before\n", 7), 7);
+  struct stat before {};
+  ASSERT_EQ(::fstat(file, &before), 0);
+  const int saved = ::dup(STDOUT_FILENO);
+  ::dup2(file, STDOUT_FILENO);
+  std::string error;
+  try {
+    write_file_atomically("/dev/stdout", "one\n");
+    write_file_atomically("/proc/self/fd/" + std::to_string(file), "two\n");
+    write_files_atomically({{"/dev/fd/" + std::to_string(file), "three\n"}});
+    stream_file_atomically("/dev/stdout", [](const OutputSink& sink) { sink("four\n"); });
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  const bool after_written = ::write(STDOUT_FILENO, "after\n", 6) == 6;
+  ::dup2(saved, STDOUT_FILENO);
+  ::close(saved);
+  ::close(file);
+  EXPECT_EQ(error, "");
+  EXPECT_TRUE(after_written);
+  EXPECT_EQ(contents(path), "before\none\ntwo\nthree\nfour\nafter\n");
+  struct stat now {};
+  ASSERT_EQ(::stat(path.c_str(), &now), 0);
+  EXPECT_EQ(now.st_ino, before.st_ino);  // written in place, not replaced
+  EXPECT_EQ(file_count(), 1u);
+
+  const std::string piped =
+      capture_standard_output([] { write_file_atomically("/dev/stdout", "through a pipe\n"); });
+  EXPECT_EQ(piped, "through a pipe\n");
+}
+
+TEST_F(AtomicFile, ADescriptorThatIsNotOpenIsAnError) {
+  const int unused = ::dup(STDERR_FILENO);
+  ASSERT_GE(unused, 0);
+  ::close(unused);
+  const std::string path = "/dev/fd/" + std::to_string(unused);
+  EXPECT_EQ(error_of([&] { write_file_atomically(path, "x"); }),
+            "cannot write '" + path + "': cannot open it: " + std::strerror(ENOENT));
+}
+
+// Two outputs are one file when a write of one would overwrite the other's: "-" is the
+// file behind descriptor 1, as /dev/stdout is.
+TEST_F(AtomicFile, SameOutputSeesStandardOutputAndLinks) {
+  const fs::path a = dir_ / "a.txt";
+  write_file_atomically(a, "a");
+  fs::create_symlink("a.txt", dir_ / "soft.txt");
+  fs::create_hard_link(a, dir_ / "hard.txt");
+  EXPECT_TRUE(same_output("-", "-"));
+  EXPECT_TRUE(same_output("-", "/dev/stdout"));
+  EXPECT_TRUE(same_output("/proc/self/fd/1", "-"));
+  EXPECT_TRUE(same_output(a, dir_ / "soft.txt"));
+  EXPECT_TRUE(same_output(dir_ / "hard.txt", a));
+  EXPECT_TRUE(same_output(dir_ / "new.txt", dir_ / "." / "new.txt"));
+  EXPECT_FALSE(same_output(a, dir_ / "new.txt"));
+  EXPECT_FALSE(same_output("-", a));
+}
+
 TEST_F(AtomicFile, AFailingStandardOutputIsAnError) {
   if (!is_character_device("/dev/full")) GTEST_SKIP() << "no /dev/full here";
   std::cout.flush();
@@ -370,6 +437,8 @@ void expect_signal_removes_the_temporary(const fs::path& dir, int signal_number)
     ::close(ready[0]);
     // As in a program started normally (a background job may inherit an ignored SIGINT).
     ::signal(signal_number, SIG_DFL);
+    const struct rlimit no_core { 0, 0 };  // SIGQUIT and SIGXCPU would dump one
+    ::setrlimit(RLIMIT_CORE, &no_core);
     sigset_t none;
     sigemptyset(&none);
     ::sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -423,6 +492,88 @@ TEST_F(AtomicFile, SigintRemovesTheTemporaryFile) {
 
 TEST_F(AtomicFile, SighupRemovesTheTemporaryFile) {
   expect_signal_removes_the_temporary(dir_, SIGHUP);
+}
+
+TEST_F(AtomicFile, SigquitRemovesTheTemporaryFile) {
+  expect_signal_removes_the_temporary(dir_, SIGQUIT);
+}
+
+TEST_F(AtomicFile, SigalrmRemovesTheTemporaryFile) {
+  expect_signal_removes_the_temporary(dir_, SIGALRM);
+}
+
+TEST_F(AtomicFile, Sigusr1RemovesTheTemporaryFile) {
+  expect_signal_removes_the_temporary(dir_, SIGUSR1);
+}
+
+TEST_F(AtomicFile, SigxcpuRemovesTheTemporaryFile) {
+  expect_signal_removes_the_temporary(dir_, SIGXCPU);
+}
+
+// What `action` did in a child process where `signal_number` has its default action, as
+// in a program started normally: "exit N", "signal N", or the message it threw.
+std::string outcome_in_child(int signal_number, const std::function<void()>& action) {
+  int message[2];
+  if (::pipe(message) != 0) return "no pipe";
+  const pid_t child = ::fork();
+  if (child < 0) return "no fork";
+  if (child == 0) {
+    ::close(message[0]);
+    ::signal(signal_number, SIG_DFL);
+    try {
+      action();
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      if (::write(message[1], what.data(), what.size()) < 0) ::_exit(4);
+      ::_exit(0);
+    }
+    ::_exit(3);
+  }
+  ::close(message[1]);
+  std::string received;
+  char buffer[1024];
+  for (ssize_t got; (got = ::read(message[0], buffer, sizeof buffer)) > 0;) {
+    received.append(buffer, static_cast<std::size_t>(got));
+  }
+  ::close(message[0]);
+  int status = 0;
+  if (::waitpid(child, &status, 0) != child) return "no wait";
+  if (WIFSIGNALED(status)) return "signal " + std::to_string(WTERMSIG(status));
+  if (WEXITSTATUS(status) != 0) return "exit " + std::to_string(WEXITSTATUS(status));
+  return received;
+}
+
+// Beyond the file size limit (`ulimit -f`) the write fails with a message naming the file,
+// instead of SIGXFSZ ending the process with its temporary file left behind.
+TEST_F(AtomicFile, TheFileSizeLimitIsAWriteErrorAndLeavesNoTemporaryFile) {
+  const fs::path path = dir_ / "big.txt";
+  write_file_atomically(path, "old\n");
+  const std::string outcome = outcome_in_child(SIGXFSZ, [&] {
+    const struct rlimit limit { 1 << 16, 1 << 16 };
+    if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) throw std::runtime_error("no limit");
+    write_file_atomically(path, std::string(1 << 20, 'x'));
+  });
+  EXPECT_EQ(outcome, "cannot write '" + path.string() + "': write failed: " + std::strerror(EFBIG));
+  EXPECT_EQ(contents(path), "old\n");
+  EXPECT_EQ(file_count(), 1u);
+}
+
+// A pipe whose reader has gone: the write fails with a message, instead of SIGPIPE ending
+// the process without a word.
+TEST_F(AtomicFile, APipeNobodyReadsIsAWriteError) {
+  const fs::path fifo = dir_ / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string outcome = outcome_in_child(SIGPIPE, [&] {
+    int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+    if (reader < 0) throw std::runtime_error("no reader");
+    stream_file_atomically(fifo, [&](const OutputSink& sink) {
+      sink("read\n");
+      ::close(reader);
+      sink("never read\n");
+    });
+  });
+  EXPECT_EQ(outcome, "cannot write '" + fifo.string() + "': write failed: " + std::strerror(EPIPE));
+  EXPECT_EQ(file_count(), 1u);
 }
 
 // nohup and background jobs ignore signals on purpose; writing a file must not undo it.
