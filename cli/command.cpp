@@ -1,20 +1,9 @@
 #include "cli/command.h"
 
 #include <iostream>
-#include <set>
 #include <string>
-#include <utility>
-
-#include "shadowgen/output/atomic_file.h"
 
 namespace shadowgen::cli {
-
-void refuse_input_as_output(const std::string& option, const std::string& output,
-                            const std::string& input) {
-  if (same_file(output, input)) {
-    throw UsageError(option + " " + output + ": is the input " + input + "; it would be replaced");
-  }
-}
 
 Method MethodArgs::method() const {
   const MethodKind kind = method_kind(name).value_or(MethodKind::kExact);
@@ -92,23 +81,14 @@ CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::
   return command.add_option("-o,--output", path, what);
 }
 
-LoadOptions load_options(const ReadingArgs& args, Accept accept, std::vector<OutputFile> outputs) {
+LoadOptions load_options(const ReadingArgs& args, Accept accept, const RunFiles& files) {
   LoadOptions options;
   options.accept = accept;
   options.strict = args.strict;
   options.threads = args.threads;
   options.verbose = args.verbose;
   options.lights = args.lights;
-  if (!outputs.empty()) {
-    options.on_scene = [outputs = std::move(outputs)](const Scene& scene) {
-      std::set<std::string> read;
-      for (const Face& face : scene.faces) read.insert(face.source_file);
-      for (const OutputFile& output : outputs) {
-        for (const std::string& file : read)
-          refuse_input_as_output(output.option, output.path, file);
-      }
-    };
-  }
+  guard_outputs(options, files);
   if (!args.quiet) {
     options.on_warning = [](const std::string& warning) {
       std::cerr << "shadowgen: warning: " << warning << '\n';

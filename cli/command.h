@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/run_files.h"
 #include "shadowgen/pipeline/load_shadowed.h"
 
 namespace shadowgen::cli {
@@ -97,23 +98,10 @@ void add_input_option(CLI::App& command, std::string& path);
 // -o/--output on `command`, described as naming `what`.
 CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::string& what);
 
-// Throws UsageError when `output` names the same file as `input` (through a link, a hard
-// link or another spelling of the path): a run must never replace what it reads.
-void refuse_input_as_output(const std::string& option, const std::string& output,
-                            const std::string& input);
-
-// A file a run writes, and the option that names it ("-o", "--obj").
-struct OutputFile {
-  std::string option;
-  std::string path;
-};
-
 // The loading options these arguments ask for: reading warnings on stderr unless quiet.
-// Once a scene is read, before its shadows are generated or anything is written, a
-// UsageError when one of `outputs` is a file the scene was read from: the scene itself
-// or one of its mesh files (the input itself is refused earlier, by
-// refuse_input_as_output).
-LoadOptions load_options(const ReadingArgs& args, Accept accept,
-                         std::vector<OutputFile> outputs = {});
+// `files`: what the run reads and writes, checked before the load (guard_outputs), so
+// that no output is an input, the files a scene names included, and no two outputs are
+// one file.
+LoadOptions load_options(const ReadingArgs& args, Accept accept, const RunFiles& files = {});
 
 }  // namespace shadowgen::cli

@@ -166,17 +166,11 @@ void run_compare(const CompareArgs& args) {
       view_methods.push_back(parse_view_method(text));
     }
   }
-  std::vector<OutputFile> outputs;
-  if (!args.output.empty()) {
-    refuse_input_as_output("-o", args.output, args.input);
-    outputs.push_back({"-o", args.output});
-  }
-  if (!args.plot.empty()) {
-    refuse_input_as_output("--plot", args.plot, args.input);
-    outputs.push_back({"--plot", args.plot});
-  }
-  const Scene scene = load_scene(
-      args.input, load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs)));
+  RunFiles files{{args.input}, {}};
+  if (!args.output.empty()) files.writes.push_back({"-o", args.output});
+  if (!args.plot.empty()) files.writes.push_back({"--plot", args.plot});
+  const Scene scene =
+      load_scene(args.input, load_options(args.reading, Accept::kSceneOrDatabase, files));
   // A view the scene does not have is refused before any work.
   const ViewSpec* view = args.view.empty() ? nullptr : &view_named(scene, args.view, args.input);
   GenerateOptions options;

@@ -54,10 +54,9 @@ void run_export(const ExportArgs& args) {
 
   if (args.obj == "-")
     throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
-  refuse_input_as_output("--obj", obj_path.string(), args.input);
-  refuse_input_as_output("--obj", mtl_path.string(), args.input);
-  LoadOptions load = load_options(args.reading, Accept::kSceneOrDatabase,
-                                  {{"--obj", obj_path.string()}, {"--obj", mtl_path.string()}});
+  LoadOptions load = load_options(
+      args.reading, Accept::kSceneOrDatabase,
+      {{args.input}, {{"--obj", obj_path.string()}, {"--obj's MTL", mtl_path.string()}}});
   // A sun-hours export writes a path's sums, not its instants' lit polygons; a scene
   // without that path is refused before its shadows are computed.
   load.instant_polygons = args.sun_hours.path.empty();

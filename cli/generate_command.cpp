@@ -82,7 +82,7 @@ fs::path comparable(const fs::path& path) {
 std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
                                      const std::string& output) {
   if (scenes.size() == 1) {
-    refuse_input_as_output("-o", output, scenes[0]);
+    refuse_unsafe_outputs({{"-o", output}}, scenes);
     return {fs::path(output)};
   }
 
@@ -103,7 +103,7 @@ std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
     fs::path path = fs::path(output) / name;
     path += ".shadowed.json";
     const fs::path key = comparable(path);
-    for (const std::string& other : scenes) refuse_input_as_output("-o", path.string(), other);
+    refuse_unsafe_outputs({{"-o", path.string()}}, scenes);
     if (inputs.count(key) > 0) {
       throw UsageError(scene + ": its database " + path.string() +
                        " would replace one of the scenes");
@@ -120,7 +120,8 @@ std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
 // Scene `index` of `args`, read and generated, with a progress line when `show_progress`.
 ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std::size_t index,
                         bool show_progress) {
-  LoadOptions options = load_options(args.reading, Accept::kScene, {{"-o", database.string()}});
+  LoadOptions options =
+      load_options(args.reading, Accept::kScene, {args.scenes, {{"-o", database.string()}}});
   options.instant_polygons = args.keep_instants;
   options.sun_hours_regions = !args.areas_only;
   options.method = args.method.method();

@@ -28,8 +28,8 @@ struct MergeArgs {
 };
 
 void run_merge(const MergeArgs& args) {
-  for (const std::string& input : args.inputs) refuse_input_as_output("-o", args.output, input);
-  const LoadOptions options = load_options(args.reading, Accept::kShard);
+  const LoadOptions options =
+      load_options(args.reading, Accept::kShard, {args.inputs, {{"-o", args.output}}});
   const int threads = args.reading.threads ? static_cast<int>(args.reading.threads)
                                            : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);

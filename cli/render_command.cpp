@@ -164,11 +164,10 @@ void run_render(const RenderArgs& args) {
   load.on_warning = [](const std::string& warning) {
     std::cerr << "shadowgen: warning: " << warning << '\n';
   };
-  if (!args.svg.empty()) refuse_input_as_output("--svg", args.svg, args.database);
-  if (!args.png.empty()) refuse_input_as_output("--png", args.png, args.database);
-  if (!args.svg.empty() && !args.png.empty() && same_file(args.svg, args.png)) {
-    throw UsageError("--svg " + args.svg + " and --png " + args.png + " name the same file");
-  }
+  RunFiles run_files{{args.database}, {}};
+  if (!args.svg.empty()) run_files.writes.push_back({"--svg", args.svg});
+  if (!args.png.empty()) run_files.writes.push_back({"--png", args.png});
+  guard_outputs(load, run_files);
   const ShadowedScene shadowed = load_shadowed(args.database, load);
   std::optional<SunHoursMap> map;
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.database);

@@ -72,13 +72,10 @@ std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
 }
 
 void run_report(const ReportArgs& args) {
-  if (!args.output.empty()) {
-    refuse_input_as_output("-o", args.output, args.input);
-    if (!args.weather.empty()) refuse_input_as_output("-o", args.output, args.weather);
-  }
-  std::vector<OutputFile> outputs;
-  if (!args.output.empty()) outputs.push_back({"-o", args.output});
-  LoadOptions options = load_options(args.reading, Accept::kSceneOrDatabase, std::move(outputs));
+  RunFiles files{{args.input}, {}};
+  if (!args.weather.empty()) files.reads.push_back(args.weather);
+  if (!args.output.empty()) files.writes.push_back({"-o", args.output});
+  LoadOptions options = load_options(args.reading, Accept::kSceneOrDatabase, files);
   // From a scene, a sun path's regions are made only for the report that reads them.
   options.sun_hours_regions = args.format == "sun-hours";
   options.method = args.method.method();

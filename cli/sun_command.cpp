@@ -29,11 +29,9 @@ struct SunArgs {
 };
 
 void run_sun(const SunArgs& args) {
-  if (!args.output.empty()) refuse_input_as_output("-o", args.output, args.input);
-  std::vector<OutputFile> outputs;
-  if (!args.output.empty()) outputs.push_back({"-o", args.output});
-  const Scene scene =
-      load_scene(args.input, load_options(args.reading, Accept::kScene, std::move(outputs)));
+  RunFiles files{{args.input}, {}};
+  if (!args.output.empty()) files.writes.push_back({"-o", args.output});
+  const Scene scene = load_scene(args.input, load_options(args.reading, Accept::kScene, files));
   const std::string csv =
       sun_instants_csv(scene, args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
   if (args.output.empty()) {

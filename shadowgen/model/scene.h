@@ -115,6 +115,10 @@ struct Scene {
   std::vector<ViewSpec> views;
   std::optional<Site> site;  // the scene's own, or else its weather file's
   std::optional<Weather> weather;
+  // Every file the scene was read from, in reading order, as messages name them: the
+  // scene file, then each mesh file, then the weather file. Empty for the scene a
+  // shadowed database holds, which names files it was once read from but reads none.
+  std::vector<std::string> files;
 };
 
 }  // namespace shadowgen

@@ -43,10 +43,11 @@ class SceneParser {
     JsonObject top = root.object();
     check_format(top);
     check_has_faces(top);
+    result_.scene.files.push_back(file_);
     for_each_entry(top, "polygons", [&](const JsonValue& entry) { read_polygon_entry(entry); });
     for_each_entry(top, "meshes", [&](const JsonValue& entry) {
-      detail::read_mesh_entry(entry, path_, options_, face_ids_, result_.scene.faces,
-                              result_.warnings);
+      result_.scene.files.push_back(detail::read_mesh_entry(entry, path_, options_, face_ids_,
+                                                            result_.scene.faces, result_.warnings));
     });
     read_site_and_weather(top);
     for_each_entry(top, "lights", [&](const JsonValue& entry) { read_light_entry(entry); });
@@ -89,6 +90,7 @@ class SceneParser {
     if (site) scene.site = detail::read_site(*site);
     if (const std::optional<JsonValue> weather = top.find("weather")) {
       scene.weather = detail::read_weather(*weather, path_);
+      scene.files.push_back(scene.weather->file);
       if (site) {
         detail::warn_if_site_differs(*scene.site, *site, *scene.weather);
       } else {

@@ -144,9 +144,9 @@ class WarningSummary {
 
 }  // namespace
 
-void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path,
-                     const ReadOptions& options, IdRegistry& ids, std::vector<Face>& faces,
-                     std::vector<std::string>& warnings) {
+std::string read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path,
+                            const ReadOptions& options, IdRegistry& ids, std::vector<Face>& faces,
+                            std::vector<std::string>& warnings) {
   JsonObject entry = value.object();
   const std::string id = read_id(entry);
   ids.claim(id, "mesh '" + id + "'", entry.get("id"));
@@ -177,6 +177,7 @@ void read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_
     face_warnings.clear();
   }
   summary.append_to(warnings, options.verbose);
+  return mesh_file;
 }
 
 }  // namespace shadowgen::detail

@@ -45,6 +45,18 @@ TEST(SceneWeather, IsReadRelativeToTheScene) {
   EXPECT_EQ(r.scene.weather->hours.size(), 72u);
 }
 
+// Every file a scene is read from is listed (Scene::files), so that no run writes over
+// one: the scene, its mesh files and its weather file, in that order.
+TEST(SceneWeather, IsAmongTheFilesTheSceneIsReadFrom) {
+  folder().write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const fs::path scene =
+      scene_file(R"("meshes": [{"id": "m", "file": "tri.obj"}], "weather": "climate/gatwick.epw")");
+  const ReadResult r = read_scene(scene);
+  EXPECT_EQ(r.scene.files,
+            (std::vector<std::string>{scene.string(), (folder().path() / "tri.obj").string(),
+                                      (folder().path() / "climate" / "gatwick.epw").string()}));
+}
+
 TEST(SceneWeather, GivesTheSiteWhenTheSceneHasNone) {
   const ReadResult r =
       read_scene(scene_file(R"("weather": "climate/gatwick.epw", )" + std::string(kNoon)));
