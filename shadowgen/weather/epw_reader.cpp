@@ -12,6 +12,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/line_reader.h"
 #include "shadowgen/model/number_text.h"
+#include "shadowgen/model/site_ranges.h"
 #include "shadowgen/sun/civil_time.h"
 
 namespace shadowgen::weather {
@@ -35,6 +36,10 @@ constexpr std::string_view kHeaderNote =
     "an EPW weather file begins with 8 header lines (LOCATION to DATA PERIODS)";
 
 constexpr std::size_t kLocationFields = 10;  // LOCATION, city, ..., elevation
+// The LOCATION's time zone and elevation as EnergyPlus states them (Site:Location; the
+// data dictionary), both within a scene site's ranges (shadowgen/model/site_ranges.h).
+const NumberRange kLocationTimeZone{.low = -12.0, .high = 14.0, .unit = " hours"};
+const NumberRange kLocationElevation{.low = -1000.0, .high = 9999.9, .unit = " m"};
 
 // An hourly row's fields, counted from 0 (the data dictionary counts from 1).
 constexpr std::size_t kRowFields = 35;
@@ -130,10 +135,10 @@ class EpwParser {
     weather_.source = fields[4];
     weather_.wmo = fields[5];
     Site& site = weather_.site;
-    site.latitude_deg = number_within(fields[6], "latitude", -90.0, 90.0, " degrees", 1);
-    site.longitude_deg = number_within(fields[7], "longitude", -180.0, 180.0, " degrees", 1);
-    site.utc_offset_h = number_within(fields[8], "time zone", -12.0, 14.0, " hours", 1);
-    site.elevation_m = number_within(fields[9], "elevation", -1000.0, 9999.9, " m", 1);
+    site.latitude_deg = number_within(fields[6], "latitude", latitude_range(), 1);
+    site.longitude_deg = number_within(fields[7], "longitude", longitude_range(), 1);
+    site.utc_offset_h = number_within(fields[8], "time zone", kLocationTimeZone, 1);
+    site.elevation_m = number_within(fields[9], "elevation", kLocationElevation, 1);
   }
 
   // Only hourly files: with several records an hour, rows would need the minute field to
@@ -223,13 +228,11 @@ class EpwParser {
     return *value;
   }
 
-  double number_within(std::string_view field, const std::string& what, double low, double high,
-                       const std::string& unit, std::size_t line) const {
+  double number_within(std::string_view field, const std::string& what, const NumberRange& range,
+                       std::size_t line) const {
     const double value = number(field, what, line);
-    if (value < low || value > high) {
-      fail_at(line, what + " " + shortest(value) + " must lie between " + shortest(low) + " and " +
-                        shortest(high) + unit);
-    }
+    if (!within(value, range))
+      fail_at(line, what + " " + shortest(value) + " " + range_rule(range));
     return value;
   }
 

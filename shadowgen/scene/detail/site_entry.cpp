@@ -2,16 +2,16 @@
 
 #include <optional>
 #include <string>
-#include <string_view>
+
+#include "shadowgen/model/site_ranges.h"
 
 namespace shadowgen::detail {
 namespace {
 
-double number_within(const JsonValue& value, double low, double high, std::string_view unit) {
+double number_within(const JsonValue& value, const NumberRange& range) {
   const double number = value.number();
-  if (number < low || number > high) {
-    value.fail("must lie between " + std::to_string(static_cast<int>(low)) + " and " +
-               std::to_string(static_cast<int>(high)) + std::string(unit));
+  if (const std::optional<std::string> problem = range_problem(number, range)) {
+    value.fail(*problem);
   }
   return number;
 }
@@ -21,14 +21,14 @@ double number_within(const JsonValue& value, double low, double high, std::strin
 Site read_site(const JsonValue& value) {
   JsonObject object = value.object();
   Site site;
-  site.latitude_deg = number_within(object.get("latitude_deg"), -90.0, 90.0, " degrees");
-  site.longitude_deg = number_within(object.get("longitude_deg"), -180.0, 180.0, " degrees");
-  site.utc_offset_h = number_within(object.get("utc_offset_h"), -14.0, 14.0, " hours");
+  site.latitude_deg = number_within(object.get("latitude_deg"), latitude_range());
+  site.longitude_deg = number_within(object.get("longitude_deg"), longitude_range());
+  site.utc_offset_h = number_within(object.get("utc_offset_h"), utc_offset_range());
   if (const std::optional<JsonValue> elevation = object.find("elevation_m")) {
-    site.elevation_m = elevation->number();
+    site.elevation_m = number_within(*elevation, elevation_range());
   }
   if (const std::optional<JsonValue> north = object.find("north_axis_deg")) {
-    site.north_axis_deg = north->number();
+    site.north_axis_deg = number_within(*north, north_axis_range());
   }
   object.finish();
   return site;

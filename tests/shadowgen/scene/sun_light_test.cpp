@@ -218,6 +218,17 @@ std::vector<SunError> sun_errors() {
       {"UtcOffsetOutOfRange", scene(site(place + R"(, "utc_offset_h": 15)"), ""),
        "site.utc_offset_h: must lie between -14 and 14 hours"},
       {"MissingUtcOffset", scene(site(place), ""), "site: missing 'utc_offset_h'"},
+      // Far above the air whose refraction the sun's position assumes, the parallax took
+      // the sun from 62.44 to 89.99997 degrees up.
+      {"ElevationAboveTheAtmosphere",
+       scene(site(place + R"(, "utc_offset_h": 0, "elevation_m": 1e300)"), noon),
+       "site.elevation_m: must lie between -6500000 and 11000 m"},
+      {"ElevationBelowTheAlgorithmsRange",
+       scene(site(place + R"(, "utc_offset_h": 0, "elevation_m": -7e6)"), noon),
+       "site.elevation_m: must lie between -6500000 and 11000 m"},
+      {"NorthAxisBeyondATurn",
+       scene(site(place + R"(, "utc_offset_h": 0, "north_axis_deg": 1e300)"), noon),
+       "site.north_axis_deg: must lie between -360 and 360 degrees"},
       {"SiteNotAnObject", scene(R"("site": [51.5, 0])", ""),
        "site: expected an object, found an array"},
       {"TimeWithoutMinutes", sun(R"("time": "2026-03-21T12")"),
