@@ -4,7 +4,11 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
+#include <string>
+
+#include "shadowgen/model/view_limits.h"
 
 namespace shadowgen {
 namespace {
@@ -13,11 +17,12 @@ bool finite(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// `up` unless it is (nearly) parallel to `forward`; then +y, or +z for a view along y.
+// `up` unless it lies along `forward` (shadowgen/model/view_limits.h); then +y, or +z for
+// a view along y.
 glm::dvec3 usable_up(const glm::dvec3& forward, const glm::dvec3& up) {
-  if (glm::length(glm::cross(up, forward)) > 1e-9 * glm::length(up)) return up;
+  if (!along_sight(forward, up)) return up;
   const glm::dvec3 y(0.0, 1.0, 0.0);
-  if (glm::length(glm::cross(y, forward)) > 1e-9) return y;
+  if (!along_sight(forward, y)) return y;
   return {0.0, 0.0, 1.0};
 }
 
@@ -71,8 +76,8 @@ CameraView::CameraView(const Camera& camera, const Scene& scene, int width, int 
   const double w = static_cast<double>(width), h = static_cast<double>(height);
 
   if (!camera.orthographic) {
-    if (!(camera.fov_deg > 0.0 && camera.fov_deg < 180.0)) {
-      throw std::invalid_argument("the field of view must lie strictly between 0 and 180 degrees");
+    if (const std::optional<std::string> problem = range_problem(camera.fov_deg, fov_range())) {
+      throw std::invalid_argument("the field of view " + *problem);
     }
     double near = camera.near;
     if (near <= 0.0) {
@@ -87,8 +92,11 @@ CameraView::CameraView(const Camera& camera, const Scene& scene, int width, int 
     return;
   }
 
-  if (!(camera.pixels_per_unit >= 0.0) || !std::isfinite(camera.pixels_per_unit)) {
-    throw std::invalid_argument("the scale must be positive and finite");
+  if (camera.pixels_per_unit != 0.0) {
+    if (const std::optional<std::string> problem =
+            range_problem(camera.pixels_per_unit, scale_range())) {
+      throw std::invalid_argument("the scale " + *problem);
+    }
   }
   view_ = hsr::View::orthographic(forward, camera.target);
   // hsr's orthographic view chooses its own roll; measure the angle between its image x

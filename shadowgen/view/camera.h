@@ -20,8 +20,10 @@
 // scale; 0 fits the scene: the largest scale at which every face vertex lies inside the
 // picture with 5% to spare on the tighter side.
 //
-// An `up` parallel to the direction of view (a top-down view with up = +z) is replaced by
-// +y, or by +z when the view looks along y: north is up on a map.
+// An `up` along the direction of view (a top-down view with up = +z; "along" as
+// shadowgen/model/view_limits.h says) is replaced by +y, or by +z when the view looks
+// along y: north is up on a map. The readers and `render --up` refuse such an up where
+// it is given; this serves the default.
 //
 // The map from view image coordinates to pixels is a similarity (rotation, uniform scale,
 // a y flip, a translation), so pixel areas are scene areas times pixels_per_unit² in
@@ -51,7 +53,8 @@ Camera camera_from_view(const ViewSpec& spec, bool orthographic);
 class CameraView {
  public:
   // Throws std::invalid_argument for a non-finite camera, eye == target, a field of view
-  // outside (0, 180) degrees, a non-positive size, a negative scale.
+  // or a scale (other than 0) outside their ranges (shadowgen/model/view_limits.h), a
+  // non-positive size.
   CameraView(const Camera& camera, const Scene& scene, int width, int height);
 
   const hsr::View& view() const { return view_; }

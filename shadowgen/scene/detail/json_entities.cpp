@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "coordinate_range.h"
+#include "shadowgen/model/view_limits.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -146,16 +147,20 @@ ViewSpec read_view(const JsonValue& value, IdRegistry& ids, Source source) {
   const std::optional<JsonValue> fov = member(entry, "fov_deg", source);
   if (fov) view.fov_deg = fov->number();
   if (view.eye == view.target) entry.value().fail("'eye' and 'target' must differ");
-  const bool parallel = glm::cross(view.target - view.eye, view.up) == glm::dvec3(0.0);
-  if (up && view.up == glm::dvec3(0.0)) up->fail("must not be zero");
-  if (up && parallel) up->fail("must not be parallel to the direction from 'eye' to 'target'");
-  if (parallel) {
-    entry.value().fail(
-        "the default 'up' [0, 0, 1] is parallel to the direction from 'eye' to 'target'; give "
-        "an 'up'");
+  const glm::dvec3 sight = view.target - view.eye;
+  const std::string sight_name = "from 'eye' to 'target'";
+  if (up) {
+    if (const std::optional<std::string> problem = up_problem(sight, view.up, sight_name)) {
+      up->fail(*problem);
+    }
+  } else if (along_sight(sight, view.up)) {
+    entry.value().fail("the default 'up' [0, 0, 1] is parallel to the direction " + sight_name +
+                       "; give an 'up'");
   }
-  if (fov && !(view.fov_deg > 0.0 && view.fov_deg < 180.0)) {
-    fov->fail("must lie strictly between 0 and 180");
+  if (fov) {
+    if (const std::optional<std::string> problem = range_problem(view.fov_deg, fov_range())) {
+      fov->fail(*problem);
+    }
   }
   entry.finish();
   return view;

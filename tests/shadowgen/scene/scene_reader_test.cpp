@@ -267,9 +267,19 @@ std::vector<MalformedCase> malformed_cases() {
       {"ViewEyeIsTarget", view(R"({"id": "v", "eye": [1,2,3], "target": [1,2,3]})"), "",
        "view 'v': views[0] ('v'): 'eye' and 'target' must differ"},
       {"ViewFov180", view(R"({"id": "v", "eye": [1,2,3], "target": [0,0,0], "fov_deg": 180})"), "",
-       "views[0] ('v').fov_deg: must lie strictly between 0 and 180"},
+       "views[0] ('v').fov_deg: must be at least 1e-06 and below 180 degrees"},
       {"ViewFovZero", view(R"({"id": "v", "eye": [1,2,3], "target": [0,0,0], "fov_deg": 0})"), "",
-       "views[0] ('v').fov_deg: must lie strictly between 0 and 180"},
+       "views[0] ('v').fov_deg: must be at least 1e-06 and below 180 degrees"},
+      // A field of view too narrow for a pixel to span more than the rounding of the
+      // eye-target distance: its picture could show nothing (it once drew an empty one).
+      {"ViewFovTooNarrowToShowAnything",
+       view(R"({"id": "v", "eye": [1,2,3], "target": [0,0,0], "fov_deg": 1e-300})"), "",
+       "view 'v': views[0] ('v').fov_deg: must be at least 1e-06 and below 180 degrees"},
+      // An up off the line of sight by less than the rounding of the roll it would fix.
+      {"ViewUpAlmostAlongSight",
+       view(R"({"id": "v", "eye": [0,0,10], "target": [0,0,0], "up": [1e-9,0,1]})"), "",
+       "view 'v': views[0] ('v').up: must not be parallel to the direction from 'eye' to "
+       "'target'"},
       {"ViewUpAlongSight", view(R"({"id": "v", "eye": [0,0,10], "target": [0,0,0]})"), "",
        "views[0] ('v'): the default 'up' [0, 0, 1] is parallel"},
       {"ViewUpZero", view(R"({"id": "v", "eye": [1,0,10], "target": [0,0,0], "up": [0,0,0]})"), "",
