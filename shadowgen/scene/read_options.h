@@ -9,9 +9,10 @@ struct ReadOptions {
   // into triangles), a key the format does not define.
   bool strict = false;
   // Every warning on a line of its own. Otherwise a kind of warning that more than
-  // kWarningsListed faces of one mesh draw is one line: how many, the kind, the first
-  // faces' ids ("56 faces of mesh 'spider': zero area: spider/924, spider/927,
-  // spider/931, ... (--verbose lists all)").
+  // kWarningsListed faces of one mesh, or of a scene's polygons, draw is one line: how
+  // many, the kind, the first faces' ids ("56 faces of mesh 'spider': zero area:
+  // spider/924, spider/927, spider/931, ... (--verbose lists all)"; "1000 polygons: not
+  // planar: p0, p1, p2, ... (--verbose lists all)"). detail/warning_summary.h.
   bool verbose = false;
 };
 

@@ -1,6 +1,7 @@
 #include "shadowgen/scene/scene_reader.h"
 
 #include <iterator>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "detail/mesh_entry.h"
 #include "detail/site_entry.h"
 #include "detail/sun_light.h"
+#include "detail/warning_summary.h"
 #include "detail/weather_entry.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
@@ -44,7 +46,10 @@ class SceneParser {
     check_format(top);
     check_has_faces(top);
     result_.scene.files.push_back(file_);
-    for_each_entry(top, "polygons", [&](const JsonValue& entry) { read_polygon_entry(entry); });
+    detail::WarningSummary polygon_warnings(file_, "polygons");
+    for_each_entry(top, "polygons",
+                   [&](const JsonValue& entry) { read_polygon_entry(entry, polygon_warnings); });
+    polygon_warnings.append_to(result_.warnings, options_.verbose);
     for_each_entry(top, "meshes", [&](const JsonValue& entry) {
       result_.scene.files.push_back(detail::read_mesh_entry(entry, path_, options_, face_ids_,
                                                             result_.scene.faces, result_.warnings));
@@ -113,8 +118,8 @@ class SceneParser {
 
   // Polygon ids and mesh ids share one namespace (a polygon id never contains '/', and a
   // mesh face id always does, so face ids are then unique too); lights and views each
-  // have their own.
-  void read_polygon_entry(const JsonValue& value) {
+  // have their own. The face's warnings go to `summary`.
+  void read_polygon_entry(const JsonValue& value, detail::WarningSummary& summary) {
     JsonObject entry = value.object();
     const std::string id = detail::read_id(entry);
     if (id.find('/') != std::string::npos) {
@@ -124,9 +129,11 @@ class SceneParser {
     entry.for_face(id);
     hsr::Polygon3 polygon = detail::read_polygon(entry);
     entry.finish();
+    std::vector<std::string> face_warnings;
     result_.scene.faces.push_back(detail::build_face(std::move(polygon),
                                                      {id, file_, detail::FaceKind::kPolygon},
-                                                     options_.strict, result_.warnings));
+                                                     options_.strict, face_warnings));
+    for (std::string& line : face_warnings) summary.add(id, std::move(line));
   }
 
   const std::filesystem::path path_;

@@ -1,6 +1,5 @@
 #include "detail/mesh_entry.h"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +10,7 @@
 #include "detail/face_builder.h"
 #include "detail/mesh_reader.h"
 #include "detail/referenced_file.h"
+#include "detail/warning_summary.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
@@ -98,50 +98,6 @@ hsr::Polygon3 face_polygon(const MeshFaceRecord& record, const std::vector<Place
   return polygon;
 }
 
-// A mesh's face warnings, grouped by kind: the text after "file: face 'id': " up to its
-// first " (" or ":" ("zero area", "not planar"), in the order the kinds first appear.
-class WarningSummary {
- public:
-  WarningSummary(std::string file, std::string mesh_id)
-      : file_(std::move(file)), mesh_id_(std::move(mesh_id)) {}
-
-  void add(const std::string& face_id, std::string line) {
-    const std::string prefix = face_message(file_, face_id, "");
-    std::string what = line.rfind(prefix, 0) == 0 ? line.substr(prefix.size()) : line;
-    std::string kind = what.substr(0, std::min(what.find(" ("), what.find(':')));
-    auto it = std::find_if(kinds_.begin(), kinds_.end(),
-                           [&kind](const Kind& k) { return k.name == kind; });
-    if (it == kinds_.end()) it = kinds_.insert(kinds_.end(), Kind{std::move(kind), {}, {}});
-    it->face_ids.push_back(face_id);
-    it->lines.push_back(std::move(line));
-  }
-
-  void append_to(std::vector<std::string>& warnings, bool verbose) const {
-    for (const Kind& kind : kinds_) {
-      const std::size_t n = kind.face_ids.size();
-      if (verbose || n <= static_cast<std::size_t>(kWarningsListed)) {
-        warnings.insert(warnings.end(), kind.lines.begin(), kind.lines.end());
-        continue;
-      }
-      std::string what =
-          std::to_string(n) + " faces of mesh '" + mesh_id_ + "': " + kind.name + ":";
-      for (int i = 0; i < kWarningsListed; ++i)
-        what += " " + kind.face_ids[static_cast<std::size_t>(i)] + ",";
-      warnings.push_back(face_message(file_, "", what + " ... (--verbose lists all)"));
-    }
-  }
-
- private:
-  struct Kind {
-    std::string name;
-    std::vector<std::string> face_ids;
-    std::vector<std::string> lines;
-  };
-  std::string file_;
-  std::string mesh_id_;
-  std::vector<Kind> kinds_;
-};
-
 }  // namespace
 
 std::string read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path,
@@ -166,7 +122,7 @@ std::string read_mesh_entry(const JsonValue& value, const std::filesystem::path&
   for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
     placed[v] = transform ? place(*transform, soup.vertices[v]) : PlacedVertex{soup.vertices[v]};
   }
-  WarningSummary summary(mesh_file, id);
+  WarningSummary summary(mesh_file, "faces of mesh '" + id + "'");
   std::vector<std::string> face_warnings;
   for (std::size_t k = 0; k < soup.faces.size(); ++k) {
     const std::string face_id = id + "/" + std::to_string(k);

@@ -885,6 +885,37 @@ TEST(SceneReaderMeshes, RepeatedWarningsOfOneMeshAreSummarised) {
   EXPECT_NE(few.warnings[0].find("face 'm/0': zero area"), std::string::npos) << few.warnings[0];
 }
 
+// A scene's own polygons are summarised as a mesh's faces are: 1,000 zero-area polygons
+// once gave 1,000 warning lines. One line per kind (zero area, not planar), how many and
+// the first ids; ReadOptions::verbose lists every polygon.
+TEST(SceneReaderPolygons, RepeatedWarningsOfTheScenesPolygonsAreSummarised) {
+  std::string list;
+  for (int i = 0; i < 1000; ++i) {
+    list += (i > 0 ? ", " : "") + polygon("line" + std::to_string(i), "[[0,0,0],[1,0,0],[2,0,0]]");
+  }
+  for (int i = 0; i < 5; ++i) {
+    list += ", " + polygon("bent" + std::to_string(i), "[[0,0,0],[1,0,0],[1,1,1],[0,1,0]]");
+  }
+  list += ", " + polygon("tile", kSquare);
+  const std::string text = polygons(list);
+  const std::string file = scene_path().string();
+
+  const ReadResult summarised = parse(text);
+  ASSERT_EQ(summarised.scene.faces.size(), 1006u);
+  ASSERT_EQ(summarised.warnings.size(), 2u);
+  EXPECT_EQ(summarised.warnings[0],
+            file + ": 1000 polygons: zero area: line0, line1, line2, ... (--verbose lists all)");
+  EXPECT_EQ(summarised.warnings[1],
+            file + ": 5 polygons: not planar: bent0, bent1, bent2, ... (--verbose lists all)");
+
+  const ReadResult all = parse(text, {.verbose = true});
+  ASSERT_EQ(all.warnings.size(), 1005u);
+  EXPECT_EQ(all.warnings[999],
+            file + ": face 'line999': zero area (collinear vertices): kept, with area 0");
+  EXPECT_EQ(all.warnings[1000].rfind(file + ": face 'bent0': not planar (a vertex lies ", 0), 0u)
+      << all.warnings[1000];
+}
+
 TEST(SceneReaderMeshes, ObjKeepsFullDoublePrecision) {
   const ReadResult r =
       read_one_mesh("precise.obj", "v 0.1 0.2 0.3\nv 1.1 0.2 0.3\nv 0.1 1.2 0.3\nf 1 2 3\n");
