@@ -3,6 +3,8 @@
 #include <iostream>
 #include <string>
 
+#include "cli/number_options.h"
+
 namespace shadowgen::cli {
 
 Method MethodArgs::method() const {
@@ -34,13 +36,13 @@ void add_method_options(CLI::App& command, MethodArgs& args) {
                       "with a sampled method: points per face, stratified over its area "
                       "(default " +
                           std::to_string(kDefaultSamples) + ")")
-          ->check(CLI::Range(1, kMaxSamples));
+          ->check(whole_number_in(1, kMaxSamples));
   args.resolution_option =
       command
           .add_option("--resolution", args.resolution,
                       "with --method shadow-map: texels along each side of a depth map (default " +
                           std::to_string(kDefaultResolution) + ")")
-          ->check(CLI::Range(1, kMaxResolution));
+          ->check(whole_number_in(1, kMaxResolution));
 }
 
 void add_lights_option(CLI::App& command, std::vector<std::string>& ids) {
@@ -64,7 +66,7 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress, bo
   if (!generates) command.remove_option(command.get_option("--threads"));
   command.add_flag("--verbose", args.verbose,
                    "every reading warning on its own line (a kind of warning that many faces "
-                   "of one mesh draw is otherwise one line)");
+                   "of one mesh, or many of a scene's polygons, draw is otherwise one line)");
   command.add_flag("-q,--quiet", args.quiet,
                    progress ? "do not print reading warnings or the progress line"
                             : "do not print reading warnings");

@@ -2,6 +2,7 @@
 // against the exact method, the Pareto-optimal ones marked.
 
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/model/shadowed_scene.h"
@@ -62,15 +64,15 @@ struct CompareArgs {
   ReadingArgs reading;
 };
 
+// The largest side of a picture --view draws, and the most instants of a path it draws.
+constexpr int kLargestComparedPictureSide = 1 << 14;
+constexpr int kMostViewInstants = 1 << 20;
+
 // A count from 1 to `max` in `text`, or nullopt.
 std::optional<int> count(const std::string& text, int max) {
-  if (text.empty() || text.size() > 9 ||
-      text.find_first_not_of("0123456789") != std::string::npos) {
-    return std::nullopt;
-  }
-  const int value = std::stoi(text);
-  if (value < 1 || value > max) return std::nullopt;
-  return value;
+  const std::optional<std::int64_t> value = whole_number_within(text, 1, max);
+  if (!value) return std::nullopt;
+  return static_cast<int>(*value);
 }
 
 // NAME[:SAMPLES[:RESOLUTION]]: "exact", "rays:64", "shadow-map:64:1024". Throws UsageError.
@@ -257,11 +259,11 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
                          "the share of (pixel, light) pairs off region boundaries whose lit "
                          "state differs from the exact method's");
   command.add_option("--width", args.width, "with --view: picture width in pixels (default 400)")
-      ->check(CLI::Range(1, 1 << 14))
+      ->check(whole_number_in(1, kLargestComparedPictureSide))
       ->needs(view);
   command
       .add_option("--height", args.height, "with --view: picture height in pixels (default 300)")
-      ->check(CLI::Range(1, 1 << 14))
+      ->check(whole_number_in(1, kLargestComparedPictureSide))
       ->needs(view);
   command
       .add_option("--view-methods", args.view_methods,
@@ -279,7 +281,7 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
                   "with --view, for a scene with sun paths: how many instants of each path to "
                   "draw and compare, spread evenly over it (default 4; 0: none); the per-face "
                   "comparison takes every instant")
-      ->check(CLI::Range(0, 1 << 20))
+      ->check(whole_number_in(0, kMostViewInstants))
       ->needs(view);
   add_output_option(command, args.output,
                     "file to write the table to (replaced whole); default: standard output");

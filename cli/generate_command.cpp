@@ -1,16 +1,19 @@
 // `shadowgen generate`: scenes in, shadowed databases out.
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "cli/progress.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/database.h"
@@ -45,26 +48,22 @@ struct GenerateArgs {
 
 // Upper bound of N in --instants K/N, the database reader's (far more than any scheduler
 // runs at once).
-constexpr std::size_t kMaxShards = 1'000'000;
+constexpr std::int64_t kMaxShards = 1'000'000;
 
 // "K/N", 1 <= K <= N: shard K - 1 of N. Throws UsageError otherwise.
 ShardPlace parse_shard(const std::string& text) {
   const std::size_t slash = text.find('/');
-  const auto whole = [](const std::string& digits, std::size_t& out) {
-    if (digits.empty() || digits.size() > 7 ||
-        digits.find_first_not_of("0123456789") != std::string::npos) {
-      return false;
-    }
-    out = std::stoul(digits);
-    return true;
-  };
-  std::size_t k = 0, n = 0;
-  if (slash == std::string::npos || !whole(text.substr(0, slash), k) ||
-      !whole(text.substr(slash + 1), n) || n < 1 || n > kMaxShards || k < 1 || k > n) {
+  const std::string_view whole(text);
+  const std::optional<std::int64_t> n =
+      slash == std::string::npos ? std::nullopt
+                                 : whole_number_within(whole.substr(slash + 1), 1, kMaxShards);
+  const std::optional<std::int64_t> k =
+      n ? whole_number_within(whole.substr(0, slash), 1, *n) : std::nullopt;
+  if (!k) {
     throw UsageError("--instants " + text +
                      ": expected K/N, shard K of N, 1 <= K <= N <= " + std::to_string(kMaxShards));
   }
-  return {k - 1, n};
+  return {static_cast<std::size_t>(*k - 1), static_cast<std::size_t>(*n)};
 }
 
 // Two spellings of one file compare equal (weakly_canonical resolves "." and ".." and

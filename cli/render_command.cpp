@@ -1,24 +1,18 @@
 // `shadowgen render`: a picture of a shadowed database, as SVG and/or PNG.
 
-#include <array>
-#include <charconv>
-#include <cmath>
-#include <glm/common.hpp>
 #include <glm/vec3.hpp>
-#include <glm/vector_relational.hpp>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "cli/sun_hours_options.h"
-#include "shadowgen/model/coordinate_range.h"
 #include "shadowgen/model/input_error.h"
-#include "shadowgen/model/number_text.h"
+#include "shadowgen/model/view_limits.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/view/camera.h"
 #include "shadowgen/view/pixel_shadows.h"
@@ -48,7 +42,7 @@ constexpr CommandText kRenderText{
 struct RenderArgs {
   std::string database;
   std::string view;             // a view id of the database, or empty
-  std::string eye, target, up;  // X,Y,Z (kPoint, kPoint, kTriple), or empty
+  std::string eye, target, up;  // X,Y,Z (point(), point(), triple()), or empty
   double fov_deg = 45.0;
   bool ortho = false;
   double scale = 0.0;  // orthographic pixels per scene unit; 0 fits the scene
@@ -64,47 +58,24 @@ struct RenderArgs {
   bool by_light = false;            // --by-light: the SVG in layers by light
 };
 
-// "X,Y,Z" as three finite doubles; nullopt when it is not.
-std::optional<glm::dvec3> parse_triple(std::string_view text) {
-  std::array<double, 3> v{};
-  const char* p = text.data();
-  const char* end = text.data() + text.size();
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (i > 0) {
-      if (p == end || *p != ',') return std::nullopt;
-      ++p;
-    }
-    const auto [next, error] = std::from_chars(p, end, v[i]);
-    if (error != std::errc() || !std::isfinite(v[i])) return std::nullopt;
-    p = next;
-  }
-  if (p != end) return std::nullopt;
-  return glm::dvec3(v[0], v[1], v[2]);
-}
-
-// A triple the parser has checked (kTriple), or `fallback` when not given.
+// A triple the parser has checked (triple(), point()), or `fallback` when not given.
 glm::dvec3 triple_or(const std::string& text, const glm::dvec3& fallback) {
   return text.empty() ? fallback : parse_triple(text).value_or(fallback);
 }
 
-const CLI::Validator kTriple(
-    [](std::string& text) {
-      return parse_triple(text) ? std::string() : "expected X,Y,Z (three numbers), got " + text;
-    },
-    "X,Y,Z");
-
-// A point of the scene: a triple within the supported coordinate range.
-const CLI::Validator kPoint(
-    [](std::string& text) {
-      const std::optional<glm::dvec3> p = parse_triple(text);
-      if (!p) return "expected X,Y,Z (three numbers), got " + text;
-      if (glm::any(glm::greaterThan(glm::abs(*p), glm::dvec3(kLargestCoordinate)))) {
-        return text + " is outside the supported range (coordinates of magnitude at most " +
-               shortest(kLargestCoordinate) + ")";
-      }
-      return std::string();
-    },
-    "X,Y,Z");
+// A UsageError naming --up where it is given and fixes no roll: zero, or along the line
+// of sight from --eye to --target (shadowgen/model/view_limits.h, as the readers check a
+// view's 'up'). An eye equal to the target is the camera's error.
+void check_up(const RenderArgs& args) {
+  if (args.up.empty() || !args.view.empty()) return;
+  const glm::dvec3 sight =
+      triple_or(args.target, glm::dvec3(0.0)) - triple_or(args.eye, glm::dvec3(0.0));
+  if (sight == glm::dvec3(0.0)) return;
+  if (const std::optional<std::string> problem =
+          up_problem(sight, triple_or(args.up, glm::dvec3(0.0)), "from --eye to --target")) {
+    throw UsageError("--up " + args.up + ": " + *problem);
+  }
+}
 
 Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
   Camera camera;
@@ -155,6 +126,7 @@ void run_render(const RenderArgs& args) {
     throw UsageError("--svg or --png is required (or both)");
   }
   if (!args.png.empty()) pixel_shadows_of(args);  // its usage errors before any work
+  check_up(args);
   LoadOptions load;
   load.accept = Accept::kDatabase;
   load.lights = args.lights;
@@ -203,26 +175,34 @@ void add_camera_options(CLI::App& command, RenderArgs& args) {
       command.add_option_group("camera", "where to look from: exactly one of these");
   camera->add_option("--view", args.view, "id of one of the database's views");
   CLI::Option* eye =
-      camera->add_option("--eye", args.eye, "eye position X,Y,Z (with --target)")->check(kPoint);
+      camera->add_option("--eye", args.eye, "eye position X,Y,Z (with --target)")->check(point());
   camera->require_option(1);
   CLI::Option* target =
       command.add_option("--target", args.target, "point looked at X,Y,Z (with --eye)")
-          ->check(kPoint);
-  CLI::Option* up =
-      command.add_option("--up", args.up, "up direction X,Y,Z (default 0,0,1)")->check(kTriple);
-  CLI::Option* fov = command.add_option("--fov", args.fov_deg,
-                                        "full vertical field of view in degrees (default 45)");
+          ->check(point());
+  CLI::Option* up = command
+                        .add_option("--up", args.up,
+                                    "up direction X,Y,Z, not zero and not along the line of "
+                                    "sight (default 0,0,1; a view straight down then has +y up)")
+                        ->check(triple());
+  CLI::Option* fov =
+      command.add_option("--fov", args.fov_deg,
+                         "full vertical field of view in degrees, at least 1e-06 (narrower, a "
+                         "pixel would span little more than the rounding of the distance to "
+                         "the target) and below 180 (default 45)");
   eye->needs(target);
   target->needs(eye);
   up->needs(eye);
   fov->needs(eye);
-  fov->check(CLI::Range(0.0, 180.0));
+  fov->check(number_in(fov_range()));
   CLI::Option* ortho = command.add_flag("--ortho", args.ortho,
                                         "orthographic (parallel) projection along target - eye");
   command
       .add_option("--scale", args.scale,
-                  "orthographic: pixels per scene unit (default: fit the scene)")
-      ->check(CLI::PositiveNumber)
+                  "orthographic: pixels per scene unit, from 1e-100 (a pixel then spans half "
+                  "the supported coordinate range) to 1e100 (the smallest face extent) "
+                  "(default: fit the scene)")
+      ->check(number_in(scale_range()))
       ->needs(ortho);
 }
 
@@ -256,12 +236,12 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
                       "with --png --shadows shadow-map: texels along each side of a depth map; "
                       "with --shadows angular: rows of the angular span table (default " +
                           std::to_string(kDefaultResolution) + ")")
-          ->check(CLI::Range(1, kMaxResolution))
+          ->check(whole_number_in(1, kMaxResolution))
           ->needs(png);
   command.add_option("--width", args.width, "picture width in pixels (default 800)")
-      ->check(CLI::Range(1, 1 << 20));
+      ->check(whole_number_in(1, kLargestPictureSide));
   command.add_option("--height", args.height, "picture height in pixels (default 600)")
-      ->check(CLI::Range(1, 1 << 20));
+      ->check(whole_number_in(1, kLargestPictureSide));
   add_lights_option(command, args.lights);
   // A sun-hours map draws one path whole: there is nothing for --lights to choose.
   CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "draw");

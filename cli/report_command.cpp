@@ -1,6 +1,7 @@
 // `shadowgen report`: area, lit area and lit fraction per (face, light).
 
 #include <cstddef>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/energyplus_shading.h"
@@ -23,6 +25,9 @@ constexpr CommandText kReportText{
     "report",
     "Area, lit area and lit fraction per (face, light). A scene is generated first; a "
     "shadowed database is read as it is."};
+
+// The most faces --top lists per light (a practical bound: any scene has fewer).
+constexpr std::int64_t kMostTopFaces = 1'000'000'000;
 
 struct ReportArgs {
   std::string input;                    // a scene (generated first) or a shadowed database
@@ -121,12 +126,12 @@ Command add_report_command(CLI::App& app) {
                        "with --format sun-hours: hours of sun (comma-separated or repeated) "
                        "each giving a column of the area with at least that many (default 2)")
           ->delimiter(',')
-          ->check(CLI::NonNegativeNumber);
+          ->check(number_in(at_least(0.0)));
   CLI::Option* top = command
                          ->add_option("--top", args->top,
                                       "with --format table: most shadowed faces listed per "
                                       "light (default 10, 0 for none)")
-                         ->check(CLI::NonNegativeNumber);
+                         ->check(whole_number_in(0, kMostTopFaces));
   CLI::Option* csv_safe =
       command->add_flag("--csv-safe", args->csv_safe,
                         "CSV: put ' before an id that begins with =, +, -, @, a tab or a "

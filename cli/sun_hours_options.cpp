@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "cli/command.h"
+#include "cli/number_options.h"
 
 namespace shadowgen::cli {
 
@@ -18,7 +19,7 @@ CLI::Option* add_sun_hours_options(CLI::App& command, SunHoursArgs& args, const 
                   "(comma-separated or repeated; the first band begins at 0; default: whole "
                   "steps of round hours, at most 12 bands)")
       ->delimiter(',')
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(above(0.0)))
       ->needs(path);
   return path;
 }

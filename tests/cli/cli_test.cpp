@@ -293,6 +293,52 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(files(), std::vector<std::string>{"scene.json"});
 }
 
+// Every numeric option refuses NaN, an infinity out of its range and a number out of its
+// range while the arguments are parsed: exit 2 before any work, whatever the input (here
+// one that does not exist, which would be exit 1 had anything been read), with its bounds
+// written readably (cli/number_options.h). `--threshold nan` and `--scale nan` once did the
+// work and then failed with exit 1; ranges once printed the largest double as 309 digits.
+TEST_F(Cli, NumericOptionsRefuseNanAndInfinityAtParseTime) {
+  const std::string missing = (dir_ / "missing.json").string();
+  const std::string svg = (dir_ / "out.svg").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;  // the first line of stderr, after "shadowgen: "... or not
+  };
+  const std::vector<Case> cases = {
+      {{"report", missing, "--format", "sun-hours", "--threshold", "nan"},
+       "--threshold: nan is not a number"},
+      {{"report", missing, "--format", "sun-hours", "--threshold", "2,inf"},
+       "--threshold: inf must be finite"},
+      {{"report", missing, "--format", "sun-hours", "--threshold", "-1"},
+       "--threshold: -1 must be at least 0"},
+      {{"report", missing, "--format", "table", "--top", "-1"},
+       "--top: -1 must lie between 0 and 1000000000"},
+      {{"report", missing, "--method", "rays", "--samples", "nan"},
+       "--samples: expected a whole number, got nan"},
+      {{"render", missing, "--eye", "1,2,3", "--target", "0,0,0", "--ortho", "--scale", "nan",
+        "--svg", svg},
+       "--scale: nan is not a number"},
+      {{"render", missing, "--eye", "1,2,3", "--target", "0,0,0", "--fov", "inf", "--svg", svg},
+       "--fov: inf must be at least 1e-06 and below 180 degrees"},
+      {{"render", missing, "--eye", "1,2,3", "--target", "0,0,0", "--width", "0", "--svg", svg},
+       "--width: 0 must lie between 1 and 1048576"},
+      {{"render", missing, "--eye", "nan,2,3", "--target", "0,0,0", "--svg", svg},
+       "--eye: expected X,Y,Z (three numbers), got nan,2,3"},
+      {{"render", missing, "--sun-hours", "day", "--bands", "nan", "--svg", svg},
+       "--bands: nan is not a number"},
+      {{"render", missing, "--sun-hours", "day", "--bands", "1e999", "--svg", svg},
+       "--bands: expected a number, got 1e999"},
+  };
+  for (const Case& c : cases) {
+    const Outcome outcome = run(c.args);
+    EXPECT_EQ(outcome.code, 2) << c.message << "\n" << outcome.err;
+    EXPECT_EQ(outcome.err.rfind(c.message + "\n", 0), 0u) << outcome.err;
+    EXPECT_EQ(outcome.err.find("179769313486231570000"), std::string::npos) << outcome.err;
+  }
+  EXPECT_EQ(files(), std::vector<std::string>{});
+}
+
 TEST_F(Cli, HelpForEachSubcommand) {
   const Outcome top = run({"--help"});
   EXPECT_EQ(top.code, 0);

@@ -251,6 +251,55 @@ TEST_F(RenderCli, UsageErrorsExitTwoAndLeaveNoSvg) {
   }
 }
 
+// A camera whose picture can show nothing is a usage error naming the option, before any
+// work (each once drew an empty picture with exit 0): a field of view whose pixels are
+// below the rounding of the eye-target distance, a scale beyond the coordinate range's
+// (shadowgen/model/view_limits.h).
+TEST_F(RenderCli, ACameraThatCanShowNothingIsAUsageErrorNamingTheOption) {
+  const std::string db = db_.string(), svg = (dir_ / "out.svg").string();
+  const std::vector<std::string> look = {"render",   db,      "--eye", "30,-40,25",
+                                         "--target", "5,5,0", "--svg", svg};
+  auto with = [&look](std::vector<std::string> more) {
+    more.insert(more.begin(), look.begin(), look.end());
+    return more;
+  };
+  const Outcome narrow = run(with({"--fov", "1e-200"}));
+  EXPECT_EQ(narrow.code, 2);
+  EXPECT_EQ(narrow.err.rfind("--fov: 1e-200 must be at least 1e-06 and below 180 degrees\n", 0), 0u)
+      << narrow.err;
+  const Outcome fine = run(with({"--ortho", "--scale", "1e200"}));
+  EXPECT_EQ(fine.code, 2);
+  EXPECT_EQ(
+      fine.err.rfind("--scale: 1e200 must lie between 1e-100 and 1e+100 pixels per unit\n", 0), 0u)
+      << fine.err;
+  const Outcome coarse = run(with({"--ortho", "--scale", "1e-200"}));
+  EXPECT_EQ(coarse.code, 2);
+  EXPECT_EQ(files(), std::vector<std::string>{"courtyard.shadowed.json"});
+  // The ends of the ranges draw.
+  EXPECT_EQ(run(with({"--fov", "1e-6"})).code, 0);
+  EXPECT_EQ(run(with({"--ortho", "--scale", "1e100"})).code, 0);
+}
+
+// An --up that fixes no roll is refused as a view's 'up' is (the same check): zero, or
+// along the line of sight (it once drew with an arbitrary roll).
+TEST_F(RenderCli, AnUpThatFixesNoRollIsAUsageErrorNamingIt) {
+  const std::string db = db_.string(), svg = (dir_ / "out.svg").string();
+  const Outcome zero =
+      run({"render", db, "--eye", "30,-40,25", "--target", "5,5,0", "--up", "0,0,0", "--svg", svg});
+  EXPECT_EQ(zero.code, 2);
+  EXPECT_EQ(zero.err,
+            "shadowgen: --up 0,0,0: must not be zero\nRun with --help for more information.\n");
+  const Outcome along = run(
+      {"render", db, "--eye", "5,5,30", "--target", "5,5,0", "--up", "0,1e-9,-2", "--svg", svg});
+  EXPECT_EQ(along.code, 2);
+  EXPECT_EQ(along.err,
+            "shadowgen: --up 0,1e-9,-2: must not be parallel to the direction from --eye to "
+            "--target\nRun with --help for more information.\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"courtyard.shadowed.json"});
+  // Straight down without --up: the default up gives way to +y, north up on a map.
+  EXPECT_EQ(run({"render", db, "--eye", "5,5,30", "--target", "5,5,0", "--svg", svg}).code, 0);
+}
+
 TEST_F(RenderCli, BadInputExitsOneAndLeavesNoSvg) {
   const std::string svg = (dir_ / "out.svg").string();
   const Outcome unknown = run({"render", db_.string(), "--view", "balcony", "--svg", svg});
