@@ -303,7 +303,7 @@ TEST_F(Cli, NumericOptionsRefuseNanAndInfinityAtParseTime) {
   const std::string svg = (dir_ / "out.svg").string();
   struct Case {
     std::vector<std::string> args;
-    std::string message;  // the first line of stderr, after "shadowgen: "... or not
+    std::string message;  // the first line on stderr
   };
   const std::vector<Case> cases = {
       {{"report", missing, "--format", "sun-hours", "--threshold", "nan"},
