@@ -13,8 +13,11 @@
 namespace shadowgen {
 
 struct ShardFile {
-  std::string file;        // names it in messages
-  ShadowedScene shadowed;  // as read: ShadowedScene::shard set
+  std::string file;  // names it in messages
+  // As the database reader reads it: ShadowedScene::shard set, and nothing beyond the
+  // shard's share (the reader refuses lit polygons in any shard but the first, and lit
+  // areas or nodes of instants not its own), so the join drops nothing.
+  ShadowedScene shadowed;
 };
 
 // Throws InputError naming the file (and the face, where one is to blame) where the

@@ -254,6 +254,11 @@ class DatabaseParser {
         kept.fail("expected 'kept' or 'dropped'");
       }
       path.lit_polygons_kept = kept.string() == "kept";
+      if (shadowed.shard && path.lit_polygons_kept) {
+        kept.fail(
+            "a shard keeps its instants' lit areas alone: \"instant_polygons\" must be "
+            "\"dropped\" (generate --instants does not take --keep-instants)");
+      }
       if (const std::optional<JsonValue> regions = entry.find("regions")) {
         if (regions->string() != "dropped") regions->fail("expected 'dropped' (or no key)");
         path.regions_kept = false;
@@ -480,6 +485,14 @@ class DatabaseParser {
         list.fail("the light is an instant of sun path '" +
                   one_line(path_of(shadowed, light->second)) +
                   "', whose instant polygons are \"dropped\": only its lit areas are kept");
+      }
+      // A shard keeps no instant's polygons (read_sun_paths), so a light it keeps is no
+      // instant of a path: shard 1 alone lights those, and merge takes them from it.
+      if (shadowed.shard && shadowed.shard->index != 0 && !list.array().empty()) {
+        list.fail("is shard " + std::to_string(shadowed.shard->index + 1) + " of " +
+                  std::to_string(shadowed.shard->count) +
+                  ", which holds no lit polygons: the lights that are no instant of a sun "
+                  "path are lit in shard 1 alone");
       }
       shadowed.lit.at(f, light->second) = read_lit(list, face);
       lists_.push_back({light->second, list.place()});

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -197,6 +198,45 @@ TEST_F(ShardCli, MergeRefusesShardsThatAreNotOneWholeRun) {
                            "blocks 1 to 3"),
             std::string::npos)
       << moved.err;
+  EXPECT_EQ(files(), std::vector<std::string>(
+                         {"shard-1.json", "shard-2.json", "shard-3.json", "yard.json"}));
+}
+
+// Each shard holds its own share (docs/scene-format.md, "Shards of a sun path"): lit
+// polygons of the lights that are no instant in shard 1 alone, an instant's lit area alone
+// in any. A shard holding more is refused naming it, the face and the light, and nothing
+// is written: merge once took such polygons from no shard but the first, silently.
+TEST_F(ShardCli, MergeRefusesAShardHoldingWhatIsNotItsShare) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path one = shard(scene, 1, 3), two = shard(scene, 2, 3), three = shard(scene, 3, 3);
+  const fs::path out = dir_ / "merged.json";
+  const nlohmann::json first = nlohmann::json::parse(contents(one));
+  const nlohmann::json second = nlohmann::json::parse(contents(two));
+  ASSERT_EQ(first["faces"][0]["id"], "yard");
+  ASSERT_FALSE(first["faces"][0]["lit"]["lamp"].empty());
+
+  nlohmann::json lamp_in_second = second;
+  lamp_in_second["faces"][0]["lit"]["lamp"] = first["faces"][0]["lit"]["lamp"];
+  write("shard-2.json", lamp_in_second.dump());
+  const Outcome lamp =
+      run({"merge", one.string(), two.string(), three.string(), "-o", out.string()});
+  EXPECT_EQ(lamp.code, 1);
+  EXPECT_EQ(lamp.err, "shadowgen: " + two.string() +
+                          ": face 'yard': faces[0].lit['lamp']: is shard 2 of 3, which holds no "
+                          "lit polygons: the lights that are no instant of a sun path are lit in "
+                          "shard 1 alone\n");
+
+  nlohmann::json kept = second;
+  kept["sun_paths"][0]["instant_polygons"] = "kept";
+  write("shard-2.json", kept.dump());
+  const Outcome polygons_kept =
+      run({"merge", one.string(), two.string(), three.string(), "-o", out.string()});
+  EXPECT_EQ(polygons_kept.code, 1);
+  EXPECT_EQ(polygons_kept.err,
+            "shadowgen: " + two.string() +
+                ": sun path 'march21': sun_paths[0] ('march21').instant_polygons: a shard keeps "
+                "its instants' lit areas alone: \"instant_polygons\" must be \"dropped\" "
+                "(generate --instants does not take --keep-instants)\n");
   EXPECT_EQ(files(), std::vector<std::string>(
                          {"shard-1.json", "shard-2.json", "shard-3.json", "yard.json"}));
 }
