@@ -61,10 +61,13 @@ std::string readable_fraction(double value) {
   return number_text(value, std::chars_format::fixed, 4);
 }
 
-// The lit polygons are the lit region up to rounding, which can put a fully lit face's
-// polygons a hair over the face's own area (lit fraction 1.0000000000000007). An excess
-// within 2^-40 of the area (far above such rounding, far below any real error) is
-// clamped, so a report never shows more lit than there is; a larger one is left visible.
+// Generation gives a part lit whole the part itself and no part more lit area than its
+// own (shadows/detail/lit_parts.h), but a face of several parts sums its lit polygons in
+// another order than its parts, which can round a hair over the face's area (lit fraction
+// 1.0000000000000007), and a database written by an older generator or by hand may hold
+// polygons rounded outwards. An excess within 2^-40 of the area (far above such rounding,
+// far below any real error) is clamped, so a report never shows more lit than there is;
+// a larger one is left visible.
 double clamped_lit_area(double lit, double face_area) {
   constexpr double kRoundingExcess = 0x1p-40;
   if (lit > face_area && lit - face_area <= kRoundingExcess * face_area) return face_area;

@@ -8,24 +8,11 @@
 #include "clipper/clip.h"
 #include "hsr/area.h"
 #include "hsr/collinearity.h"
+#include "hsr/perimeter.h"
 #include "numbers.h"
 
 namespace shadowgen::detail {
 namespace {
-
-double perimeter(const hsr::Loop3& loop) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    sum += glm::length(loop[(i + 1) % loop.size()] - loop[i]);
-  }
-  return sum;
-}
-
-double perimeter(const hsr::Polygon3& polygon) {
-  double sum = perimeter(polygon.outer);
-  for (const hsr::Loop3& hole : polygon.holes) sum += perimeter(hole);
-  return sum;
-}
 
 double rounding_area_bound(const clipper::PolygonWithHoles2& polygon) {
   double sum = clipper::rounding_area_bound(polygon.outer);
@@ -87,7 +74,7 @@ LitChecker::LitChecker(const Face& face) : several_parts_(face.parts.size() > 1)
     const glm::dvec3 magnitude = glm::max(glm::abs(lo), glm::abs(hi));
     part.extent = std::max({size.x, size.y, size.z});
     part.reach = kRoundingReach * (part.extent + std::max({magnitude.x, magnitude.y, magnitude.z}));
-    part.perimeter = perimeter(polygon);
+    part.perimeter = hsr::perimeter(polygon);
     const double area = hsr::area(polygon);
     part.tilt_reach =
         area > 0.0 ? kRoundingReach * part.extent * part.extent * part.extent / (2.0 * area) : 0.0;
@@ -175,7 +162,7 @@ std::optional<LitProblem> LitChecker::check_loops_and_planes(
 double LitChecker::area_tolerance(std::span<const LitPolygon> lit) const {
   double tolerance = 0.0;
   for (const Part& part : parts_) tolerance += part.reach * part.perimeter;
-  for (const LitPolygon& p : lit) tolerance += parts_[p.part].reach * perimeter(p.polygon);
+  for (const LitPolygon& p : lit) tolerance += parts_[p.part].reach * hsr::perimeter(p.polygon);
   return tolerance;
 }
 
@@ -215,7 +202,7 @@ std::optional<LitProblem> LitChecker::check_inside(std::span<const LitPolygon> l
   for (const std::size_t k : on_part) {
     clips.push_back(to_chart(part, lit[k].polygon));
     lit_sum += clipper::area(clips.back());
-    tolerance += part.reach * perimeter(lit[k].polygon) + rounding_area_bound(clips.back());
+    tolerance += part.reach * hsr::perimeter(lit[k].polygon) + rounding_area_bound(clips.back());
   }
   const double covered = clipper::area(clipper::clip(part.flat_polygon, clips).inside);
   if (lit_sum - covered <= tolerance) return std::nullopt;
@@ -234,7 +221,7 @@ std::optional<LitProblem> LitChecker::diagnose_inside(std::span<const LitPolygon
   for (const std::size_t k : on_part) {
     const clipper::PolygonWithHoles2 flat = to_chart(part, lit[k].polygon);
     const double outside = clipper::area(clipper::clip(flat, part.flat_polygon).outside);
-    const double own = part.reach * (part.perimeter + perimeter(lit[k].polygon)) +
+    const double own = part.reach * (part.perimeter + hsr::perimeter(lit[k].polygon)) +
                        rounding_area_bound(flat) + rounding_area_bound(part.flat_polygon);
     if (outside > own) {
       return LitProblem{k, "lies outside its face: an area of " + short_number(outside * to_3d, 6) +

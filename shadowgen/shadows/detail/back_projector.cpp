@@ -23,21 +23,26 @@ BackProjector::BackProjector(const hsr::View& view, const hsr::Polygon3& polygon
   cast_reach_ = reach_of_cast(polygon);
 }
 
-double BackProjector::reach_of_cast(const hsr::Polygon3& polygon) const {
+double BackProjector::reach_of_cast(const hsr::Polygon3& polygon) {
   // The window's corners (±1) are image points of a perspective view's fragments too.
   double image = view_.is_perspective() ? 1.0 : 0.0;
   for (const auto& [q, v] : original_) image = std::max({image, std::abs(q.x), std::abs(q.y)});
+  if (view_.is_perspective()) {
+    for (const glm::dvec3& v : polygon.outer) {
+      farthest_ = std::max(farthest_, glm::length(v - view_.eye()));
+    }
+  }
+  return reach_of(image);
+}
+
+double BackProjector::reach_of(double image) const {
   const double moved = 16.0 * 0x1p-53 * image;
   if (!view_.is_perspective()) {
     const double sine = std::abs(glm::dot(normal_, view_.forward()));
     return sine > 0.0 ? 2.0 * moved / sine : INFINITY;
   }
-  double farthest = 0.0;
-  for (const glm::dvec3& v : polygon.outer) {
-    farthest = std::max(farthest, glm::length(v - view_.eye()));
-  }
   const double height = std::abs(offset_from_eye_);
-  return height > 0.0 ? 2.0 * moved * farthest * farthest / height : INFINITY;
+  return height > 0.0 ? 2.0 * moved * farthest_ * farthest_ / height : INFINITY;
 }
 
 glm::dvec3 BackProjector::onto_plane(const glm::dvec3& p) const {

@@ -36,13 +36,17 @@ class BackProjector {
   // as exact: hsr::plane_of gives its normal to a few ulps, a sliver's too (a sliver's
   // plane once came out 5.6e-7 off, and its lit polygon lay 480 of its widths beside it).
   double cast_reach() const { return cast_reach_; }
+  // The same bound for image points of magnitude at most `image` (the points at hand, such
+  // as a lit region's clipped to a perspective view's window, rather than the part's
+  // vertices, which beside the eye project far out or, on its plane, to infinity).
+  double reach_of(double image) const;
 
   // A point whose ray misses the plane (parallel to it) is left out.
   hsr::Loop3 lift(const clipper::Loop2& loop) const;
   hsr::Polygon3 lift(const clipper::PolygonWithHoles2& p) const;
 
  private:
-  double reach_of_cast(const hsr::Polygon3& polygon) const;
+  double reach_of_cast(const hsr::Polygon3& polygon);  // sets farthest_
   glm::dvec3 onto_plane(const glm::dvec3& p) const;
 
   const hsr::View& view_;
@@ -51,6 +55,7 @@ class BackProjector {
   glm::dvec3 anchor_{0.0};           // the part's first vertex
   double offset_from_anchor_ = 0.0;  // the plane: normal·(p − anchor) = offset_from_anchor_
   double cast_reach_ = 0.0;
+  double farthest_ = 0.0;  // perspective: the part's farthest outer vertex from the eye
   std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original_;
 };
 

@@ -1,5 +1,7 @@
 #include "light_view_pass.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "back_projector.h"
@@ -38,6 +40,16 @@ void cast_back(const Receivers& receivers, std::size_t k, const hsr::View& view,
   if (back.cast_reach() > 0.5 * part_reach(polygon)) part.may_stray = true;
   const clipper::PolygonSet2 merged =
       on_part(receivers.part(k), [&] { return clipper::merge_adjacent(lit); });
+  // The rounding of the lit points cast back (lit_parts.h, LitPart::lit_reach).
+  double image = 0.0;
+  const auto magnitude_of = [&image](const clipper::Loop2& loop) {
+    for (const clipper::Point2& q : loop) image = std::max({image, std::abs(q.x), std::abs(q.y)});
+  };
+  for (const clipper::PolygonWithHoles2& p : merged) {
+    magnitude_of(p.outer);
+    for (const clipper::Loop2& hole : p.holes) magnitude_of(hole);
+  }
+  part.lit_reach = std::max(part.lit_reach, back.reach_of(image));
   std::vector<hsr::Polygon3> polygons;
   for (const clipper::PolygonWithHoles2& p : merged) {
     hsr::Polygon3 detail = back.lift(p);

@@ -1,14 +1,47 @@
 #include "lit_parts.h"
 
+#include <algorithm>
+#include <cmath>
+#include <span>
 #include <utility>
 
 #include "grazing_light.h"
+#include "hsr/area.h"
 #include "hsr/parallel.h"
+#include "hsr/perimeter.h"
 #include "part_failure.h"
 #include "part_plane.h"
 
 namespace shadowgen::detail {
 namespace {
+
+// Whether `lit`, the lit polygons of `part`, cover it whole as far as rounding can tell.
+// The exact lit region lies within the part, so lit polygons whose area reaches the
+// part's own are rounded outwards, and whatever they leave unlit is thinner than that
+// rounding: the part is lit whole. A shortfall is taken for rounding too where both
+// bounds allow it: the rounding of the lit outline, each lit vertex within `reach` of
+// the exact boundary, which sweeps at most reach × its perimeter of area; and 16 u of the
+// part's area (u = 2^-53), what the area's own sums round by. The first bound alone is
+// far too wide where a lamp sees a large face at a grazing angle (BackProjector's reach is
+// a worst case over the whole image: a wedge of shadow over 6 % of a ground would pass).
+// reach is the views' lit_reach, or at least 16 u of the part's magnitude (a hot pixel of
+// 12 u, clipper/clip.h, and the roundings of lifting chart points back onto the plane),
+// which covers lit polygons worked out in the part's own chart (grazing light, views
+// united or cut to the part).
+bool lit_whole(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part, double lit_reach) {
+  constexpr double kUnit = 0x1p-53;
+  const double part_area = hsr::area(part);
+  const double shortfall = part_area - hsr::area(lit);
+  if (shortfall <= 0.0) return true;
+  double magnitude = 0.0;
+  for (const glm::dvec3& v : part.outer) {
+    magnitude = std::max({magnitude, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  }
+  const double reach = std::max(lit_reach, 16.0 * kUnit * magnitude);
+  double boundary = 0.0;
+  for (const hsr::Polygon3& p : lit) boundary += hsr::perimeter(p);
+  return shortfall <= 16.0 * kUnit * part_area && shortfall <= reach * boundary;
+}
 
 // One part's lit polygons: the views joined, cut to the part where rounding carried them
 // out of it.
@@ -27,6 +60,7 @@ std::vector<hsr::Polygon3> joined(LitPart lit, const hsr::Polygon3& polygon,
   if (!polygons.empty() && (lit.may_stray || !inside_box_of(polygons, polygon))) {
     polygons = within_part(polygons, polygon, plane);
   }
+  if (!polygons.empty() && lit_whole(polygons, polygon, lit.lit_reach)) return {polygon};
   return polygons;
 }
 
@@ -48,6 +82,7 @@ void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
       return lit_by_grazing_light(k, polygons, planes, receivers.coplanar(), light);
     })};
     lit[part].may_stray = false;  // worked out in the part's own plane
+    lit[part].lit_reach = 0.0;
   }
 }
 

@@ -21,6 +21,10 @@ struct LitPart {
   // Some view's rounding, cast back, may carry lit points beyond the part's reach
   // (BackProjector::cast_reach): the join cuts them to the part.
   bool may_stray = false;
+  // How far the views' rounding, cast back, can move a lit point within the part's plane:
+  // the largest BackProjector::reach_of the views' lit image points (0 where the lit region
+  // was worked out in the part's own plane).
+  double lit_reach = 0.0;
 };
 
 // Receivers the light grazes: cast back from its image, their lit region would carry the
@@ -31,7 +35,9 @@ struct LitPart {
 void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit, LightStats& stats);
 
 // The lit polygons of every face (parts.face_count lists), each part's views joined into
-// one region that stays within the part. Counts them in stats.lit_polygons.
+// one region that stays within the part. A part lit whole, as far as rounding can tell,
+// gets the part itself as its one lit polygon, so that its lit area is the part's own area,
+// the same number (lit_whole in lit_parts.cpp says when). Counts them in stats.lit_polygons.
 std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::vector<LitPart> lit,
                                                    LightStats& stats);
 
