@@ -8,6 +8,7 @@
 
 #include "detail/face_builder.h"
 #include "detail/json_entities.h"
+#include "detail/lamp_depths.h"
 #include "detail/mesh_entry.h"
 #include "detail/site_entry.h"
 #include "detail/sun_light.h"
@@ -60,6 +61,7 @@ class SceneParser {
       result_.scene.views.push_back(detail::read_view(entry, view_ids_, detail::Source::kScene));
     });
     top.finish();
+    detail::check_lamp_depths(result_.scene);
     return std::move(result_);
   }
 

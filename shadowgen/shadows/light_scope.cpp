@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "detail/face_parts.h"
+#include "hsr/polygon_distance.h"
 #include "shadowgen/shadows/light_views.h"
 
 namespace shadowgen {
@@ -28,7 +29,7 @@ std::vector<PartRole> part_roles(std::span<const hsr::Polygon3> polygons,
   std::vector<double> distance(ranged ? n : 0);
   double reach = 0.0;  // the farthest receiver vertex from the light
   for (std::size_t i = 0; ranged && i < n; ++i) {
-    distance[i] = distance_to_polygon(light.position, polygons[i], planes[i]);
+    distance[i] = hsr::distance_to_polygon(light.position, polygons[i], planes[i]);
     if (distance[i] > light.range->end) continue;
     for (const glm::dvec3& v : polygons[i].outer) {
       reach = std::max(reach, glm::length(v - light.position));

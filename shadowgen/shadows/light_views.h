@@ -15,13 +15,10 @@ namespace shadowgen {
 // Point light: the 90-degree frusta along ±x, ±y, ±z around it that contain part of some
 // polygon, with a near distance below the distance to every polygon not in a plane
 // through the light, so nothing of the scene is cut off at the near plane (a point of a
-// frustum at distance r from the light has depth at least r/√3).
+// frustum at distance r from the light has depth at least r/√3) where the light keeps to
+// the supported range of depths (shadowgen/model/coordinate_range.h, lamp_near_distance;
+// the scene reader refuses a light that does not).
 std::vector<hsr::View> light_views(const Light& light, std::span<const hsr::Polygon3> polygons,
                                    std::span<const hsr::Plane3> planes, const glm::dvec3& centre);
-
-// Distance from p to the polygon's region (outer minus holes treated as the outer's
-// region: a lower bound, which is what range culling and near planes need).
-double distance_to_polygon(const glm::dvec3& p, const hsr::Polygon3& polygon,
-                           const hsr::Plane3& plane);
 
 }  // namespace shadowgen

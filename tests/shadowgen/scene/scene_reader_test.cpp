@@ -563,6 +563,40 @@ TEST(SceneReader, DirectionsOfAnyLengthKeepTheirDirectionExactly) {
   EXPECT_EQ(r.scene.lights[0].direction, glm::dvec3(3.0 / 16, -4.0 / 16, 12.0 / 16));
 }
 
+// A point light's views see from a near distance never below 2^-450 of their farthest
+// vertex's distance (shadowgen/model/coordinate_range.h): a speck 1e-68 wide with a lamp
+// 1e-68 above it, in a scene 2e68 wide, was cut off by that near plane, lit nowhere and
+// shadowing nothing, the walls of such a speck's box lit from behind. The nearest face
+// must be at least 1.19e-135 of the farthest vertex's distance from the lamp, or the
+// scene is refused; at twice that it is read (and its shadows match the exact oracle's:
+// shadows/shadow_extremes_test.cpp, ExtremesRange.ALampAHairAboveAFaceInASceneOfMixedScales).
+TEST(SceneReader, APointLightNearerToAFaceThanItsDepthRangeAllowsIsRefused) {
+  const auto lamp_over_speck = [](const std::string& half_width) {
+    const std::string g = half_width;
+    return scene(
+        R"("polygons": [)" +
+        polygon("ground", "[[-" + g + ",-" + g + ",0],[" + g + ",-" + g + ",0],[" + g + "," + g +
+                              ",0],[-" + g + "," + g + ",0]]") +
+        ", " +
+        polygon("speck", "[[0,0,1e-68],[1e-68,0,1e-68],[1e-68,1e-68,1e-68],[0,1e-68,1e-68]]") +
+        R"(], "lights": [{"id": "lamp", "type": "point", "position": [5e-69, 5e-69, 2e-68]}])");
+  };
+  try {
+    parse(lamp_over_speck("1e68"));
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), scene_path().string());
+    EXPECT_EQ(e.face_id(), "speck");
+    EXPECT_EQ(e.problem(),
+              "light 'lamp' is 1e-68 from this face and 1.414213562373095e+68 from the farthest "
+              "vertex, a ratio of 7.07e-137: a point light's nearest face must be at least "
+              "1.19e-135 of that (the supported range of depths)");
+  }
+  // 1e-68 / (√2 × 2.9e66) is 2.44e-135, twice the least: read.
+  const ReadResult inside = parse(lamp_over_speck("2.9e66"));
+  EXPECT_EQ(inside.scene.faces.size(), 2u);
+}
+
 TEST(SceneReader, RangeDefaults) {
   const ReadResult r = parse(scene(
       R"("lights": [{"id": "l", "type": "point", "position": [0,0,0], "range": {"end": 3}}])"));

@@ -555,6 +555,44 @@ TEST(ExtremesRange, LitFractionsDoNotDependOnTheScaleUpToTheRangeEnds) {
   }
 }
 
+// A lamp 1e-6 of a box's size above its top, the box scaled down and a ground scaled up
+// around it. A point light's near distance never goes below 2^-450 of its farthest
+// vertex's (shadowgen/model/coordinate_range.h): with a box of 1e-68 on a ground of 1e68
+// it cut the box off, which was then lit nowhere and shadowed nothing (at 1e-66 and 1e66
+// it cut the top away and lit the walls, which face away from the lamp). The scene reader
+// now refuses a lamp whose nearest face is nearer than 1.19e-135 of its farthest vertex
+// (SceneReader.APointLightNearerToAFaceThanItsDepthRangeAllowsIsRefused); up to that
+// bound (at twice it with boxes of 1e-70 and 1e-99) every lit region matches the exact
+// oracle's. (The box's shadow is then a speck of the ground, lit to every digit.)
+TEST(ExtremesRange, ALampAHairAboveAFaceInASceneOfMixedScales) {
+  const double least = 2.0 * std::sqrt(3.0) * 0x1p-450;
+  for (const double small : {1e-30, 1e-60, 1e-66, 1e-70, 1e-99}) {
+    Scene scene;
+    BoxSpec box;
+    box.height = 1.25;
+    box.with_bottom = false;
+    add_box(scene, "box", box);
+    scene = scaled(scene, small);
+    scene.lights = {point_light("lamp", {0.0, 0.0, (1.25 + 1e-6) * small})};
+    const double nearest = scene.lights[0].position.z - 1.25 * small;
+    // The ground's corners at twice the least ratio, or at 1e60, where the oracle's
+    // squared areas still convert to doubles.
+    const double wide = std::min(1e60, nearest / (2.0 * least * std::sqrt(2.0)));
+    add_face(scene, "ground", ground(-wide, -wide, wide, wide));
+    const OracleCheck check = check_against_oracle(scene, kTolerance);
+    std::printf("[ a box %-6.3g under a lamp %.3g above, ground %.3g wide ] %s\n", small, nearest,
+                2 * wide, summary(check).c_str());
+    EXPECT_EQ(check.failures, 0u) << "box " << small << "\n" << check.report;
+    EXPECT_EQ(check.invalid, 0u) << "box " << small << "\n" << check.invalid_report;
+    const std::vector<ReportRow> rows = report_rows(generate_shadows(scene).shadowed);
+    ASSERT_EQ(rows.size(), 6u);  // the top, four walls, the ground
+    EXPECT_EQ(rows[0].lit_fraction, 1.0) << "the top, under the lamp";
+    for (std::size_t wall = 1; wall <= 4; ++wall) {
+      EXPECT_EQ(rows[wall].lit_fraction, 0.0) << "a wall, facing away from the lamp";
+    }
+  }
+}
+
 // Lamps a hair above the ground and above a box's top, from 1e-6 down to 1e-100: the
 // faces under them are grazed (their lit regions come from their planes), and the top
 // 1e-12 below a lamp still occludes the ground (a near-plane floor of 1e-12 of the
