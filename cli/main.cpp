@@ -18,6 +18,7 @@
 #include "cli/out_of_memory.h"
 #include "clipper/clip.h"
 #include "hsr/hidden_surface.h"
+#include "shadowgen/model/input_error.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/shadows/generate.h"
@@ -33,11 +34,11 @@ int fail(const std::exception& e, int code) {
   return code;
 }
 
-// The inputs the subcommand was given: its positional "input", or generate's "scene"
-// files, joined by ", ".
+// The inputs the subcommand was given: its positional "input", generate's "scene" files
+// or render's "database", joined by ", ".
 std::string inputs_of(const CLI::App& parser) {
   std::string names;
-  for (const char* name : {"input", "scene"}) {
+  for (const char* name : {"input", "scene", "database"}) {
     const CLI::Option* option = parser.get_option_no_throw(name);
     if (option == nullptr) continue;
     for (const std::string& file : option->results()) names += (names.empty() ? "" : ", ") + file;
@@ -51,8 +52,8 @@ int run(const shadowgen::cli::Command& command) {
     command.run();
   } catch (const std::bad_alloc&) {
     // out_of_memory.h keeps the unwinding to here from ending the program.
-    std::cerr << "shadowgen: " << shadowgen::one_line(inputs_of(*command.parser))
-              << ": out of memory: this input needs more memory than the process may use\n";
+    std::cerr << "shadowgen: " << shadowgen::one_line(inputs_of(*command.parser)) << ": "
+              << shadowgen::kOutOfMemoryProblem << '\n';
     return kExitBadInput;
   } catch (const shadowgen::cli::UsageError& e) {
     std::cerr << "shadowgen: " << e.what() << "\nRun with --help for more information.\n";

@@ -1,12 +1,11 @@
 #include "shadowgen/json/document.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <sstream>
 #include <system_error>
 
 #include "detail/json_parse.h"
@@ -57,8 +56,13 @@ class FormatScanner {
   bool parse_error(std::size_t position, const std::string& last_token,
                    const nlohmann::detail::exception& e) {
     problem = detail::describe_parse_error(locate_, position, last_token, e.id, e.what());
+    error_end = position;
     return false;
   }
+
+  // The bytes read up to a syntax error (a NUL byte among them ends the text for the
+  // parser); nullopt where there was none.
+  std::optional<std::size_t> error_end;
 
  private:
   bool value(const char* what) {
@@ -91,49 +95,100 @@ class FormatScanner {
   bool expecting_format_ = false;
 };
 
+// InputError naming `path` for a scan that found no format: what the scanner found, or
+// the NUL byte that ended the text for the parser where one did (`text`: the text scanned,
+// or the stream it was read from).
+template <class Text>
+[[noreturn]] void refuse(const FormatScanner& scanner, Text& text,
+                         const std::filesystem::path& path) {
+  std::optional<std::string> nul;
+  if (scanner.error_end) nul = detail::nul_problem(text, *scanner.error_end);
+  throw InputError(path.string(), "", nul.value_or(scanner.problem));
+}
+
 }  // namespace
 
-std::ifstream open_input_file(const std::filesystem::path& path, std::string_view what) {
+std::optional<std::string> unreadable_input(const std::filesystem::path& path) {
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path.string(), "", "is a folder, not a file");
+  switch (std::filesystem::status(path, error).type()) {  // of what a link leads to
+    case std::filesystem::file_type::not_found:
+      return "no such file";
+    case std::filesystem::file_type::directory:
+      return "is a folder, not a file";
+    case std::filesystem::file_type::character:
+      return "is not a regular file (a character device)";
+    case std::filesystem::file_type::block:
+      return "is not a regular file (a block device)";
+    case std::filesystem::file_type::socket:
+      return "is not a regular file (a socket)";
+    default:  // a regular file, a FIFO, or one whose kind is unknown: opening it tells
+      return std::nullopt;
+  }
+}
+
+std::ifstream open_input_file(const std::filesystem::path& path, std::string_view what) {
+  if (std::optional<std::string> why = unreadable_input(path)) {
+    throw InputError(path.string(), "", *why);
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InputError(path.string(), "",
-                     std::filesystem::exists(path, error) ? "cannot open the " + std::string(what)
-                                                          : "no such file");
-  }
+  if (!in) throw InputError(path.string(), "", "cannot open the " + std::string(what));
   return in;
 }
 
-std::string read_text_file(const std::filesystem::path& path, std::string_view what) {
-  std::ostringstream text;
+namespace {
+
+[[noreturn]] void throw_too_large(const std::filesystem::path& path, std::string_view what,
+                                  std::size_t max_bytes) {
+  throw InputError(path.string(), "",
+                   "is larger than a " + std::string(what) + " can be (more than " +
+                       std::to_string(max_bytes) + " bytes)");
+}
+
+// Appends to `text` what `in` reads up to its end, in pieces, so that a stream without
+// end is refused once `text` would hold more than `max_bytes`.
+void read_rest(std::istream& in, std::string& text, const std::filesystem::path& path,
+               std::string_view what, std::size_t max_bytes) {
+  constexpr std::size_t kPiece = std::size_t{1} << 16;
+  std::string piece(kPiece, '\0');
+  while (in) {
+    in.read(piece.data(), static_cast<std::streamsize>(kPiece));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (got > max_bytes - std::min(max_bytes, text.size())) throw_too_large(path, what, max_bytes);
+    text.append(piece, 0, got);
+  }
+  if (in.bad()) {
+    throw InputError(
+        path.string(), "",
+        path == "-" ? "cannot read standard input" : "cannot read the " + std::string(what));
+  }
+}
+
+}  // namespace
+
+std::string read_text_file(const std::filesystem::path& path, std::string_view what,
+                           std::size_t max_bytes) {
+  std::string text;
   if (path == "-") {
-    text << std::cin.rdbuf();
-    if (std::cin.bad()) throw InputError("-", "", "cannot read standard input");
-    return std::move(text).str();
+    read_rest(std::cin, text, path, what, max_bytes);
+    return text;
   }
   std::ifstream in = open_input_file(path, what);
   std::error_code error;
-  // A regular file is read into a string of its size: a stream's growing buffer would
-  // hold up to twice a large database at once.
-  std::string whole;
+  // A regular file is read into a string of its size: a growing buffer would hold up to
+  // twice a large database at once.
   if (std::filesystem::is_regular_file(path, error)) {
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (!error) {
-      whole.resize(static_cast<std::size_t>(size));
-      in.read(whole.data(), static_cast<std::streamsize>(size));
-      whole.resize(static_cast<std::size_t>(in.gcount()));  // shorter if it shrank meanwhile
+      if (size > max_bytes) throw_too_large(path, what, max_bytes);
+      text.resize(static_cast<std::size_t>(size));
+      in.read(text.data(), static_cast<std::streamsize>(size));
+      text.resize(static_cast<std::size_t>(in.gcount()));  // shorter if it shrank meanwhile
       if (in.bad()) throw InputError(path.string(), "", "cannot read the " + std::string(what));
       in.clear();
     }
   }
-  text << in.rdbuf();  // the rest: all of a file that is not regular, what a file grew by
-  if (in.bad()) throw InputError(path.string(), "", "cannot read the " + std::string(what));
-  if (whole.empty()) return std::move(text).str();
-  whole += std::move(text).str();
-  return whole;
+  read_rest(in, text, path, what, max_bytes);  // all of a stream, what a file grew by
+  return text;
 }
 
 std::string document_format(const std::string& json_text, const std::filesystem::path& path) {
@@ -141,7 +196,7 @@ std::string document_format(const std::string& json_text, const std::filesystem:
     return detail::line_column(std::string_view(json_text), offset);
   });
   Json::sax_parse(json_text, &scanner);
-  if (!scanner.format) throw InputError(path.string(), "", scanner.problem);
+  if (!scanner.format) refuse(scanner, json_text, path);
   return *scanner.format;
 }
 
@@ -149,7 +204,7 @@ std::string file_format(const std::filesystem::path& path) {
   std::ifstream in = open_input_file(path);
   FormatScanner scanner([&in](std::size_t offset) { return detail::line_column(in, offset); });
   Json::sax_parse(in, &scanner);
-  if (!scanner.format) throw InputError(path.string(), "", scanner.problem);
+  if (!scanner.format) refuse(scanner, in, path);
   return *scanner.format;
 }
 

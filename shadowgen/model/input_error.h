@@ -7,8 +7,15 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace shadowgen {
+
+// The problem of an input that needs more memory than the process may use (`ulimit -v`):
+// the command line says it of the input it read when nothing nearer named the file, a
+// reader of a file the input names (a weather file) says it of that file.
+inline constexpr std::string_view kOutOfMemoryProblem =
+    "out of memory: this input needs more memory than the process may use";
 
 class InputError : public std::runtime_error {
  public:

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <new>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -261,7 +262,12 @@ class EpwParser {
 }  // namespace
 
 Weather read_epw(const std::filesystem::path& path) {
-  return parse_epw(read_text_file(path, "weather file"), path.string());
+  try {
+    return parse_epw(read_text_file(path, "weather file", kLargestEpwFile), path.string());
+  } catch (const std::bad_alloc&) {
+    // Said here, where the file is known: the command line would name its own input.
+    throw InputError(path.string(), "", std::string(kOutOfMemoryProblem));
+  }
 }
 
 Weather parse_epw(std::string_view text, const std::string& file) {

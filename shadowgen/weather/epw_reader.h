@@ -20,6 +20,7 @@
 // A UTF-8 byte order mark and CRLF (or CR) line endings are accepted; empty lines may end
 // the file. Every problem is an InputError naming the file and the line.
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -28,6 +29,24 @@
 
 namespace shadowgen::weather {
 
+// The most bytes an EPW file is read to. An EPW file has a known size: a UTF-8 byte order
+// mark, 8 header lines and one row per hour of at most a leap year, 366 × 24 = 8,784 rows.
+// A header line is given up to 64 KiB (its free text, COMMENTS 1 and 2, makes the longest;
+// real ones hold under 2,000 bytes), a row up to 1 KiB (35 fields of numbers and one of
+// data source flags; real rows hold under 250 bytes), line ends included: 9,519,107 bytes
+// in all. A file larger than that is refused before it is read, and a stream (a FIFO,
+// standard input) once that much has come, so a path that never ends (a pipe fed without
+// end) is not read on.
+inline constexpr std::size_t kLongestEpwHeaderLine = std::size_t{1} << 16;
+inline constexpr std::size_t kLongestEpwRow = std::size_t{1} << 10;
+inline constexpr std::size_t kLargestEpwFile =
+    3 + 8 * kLongestEpwHeaderLine + std::size_t{366} * 24 * kLongestEpwRow;
+static_assert(kLargestEpwFile == 9'519'107);
+
+// The file at `path` ("-": standard input), read whole up to kLargestEpwFile bytes. Every
+// error names the file: one it cannot read (shadowgen/json/document.h, read_text_file: a
+// folder, a device, larger than kLargestEpwFile), one too large for the memory the
+// process may use (kOutOfMemoryProblem), and parse_epw's.
 Weather read_epw(const std::filesystem::path& path);
 
 // The same from the file's text; `file` names it in messages and in Weather::file.

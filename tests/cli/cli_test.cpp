@@ -252,6 +252,44 @@ TEST_F(Cli, UnreadableInputsExitOne) {
   EXPECT_NE(unwritable.err.find("db.json"), std::string::npos) << unwritable.err;
 }
 
+// A file that starts with a NUL byte (a binary file) is not JSON that ends at once: every
+// subcommand reading a scene or a database says where the NUL byte is.
+TEST_F(Cli, AFileStartingWithANulByteIsSaidToHoldOneInEverySubcommand) {
+  const fs::path binary = write("binary.json", std::string("\0\x01\x02{}", 5));
+  const std::string message =
+      "shadowgen: " + binary.string() +
+      ": line 1, column 1: invalid JSON: a NUL byte (JSON text has none; is this a binary "
+      "file?)\n";
+  const std::string out = (dir_ / "out").string();
+  const std::vector<std::vector<std::string>> commands = {
+      {"generate", binary.string(), "-o", out + ".json"},
+      {"report", binary.string()},
+      {"export", binary.string(), "--obj", out + ".obj"},
+      {"render", binary.string(), "--eye", "0,0,1", "--target", "0,0,0", "--svg", out + ".svg"},
+      {"sun", binary.string()},
+      {"merge", binary.string(), "-o", out + ".json"},
+      {"compare", binary.string()}};
+  for (const std::vector<std::string>& args : commands) {
+    const Outcome outcome = run(args);
+    EXPECT_EQ(outcome.code, 1) << args[0] << ": " << outcome.err;
+    EXPECT_EQ(outcome.err, message) << args[0];
+  }
+  EXPECT_EQ(files(), std::vector<std::string>{"binary.json"});
+}
+
+// A device as the input is refused before a byte of it is read (/dev/zero would give NUL
+// bytes without end).
+TEST_F(Cli, ADeviceAsTheInputIsNotARegularFile) {
+  for (const char* command : {"report", "generate"}) {
+    std::vector<std::string> args{command, "/dev/zero"};
+    if (std::string(command) == "generate")
+      args.insert(args.end(), {"-o", (dir_ / "out.json").string()});
+    const Outcome outcome = run(args);
+    EXPECT_EQ(outcome.code, 1) << outcome.err;
+    EXPECT_EQ(outcome.err, "shadowgen: /dev/zero: is not a regular file (a character device)\n");
+  }
+}
+
 TEST_F(Cli, WarningsGoToStderrUnlessQuietAndAreErrorsWhenStrict) {
   const fs::path scene = write("bent.json", kBentScene);
   const Outcome loud = run({"generate", scene.string(), "-o", (dir_ / "a.json").string()});

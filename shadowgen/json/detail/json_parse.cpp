@@ -43,7 +43,7 @@ void read_through(std::istream& in, Look&& look) {
   in.seekg(0);
 }
 
-std::string nul_problem(LineColumn at) {
+std::string nul_problem_at(LineColumn at) {
   return "line " + std::to_string(at.first) + ", column " + std::to_string(at.second) +
          ": invalid JSON: a NUL byte (JSON text has none; is this a binary file?)";
 }
@@ -241,12 +241,34 @@ std::string describe_parse_error(const Locate& locate, std::size_t position,
          ": invalid JSON: " + problem;
 }
 
+std::optional<std::string> nul_problem(std::string_view text, std::size_t end) {
+  const std::size_t nul = text.substr(0, std::min(end, text.size())).find('\0');
+  if (nul == std::string_view::npos) return std::nullopt;
+  return nul_problem_at(line_column(text, nul));
+}
+
+std::optional<std::string> nul_problem(std::istream& in, std::size_t end) {
+  LineCounter counter;
+  bool nul = false;
+  std::size_t left = end;
+  read_through(in, [&](std::string_view chunk) {
+    chunk = chunk.substr(0, std::min(left, chunk.size()));
+    left -= chunk.size();
+    const std::size_t at = chunk.find('\0');
+    counter.add(chunk.substr(0, at));
+    nul = at != std::string_view::npos;
+    return !nul && left > 0;
+  });
+  if (!nul) return std::nullopt;
+  return nul_problem_at(counter.place());
+}
+
 ParseOutcome parse_json(std::string_view text, Json& root, const ElementStream* stream) {
   // nlohmann's parser takes a NUL byte for the end of the text and would accept whatever
   // came before it, ignoring the rest; JSON text has no NUL byte anywhere.
-  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+  if (std::optional<std::string> nul = nul_problem(text)) {
     root = Json();
-    return {nul_problem(line_column(text, nul))};
+    return {std::move(nul)};
   }
   DomBuilder builder([text](std::size_t offset) { return line_column(text, offset); }, root,
                      stream);
@@ -259,17 +281,9 @@ ParseOutcome parse_json(std::string_view text, Json& root, const ElementStream* 
 
 ParseOutcome parse_json(std::istream& in, Json& root, const ElementStream* stream) {
   // As for text: the parser would take a NUL byte for the end.
-  LineCounter counter;
-  bool nul = false;
-  read_through(in, [&](std::string_view chunk) {
-    const std::size_t at = chunk.find('\0');
-    counter.add(chunk.substr(0, at));
-    nul = at != std::string_view::npos;
-    return !nul;
-  });
-  if (nul) {
+  if (std::optional<std::string> nul = nul_problem(in)) {
     root = Json();
-    return {nul_problem(counter.place())};
+    return {std::move(nul)};
   }
   DomBuilder builder([&in](std::size_t offset) { return line_column(in, offset); }, root, stream);
   Json::sax_parse(in, &builder);

@@ -52,6 +52,15 @@ ParseOutcome parse_json(std::istream& in, nlohmann::json& root,
 using LineColumn = std::pair<std::size_t, std::size_t>;
 using Locate = std::function<LineColumn(std::size_t offset)>;
 
+// "line L, column C: invalid JSON: a NUL byte (JSON text has none; is this a binary
+// file?)" for the first NUL byte among the first `end` bytes of `text`, or of what `in`
+// reads from its start (the stream is left at its start); nullopt where there is none.
+// nlohmann's parser takes a NUL byte for the end of the text ("unexpected end of input"),
+// so where it stops, this says what it found.
+std::optional<std::string> nul_problem(std::string_view text,
+                                       std::size_t end = std::string_view::npos);
+std::optional<std::string> nul_problem(std::istream& in, std::size_t end = std::string_view::npos);
+
 // "line L, column C: invalid JSON: what", for a SAX parse error at `position` (bytes read,
 // as nlohmann counts them). `last_token` is the token being read, `id` nlohmann's error
 // id, `what` its message.

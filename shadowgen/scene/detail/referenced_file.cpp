@@ -1,6 +1,9 @@
 #include "detail/referenced_file.h"
 
+#include <optional>
 #include <system_error>
+
+#include "shadowgen/json/document.h"
 
 namespace shadowgen::detail {
 
@@ -10,9 +13,13 @@ std::filesystem::path referenced_file(const JsonValue& value,
   const std::string name = value.string();
   if (name.empty()) value.fail("the file name is empty");
   const std::filesystem::path path = (scene_path.parent_path() / name).lexically_normal();
+  const std::string looked_for = " (looked for '" + path.string() + "')";
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    value.fail(what + " '" + name + "' not found (looked for '" + path.string() + "')");
+  if (!std::filesystem::exists(path, error)) {
+    value.fail(what + " '" + name + "' not found" + looked_for);
+  }
+  if (const std::optional<std::string> why = unreadable_input(path)) {
+    value.fail(what + " '" + name + "' " + *why + looked_for);
   }
   return path;
 }

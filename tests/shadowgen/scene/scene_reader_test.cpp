@@ -891,6 +891,29 @@ f 3 2 1
                                "with area 0");
 }
 
+// A mesh's file that is a folder or a device is there, but is no file to read: said so,
+// not "not found".
+TEST(SceneReaderMeshes, AMeshFileThatIsAFolderOrADeviceSaysWhatItIs) {
+  fs::create_directories(temp_dir() / "models.obj");
+  const auto error_of = [](const std::string& file_name) -> std::string {
+    try {
+      (void)parse(scene(R"("meshes": [{"id": "m", "file": ")" + file_name + "\"}]"));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(error_of("models.obj"),
+            scene_path().string() +
+                ": mesh 'm': meshes[0] ('m').file: mesh file 'models.obj' is a folder, not a file "
+                "(looked for '" +
+                (temp_dir() / "models.obj").string() + "')");
+  EXPECT_EQ(error_of("/dev/zero"),
+            scene_path().string() +
+                ": mesh 'm': meshes[0] ('m').file: mesh file '/dev/zero' is not a regular file (a "
+                "character device) (looked for '/dev/zero')");
+}
+
 // Warnings of one kind on many faces of one mesh are one line, naming how many and the
 // first ids (a mesh once gave 56 separate zero-area lines); ReadOptions::verbose lists
 // them all, and a few stay listed one by one.

@@ -118,6 +118,19 @@ TEST(SceneWeather, AMissingFileIsAnErrorNamingIt) {
                                  (folder().path() / "climate" / "absent.epw").string() + "')");
 }
 
+// A folder or a device is there, but is no weather file: said so, not "not found".
+TEST(SceneWeather, AFolderOrADeviceIsAnErrorSayingWhatItIs) {
+  const fs::path scene = scene_file(R"("weather": "climate")");
+  EXPECT_EQ(error_of(scene), scene.string() +
+                                 ": weather: weather file 'climate' is a folder, not a file "
+                                 "(looked for '" +
+                                 (folder().path() / "climate").string() + "')");
+  EXPECT_EQ(error_of(scene_file(R"("weather": "/dev/zero")")),
+            scene.string() +
+                ": weather: weather file '/dev/zero' is not a regular file (a character device) "
+                "(looked for '/dev/zero')");
+}
+
 TEST(SceneWeather, TheFilesOwnErrorsNameItAndTheLine) {
   const fs::path bad = folder().write("bad.epw", "LOCATION,X,,GBR,IWEC,037760,95,0,0,0\n");
   EXPECT_EQ(error_of(scene_file(R"("weather": "bad.epw")")),

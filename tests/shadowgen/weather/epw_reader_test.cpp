@@ -4,10 +4,21 @@
 
 #include "shadowgen/weather/epw_reader.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "shadowgen/model/input_error.h"
@@ -148,6 +159,101 @@ TEST(EpwReader, ReadsAFileAndNamesItByItsPath) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), (folder.path() / "absent.epw").string() + ": no such file");
   }
+}
+
+// The message of read_epw's error on `path`; "no error" where it reads.
+std::string read_error(const std::filesystem::path& path) {
+  try {
+    (void)read_epw(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// An EPW file has a known size (kLargestEpwFile): one larger is refused before it is
+// read, one of that size exactly (empty lines may end the file) is read.
+TEST(EpwReader, AFileLargerThanAnyWeatherFileIsRefusedUnread) {
+  const test::TempFolder folder("shadowgen-epw-reader");
+  std::string text = joined(epw_lines());
+  text.resize(kLargestEpwFile, '\n');
+  const std::filesystem::path at_bound = folder.write("at_bound.epw", text);
+  EXPECT_EQ(read_epw(at_bound).hours.size(), 72u);
+  text += '\n';
+  const std::filesystem::path beyond = folder.write("beyond.epw", text);
+  EXPECT_EQ(read_error(beyond),
+            beyond.string() + ": is larger than a weather file can be (more than 9519107 bytes)");
+}
+
+// A pipe fed without end is read no further than an EPW file can be long: the reader
+// stops there, naming it. The writer's end sees the pipe closed.
+TEST(EpwReader, APipeWithoutEndIsReadOnlyUpToTheBound) {
+  const test::TempFolder folder("shadowgen-epw-reader");
+  const std::filesystem::path fifo = folder.path() / "endless.epw";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::atomic<std::size_t> written{0};
+  struct sigaction ignore {};
+  struct sigaction before {};
+  ignore.sa_handler = SIG_IGN;
+  ASSERT_EQ(sigaction(SIGPIPE, &ignore, &before), 0);
+  std::thread writer([&] {
+    const int fd = open(fifo.c_str(), O_WRONLY);
+    const std::string lines(std::size_t{1} << 16, '\n');
+    while (fd >= 0 && write(fd, lines.data(), lines.size()) > 0) written += lines.size();
+    if (fd >= 0) close(fd);
+  });
+  EXPECT_EQ(read_error(fifo),
+            fifo.string() + ": is larger than a weather file can be (more than 9519107 bytes)");
+  writer.join();
+  sigaction(SIGPIPE, &before, nullptr);
+  EXPECT_GT(written.load(), kLargestEpwFile);
+  EXPECT_LT(written.load(), 2 * kLargestEpwFile);  // the pipe's buffer at most beyond it
+}
+
+TEST(EpwReader, AFolderOrADeviceIsNoWeatherFile) {
+  const test::TempFolder folder("shadowgen-epw-reader");
+  EXPECT_EQ(read_error(folder.path()), folder.path().string() + ": is a folder, not a file");
+  for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+    EXPECT_EQ(read_error(device),
+              std::string(device) + ": is not a regular file (a character device)");
+  }
+}
+
+// Reads `path` with 1 MiB of address space left to the process, printing the message of
+// the InputError it throws and exiting 1; exits 0 if it reads, 2 if the limit cannot be set.
+[[noreturn]] void read_with_1_mib_left(const std::filesystem::path& path) {
+  std::ifstream statm("/proc/self/statm");  // the address space in use, in pages
+  std::size_t pages = 0;
+  statm >> pages;
+  const rlim_t limit =
+      static_cast<rlim_t>(pages) * static_cast<rlim_t>(getpagesize()) + (rlim_t{1} << 20);
+  rlimit tight{};
+  tight.rlim_cur = limit;
+  tight.rlim_max = limit;
+  if (setrlimit(RLIMIT_AS, &tight) != 0) std::_Exit(2);
+  try {
+    (void)read_epw(path);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    std::_Exit(1);
+  }
+  std::_Exit(0);
+}
+
+// Under a limit on the address space that leaves no room for the file's text, the error
+// names the weather file, not whatever input the caller read before it.
+TEST(EpwReaderDeathTest, RunningOutOfMemoryNamesTheWeatherFile) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves far more address space than the limit";
+#else
+  const test::TempFolder folder("shadowgen-epw-reader");
+  std::string text = joined(epw_lines());
+  text.resize(kLargestEpwFile, '\n');
+  const std::filesystem::path path = folder.write("large.epw", text);
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(read_with_1_mib_left(path), ::testing::ExitedWithCode(1),
+              "large\\.epw: out of memory: this input needs more memory than the process may use");
+#endif
 }
 
 // ---- Errors -----------------------------------------------------------------------------
