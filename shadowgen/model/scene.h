@@ -109,6 +109,10 @@ struct Weather {
 };
 
 struct Scene {
+  // The file it was read from, as messages about the whole input name it: the scene, or
+  // the shadowed database the user gave (never the scene a database was generated from;
+  // a face's own file is Face::source_file); "-" for standard input.
+  std::string file;
   std::vector<Face> faces;  // polygons first, then mesh faces, in file order
   // In file order; a `sun` entry is its instants, in time order, where it stood.
   std::vector<Light> lights;

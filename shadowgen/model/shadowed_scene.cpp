@@ -56,11 +56,6 @@ void require_regions(const SunPathHours& path, const std::string& file, std::str
                        std::string(what) + " needs: generate without --areas-only");
 }
 
-std::string scene_file_of(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
-  return scene.faces.empty() ? "" : scene.faces.front().source_file;
-}
-
 double lit_area(std::span<const LitPolygon> lit) {
   double sum = 0.0;
   for (const LitPolygon& p : lit) sum += hsr::area(p.polygon);

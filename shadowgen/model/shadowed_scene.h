@@ -119,9 +119,6 @@ void require_regions(const SunPathHours& path, const std::string& file, std::str
 // not one row per face of one list per light: a caller's mistake, never bad input.
 void check_lit_shape(const ShadowedScene& shadowed, std::string_view who);
 
-// The file messages about a shadowed scene name: its first face's (empty without faces).
-std::string scene_file_of(const ShadowedScene& shadowed);
-
 // Lit area of every (face, light): from its lit polygons or, for an instant of a sun path
 // that keeps only its instants' lit areas, from the path's, or a sampled method's estimate
 // (ShadowedScene::estimated_lit_area).

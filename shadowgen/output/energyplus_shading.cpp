@@ -18,10 +18,11 @@ namespace {
 constexpr std::int64_t kSecondsPerDay = 86'400;
 
 // The face's id as an EnergyPlus surface name: upper case, as EnergyPlus keeps names.
-std::string surface_name(const Face& face) {
+// InputError naming `file` (the input) where it cannot be one.
+std::string surface_name(const Face& face, const std::string& file) {
   const std::string& id = face.id;
   auto refuse = [&](const std::string& why) {
-    throw InputError(face.source_file, id, "cannot be an EnergyPlus surface name: " + why);
+    throw InputError(file, id, "cannot be an EnergyPlus surface name: " + why);
   };
   if (id.empty()) refuse("it is empty");
   if (id.front() == ' ' || id.back() == ' ') refuse("EnergyPlus trims spaces around names");
@@ -38,10 +39,10 @@ std::string header(const ShadowedScene& shadowed) {
   std::string out = "Surface Name,";
   std::map<std::string, const Face*> taken;
   for (const Face& face : shadowed.scene.faces) {
-    const std::string name = surface_name(face);
+    const std::string name = surface_name(face, shadowed.scene.file);
     const auto [at, added] = taken.emplace(name, &face);
     if (!added) {
-      throw InputError(face.source_file, face.id,
+      throw InputError(shadowed.scene.file, face.id,
                        "is the EnergyPlus surface name " + name + " in upper case, as face '" +
                            at->second->id + "' is");
     }
@@ -79,7 +80,7 @@ void append_fraction(std::string& out, double fraction) {
 
 EnergyPlusShading energyplus_shading(const ShadowedScene& shadowed) {
   detail::require_sun_paths(shadowed, "a shading schedule");
-  const std::string file = scene_file_of(shadowed);
+  const std::string file = shadowed.scene.file;
   if (shadowed.sun_paths.size() > 1) {
     std::string ids;
     for (const SunPathHours& path : shadowed.sun_paths) ids += (ids.empty() ? "" : ", ") + path.id;

@@ -29,7 +29,7 @@ struct EnergyPlusShading {
   std::vector<std::string> warnings;
 };
 
-// Of the one sun path of `shadowed`. Throws InputError naming the scene for an input
+// Of the one sun path of `shadowed`. Throws InputError naming the input (Scene::file) for one
 // without a sun path or with several, a step that does not divide an hour, a path not
 // starting at a step's start, and a face id that cannot be an EnergyPlus surface name
 // (empty, a comma or a control character in it, spaces around it, or the same as another

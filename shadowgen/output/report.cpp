@@ -79,11 +79,11 @@ double clamped_lit_area(double lit, double face_area) {
 void check_finite(const ReportRow& row, const Scene& scene) {
   const Face& face = scene.faces[row.face];
   if (!std::isfinite(row.area)) {
-    throw InputError(face.source_file, face.id,
+    throw InputError(scene.file, face.id,
                      "its area is not a finite number (coordinates too large)");
   }
   if (!std::isfinite(row.lit_area) || !std::isfinite(row.lit_fraction)) {
-    throw InputError(face.source_file, face.id,
+    throw InputError(scene.file, face.id,
                      "its lit area for light '" + scene.lights[row.light].id +
                          "' is not a finite number (coordinates too large)");
   }
@@ -120,7 +120,7 @@ Totals totals_of(const Scene& scene, const std::vector<ReportRow>& rows) {
   totals.area = area.value();
   totals.lit_area = lit_area.value();
   if (!std::isfinite(totals.area) || !std::isfinite(totals.lit_area)) {
-    throw InputError(scene.faces.front().source_file, "",
+    throw InputError(scene.file, "",
                      "the faces' total area is not a finite number (coordinates too large)");
   }
   return totals;

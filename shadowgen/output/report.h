@@ -24,7 +24,7 @@ struct ReportRow {
 // polygons for the light, never above `area` by rounding (an excess within 2^-40 of the
 // area is clamped, so 0 <= lit_fraction <= 1; anything larger is left to show). Throws
 // std::invalid_argument when `lit` is not shaped [face][light], and InputError (naming the
-// face's file and the face) when an area is not a finite number: no report, in any of the
+// input, Scene::file, and the face) when an area is not a finite number: no report, in any of the
 // forms below, holds inf or nan.
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed);
 

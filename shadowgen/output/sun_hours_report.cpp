@@ -20,7 +20,7 @@ std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
   }
   detail::require_sun_paths(shadowed, "sun hours");
   for (const SunPathHours& path : shadowed.sun_paths) {
-    require_regions(path, scene_file_of(shadowed), "a sun-hours report");
+    require_regions(path, shadowed.scene.file, "a sun-hours report");
   }
   const Scene& scene = shadowed.scene;
   std::vector<SunHoursRow> rows;

@@ -25,8 +25,8 @@ struct SunHoursRow {
 };
 
 // One row per (face, path): faces in scene order, paths in the order of their first
-// instant. Throws InputError (naming the scene and the problem) for a database without sun
-// paths, and std::invalid_argument for a threshold that is negative or not finite.
+// instant. Throws InputError (naming the input, Scene::file, and the problem) for a database
+// without sun paths, and std::invalid_argument for a threshold that is negative or not finite.
 std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
                                         std::span<const double> thresholds);
 

@@ -55,6 +55,7 @@ class DatabaseParser {
   // From `text`, or where it is null from the file, read as it is parsed.
   ShadowedScene run(const std::string* text) {
     ShadowedScene shadowed;
+    shadowed.scene.file = file_;
     std::optional<JsonObject> top;
     bool buffered = false;  // a face came before the members it needs: the rest stay
     std::vector<bool> header_then;

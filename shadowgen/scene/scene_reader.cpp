@@ -38,6 +38,7 @@ class SceneParser {
       : path_(path), file_(path.string()), options_(options) {}
 
   ReadResult run(const std::string& text) {
+    result_.scene.file = file_;
     const JsonDocument document(text, {file_, options_.strict, &result_.warnings});
     const JsonValue root = document.root();
     if (!root.is_object()) {

@@ -57,7 +57,7 @@ class SunHoursTiling : public detail::FaceTiling {
 Picture render_sun_hours(const ShadowedScene& shadowed, const SunPathHours& path,
                          const HourBands& bands, const Camera& camera,
                          const RenderOptions& options) {
-  require_regions(path, scene_file_of(shadowed), "a sun-hours map");
+  require_regions(path, shadowed.scene.file, "a sun-hours map");
   if (path.regions.size() != shadowed.scene.faces.size()) {
     throw std::invalid_argument("the sun path's sun-hours regions are not one list per face");
   }

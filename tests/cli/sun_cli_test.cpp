@@ -186,7 +186,8 @@ TEST_F(SunCli, LitAreasAloneServeTheScheduleButNotTheSunHoursRegions) {
   ASSERT_EQ(schedule.code, 0) << schedule.err;
   EXPECT_EQ(schedule.out, run({"report", scene.string(), "--format", "energyplus"}).out);
   EXPECT_EQ(run({"report", db.string()}).out, run({"report", scene.string()}).out);
-  const std::string refused = "shadowgen: " + scene.string() +
+  // Named by the database read, not by the scene it was generated from.
+  const std::string refused = "shadowgen: " + db.string() +
                               ": sun path 'march21' was summed into lit areas alone (generate "
                               "--areas-only), without the sun-hours regions ";
   const Outcome report = run({"report", db.string(), "--format", "sun-hours"});
@@ -214,6 +215,24 @@ TEST_F(SunCli, NoSunPathOrAThresholdWithoutTheFormatIsAnError) {
                           "report sun hours of\n");
   EXPECT_EQ(run({"report", scene.string(), "--threshold", "2"}).code, 2);
   EXPECT_EQ(run({"report", scene.string(), "--format", "sun-hours", "--threshold", "-1"}).code, 2);
+}
+
+// A database keeps the scene it was generated from as its faces' source_file; a report on
+// it names the database given, not that scene.
+TEST_F(SunCli, ReportsOnADatabaseNameTheDatabaseNotItsScene) {
+  const fs::path scene = write("lamp.json", R"({"format": "shadowgen-scene/1",
+      "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+      "lights": [{"id": "lamp", "type": "point", "position": [0, 0, 3]}]})");
+  const fs::path db = dir_ / "lamp.shadowed.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const std::string no_path =
+      "shadowgen: " + db.string() + ": has no sun path (a `sun` light with from, to and step_min) ";
+  const Outcome shading = run({"report", db.string(), "--format", "energyplus"});
+  EXPECT_EQ(shading.code, 1);
+  EXPECT_EQ(shading.err, no_path + "to report a shading schedule of\n");
+  const Outcome hours = run({"report", db.string(), "--format", "sun-hours"});
+  EXPECT_EQ(hours.code, 1);
+  EXPECT_EQ(hours.err, no_path + "to report sun hours of\n");
 }
 
 TEST_F(SunCli, EnergyPlusShadingScheduleFromTheSceneOrItsDatabase) {
@@ -282,6 +301,29 @@ TEST_F(SunCli, IrradiationFromTheScenesWeatherFileOrFromADatabaseWithWeather) {
   EXPECT_EQ(onto_weather.code, 2);
   EXPECT_NE(onto_weather.err.find("is the input"), std::string::npos) << onto_weather.err;
   EXPECT_EQ(contents(epw), joined(epw_lines(3, 21, 1)));
+}
+
+// --weather naming a device, or a pipe fed without end: refused naming it, the device
+// before it is read, the pipe once more than an EPW file can hold has come (about 9.5 MB,
+// epw_reader.h), where it was once read on until memory ran out.
+TEST_F(SunCli, AWeatherPathThatIsADeviceOrNeverEndsIsRefusedNamingIt) {
+  const fs::path scene = write("yard.json", kYard);
+  const fs::path db = dir_ / "yard.shadowed.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const Outcome zero =
+      run({"report", db.string(), "--format", "irradiation", "--weather", "/dev/zero"});
+  EXPECT_EQ(zero.code, 1);
+  EXPECT_EQ(zero.err, "shadowgen: /dev/zero: is not a regular file (a character device)\n");
+
+  const fs::path fifo = dir_ / "endless.epw";
+  ASSERT_EQ(shell("mkfifo " + quoted(fifo.string())), 0);
+  // The writer stops when the pipe is closed (SIGPIPE), or after a minute at the latest.
+  ASSERT_EQ(shell("(timeout 60 yes > " + quoted(fifo.string()) + " 2> /dev/null &)"), 0);
+  const Outcome endless =
+      run({"report", db.string(), "--format", "irradiation", "--weather", fifo.string()});
+  EXPECT_EQ(endless.code, 1);
+  EXPECT_EQ(endless.err, "shadowgen: " + fifo.string() +
+                             ": is larger than a weather file can be (more than 9519107 bytes)\n");
 }
 
 }  // namespace

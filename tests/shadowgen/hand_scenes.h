@@ -70,7 +70,7 @@ inline const std::string kCourtyard = R"(
 inline const std::string kMarch21 =
     R"("from": "2026-03-21T06:00", "to": "2026-03-21T18:00", "step_min": 30)";
 
-// A sun path's sums made by hand: face "g", 4 × 1 in z = 0 (from "test.json"), and path
+// A sun path's sums made by hand, read from "test.json": face "g", 4 × 1 in z = 0, and path
 // "p" of four 30-minute instants (lights p@0 ... p@3, no lit polygons kept): [0,1] × [0,1]
 // lit at none, [1,3] at three (1.5 h, in two pieces), [3,4] at four (2 h).
 inline hsr::Polygon3 unit_strip(double x0, double x1) {
@@ -78,6 +78,7 @@ inline hsr::Polygon3 unit_strip(double x0, double x1) {
 }
 inline ShadowedScene sun_path_by_hand() {
   ShadowedScene shadowed;
+  shadowed.scene.file = "test.json";
   shadowed.scene.faces.push_back({"g", {unit_strip(0, 4)}, "test.json"});
   for (int k = 0; k < 4; ++k) {
     Light light;

@@ -10,7 +10,7 @@
 
 namespace shadowgen::detail {
 
-// InputError naming the scene's file when `shadowed` has no sun path; `what` says what
+// InputError naming the input (Scene::file) when `shadowed` has no sun path; `what` says what
 // the report would have given ("sun hours").
 void require_sun_paths(const ShadowedScene& shadowed, std::string_view what);
 

@@ -27,10 +27,12 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 // Faces "roof" (area 4) and "Wall-South" (area 2), a path "day" of `step_min` from `from` to
-// `to` whose instants are `lit`: (time, roof's lit area, wall's lit area).
+// `to` whose instants are `lit`: (time, roof's lit area, wall's lit area). Read from
+// "test.json", the file of its faces too.
 ShadowedScene by_hand(int step_min, const std::string& from, const std::string& to,
                       const std::vector<std::tuple<std::string, double, double>>& lit) {
   ShadowedScene shadowed;
+  shadowed.scene.file = "test.json";
   shadowed.scene.faces.push_back({"roof", {test::unit_strip(0, 4)}, "test.json"});
   shadowed.scene.faces.push_back({"Wall-South", {test::unit_strip(0, 2)}, "test.json"});
   SunPathHours path;
@@ -145,6 +147,32 @@ TEST(EnergyPlusShading, WhatEnergyPlusCouldNotReadIsRefused) {
   ShadowedScene none = by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {});
   none.sun_paths.clear();
   EXPECT_NE(error_of(none).find("has no sun path"), std::string::npos);
+}
+
+// A database names its faces' scene in source_file; the errors name the database read, the
+// file the user gave.
+TEST(EnergyPlusShading, ErrorsNameTheInputReadNotTheSceneItsFacesCameFrom) {
+  // The path by hand, read from "db.json"; its faces came from "test.json".
+  const auto from_db = [] {
+    ShadowedScene shadowed = by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {});
+    shadowed.scene.file = "db.json";
+    return shadowed;
+  };
+  ShadowedScene none = from_db();
+  none.sun_paths.clear();
+  EXPECT_EQ(error_of(none),
+            "db.json: has no sun path (a `sun` light with from, to and step_min) to report a "
+            "shading schedule of");
+  ShadowedScene same = from_db();
+  same.scene.faces[1].id = "Roof";
+  EXPECT_EQ(error_of(same),
+            "db.json: face 'Roof': is the EnergyPlus surface name ROOF in upper case, as face "
+            "'roof' is");
+  ShadowedScene comma = from_db();
+  comma.scene.faces[0].id = "roof,north";
+  EXPECT_EQ(error_of(comma),
+            "db.json: face 'roof,north': cannot be an EnergyPlus surface name: it holds a comma, "
+            "which separates fields");
 }
 
 }  // namespace

@@ -275,11 +275,12 @@ TEST(SunHours, AreasAloneKeepEveryInstantsLitAreaAndNoRegions) {
   EXPECT_FALSE(read.sun_paths.at(0).regions_kept);
   EXPECT_EQ(database_json(read), text);
   try {
-    require_regions(read.sun_paths[0], scene_file_of(read), "a sun-hours map");
+    require_regions(read.sun_paths[0], read.scene.file, "a sun-hours map");
     ADD_FAILURE() << "regions required of a path of lit areas alone";
   } catch (const InputError& e) {
+    // Named by the database read, not by the scene its faces came from.
     EXPECT_EQ(std::string(e.what()),
-              "test.json: sun path 'day' was summed into lit areas alone (generate "
+              "areas.json: sun path 'day' was summed into lit areas alone (generate "
               "--areas-only), without the sun-hours regions a sun-hours map needs: generate "
               "without --areas-only");
   }
