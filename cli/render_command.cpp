@@ -3,6 +3,7 @@
 #include <glm/vec3.hpp>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -121,6 +122,20 @@ RgbImage raster_picture(const RenderArgs& args, const ShadowedScene& shadowed, c
   return render_raster(shadowed, camera, raster);
 }
 
+// The --png file's bytes. A picture too large for the memory the process may use is
+// said of the PNG file and its size (the input is not to blame).
+std::string png_picture(const RenderArgs& args, const ShadowedScene& shadowed, const Camera& camera,
+                        const RenderOptions& options) {
+  try {
+    return png_bytes(raster_picture(args, shadowed, camera, options));
+  } catch (const std::bad_alloc&) {
+    throw InputError(args.png, "",
+                     "out of memory: a picture of " + std::to_string(args.width) + " × " +
+                         std::to_string(args.height) +
+                         " pixels needs more memory than the process may use");
+  }
+}
+
 void run_render(const RenderArgs& args) {
   if (args.svg.empty() && args.png.empty()) {
     throw UsageError("--svg or --png is required (or both)");
@@ -156,7 +171,7 @@ void run_render(const RenderArgs& args) {
                           : render(shadowed, camera, options);
       svg = svg_document(picture);
     }
-    if (!args.png.empty()) png = png_bytes(raster_picture(args, shadowed, camera, options));
+    if (!args.png.empty()) png = png_picture(args, shadowed, camera, options);
   } catch (const std::invalid_argument& e) {
     // A camera the database's view or the arguments describe badly (eye == target): the
     // camera does not know which of them it came from.
@@ -238,6 +253,7 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
                           std::to_string(kDefaultResolution) + ")")
           ->check(whole_number_in(1, kMaxResolution))
           ->needs(png);
+  // As large as libpng writes, for --svg too: one range for both pictures.
   command.add_option("--width", args.width, "picture width in pixels (default 800)")
       ->check(whole_number_in(1, kLargestPictureSide));
   command.add_option("--height", args.height, "picture height in pixels (default 600)")

@@ -8,8 +8,8 @@
 // at the target, a pixel 2·tan(fov/2)/h of it. Points near the target are projected with
 // a rounding of a few ε·D (ε = 2^-52), so a pixel must be many times that for the picture
 // to hold anything but rounding: at the narrowest field of view, 1e-6° (1.75e-8 rad, just
-// above √ε = 1.49e-8 rad), a pixel of the tallest picture `render` draws (2^20 pixels)
-// still spans 1.66e-14 D, 75 ε·D. The widest is below 180°, where tan(fov/2) is infinite.
+// above √ε = 1.49e-8 rad), a pixel of the tallest picture `render` draws
+// (1,000,000 pixels) still spans 1.75e-14 D, 79 ε·D. The widest is below 180°, where tan(fov/2) is infinite.
 //
 // Orthographic scale, in pixels per scene unit. Coordinates have magnitudes up to
 // kLargestCoordinate (1e100) and faces span at least kSmallestExtent (1e-100)
@@ -23,7 +23,7 @@
 // Up is along the sight where the sine of the angle between them is at most √ε
 // (1.49e-8): the cross product of the unit vectors carries a rounding of about 3ε per
 // component, so above that sine the roll is known to 3ε/sin ≤ 3√ε (4.5e-8 rad), which
-// moves the edge of a picture 2^20 pixels wide by 0.02 pixel.
+// moves the edge of a picture 1,000,000 pixels wide by 0.02 pixel.
 
 #include <glm/vec3.hpp>
 #include <optional>
@@ -34,8 +34,12 @@
 
 namespace shadowgen {
 
-// The most pixels along either side of a picture (`render --width`, `--height`).
-inline constexpr int kLargestPictureSide = 1 << 20;
+// The most pixels along either side of a picture (`render --width`, `--height`, for the
+// SVG too, so that one range serves both pictures): the widest and tallest picture libpng
+// writes, its PNG_USER_WIDTH_MAX and PNG_USER_HEIGHT_MAX as it is built by default
+// (shadowgen/view/png_writer.cpp checks them against the libpng compiled with). A wider
+// PNG is valid, but libpng refuses to write it ("Invalid IHDR data").
+inline constexpr int kLargestPictureSide = 1'000'000;
 
 inline constexpr double kNarrowestFovDeg = 1e-6;
 inline constexpr double kWidestFovDeg = 180.0;  // excluded

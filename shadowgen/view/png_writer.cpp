@@ -5,11 +5,18 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "shadowgen/model/view_limits.h"
 #include "shadowgen/output/atomic_file.h"
 
 namespace shadowgen {
 
+static_assert(kLargestPictureSide <= PNG_USER_WIDTH_MAX && kLargestPictureSide <= PNG_USER_HEIGHT_MAX,
+              "libpng is built to write narrower pictures than kLargestPictureSide");
+
 std::string png_bytes(const RgbImage& image) {
+  if (image.width > kLargestPictureSide || image.height > kLargestPictureSide) {
+    throw std::invalid_argument("png_bytes: the image is wider or taller than libpng writes");
+  }
   if (image.width <= 0 || image.height <= 0 ||
       image.rgb.size() !=
           3 * static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height)) {

@@ -23,7 +23,9 @@ struct RgbImage {
 };
 
 // The PNG file's bytes. Throws std::invalid_argument for an image whose size does not
-// match its pixels, std::runtime_error where libpng fails.
+// match its pixels or whose side is beyond kLargestPictureSide
+// (shadowgen/model/view_limits.h), std::runtime_error where
+// libpng fails.
 std::string png_bytes(const RgbImage& image);
 
 // Writes the PNG through a temporary file and a rename (shadowgen/output/atomic_file.h):

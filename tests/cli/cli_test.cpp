@@ -360,7 +360,7 @@ TEST_F(Cli, NumericOptionsRefuseNanAndInfinityAtParseTime) {
       {{"render", missing, "--eye", "1,2,3", "--target", "0,0,0", "--fov", "inf", "--svg", svg},
        "--fov: inf must be at least 1e-06 and below 180 degrees"},
       {{"render", missing, "--eye", "1,2,3", "--target", "0,0,0", "--width", "0", "--svg", svg},
-       "--width: 0 must lie between 1 and 1048576"},
+       "--width: 0 must lie between 1 and 1000000"},
       {{"render", missing, "--eye", "nan,2,3", "--target", "0,0,0", "--svg", svg},
        "--eye: expected X,Y,Z (three numbers), got nan,2,3"},
       {{"render", missing, "--sun-hours", "day", "--bands", "nan", "--svg", svg},

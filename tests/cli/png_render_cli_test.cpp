@@ -178,5 +178,41 @@ TEST_F(PngRenderCli, UsageErrors) {
   EXPECT_FALSE(fs::exists(svg));
 }
 
+// libpng writes pictures up to 1,000,000 pixels a side (PNG_USER_WIDTH_MAX and
+// PNG_USER_HEIGHT_MAX): a larger one is refused at the option, before any work, not by
+// libpng once drawn.
+TEST_F(PngRenderCli, ASideBeyondWhatLibpngWritesIsAUsageError) {
+  const std::string png = (dir_ / "wide.png").string();
+  for (const char* side : {"--width", "--height"}) {
+    const Outcome out =
+        run({"render", db_.string(), "--view", "main", side, "1000001", "--png", png});
+    EXPECT_EQ(out.code, 2) << out.err;
+    EXPECT_EQ(out.err.substr(0, out.err.find('\n')),
+              std::string(side) + ": 1000001 must lie between 1 and 1000000");
+  }
+  EXPECT_FALSE(fs::exists(png));
+}
+
+// A picture too large for the memory the process may use is said of the PNG file and its
+// size, and nothing is written.
+TEST_F(PngRenderCli, APictureTooLargeForTheMemoryNamesThePngFile) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves far more address space than the limit";
+#else
+  const fs::path png = dir_ / "huge.png";
+  const fs::path err = dir_ / "run" / "err";
+  // 1 GiB of address space: Embree's device needs some 200 MiB of it to start.
+  const int code =
+      shell("ulimit -v 1048576 && " + quoted(SHADOWGEN_EXECUTABLE) + " render " +
+            quoted(db_.string()) + " --view main --width 1000000 --height 1000000 --png " +
+            quoted(png.string()) + " 2> " + quoted(err.string()));
+  EXPECT_EQ(code, 1) << contents(err);
+  EXPECT_EQ(contents(err), "shadowgen: " + png.string() +
+                               ": out of memory: a picture of 1000000 × 1000000 pixels needs more "
+                               "memory than the process may use\n");
+  EXPECT_FALSE(fs::exists(png));
+#endif
+}
+
 }  // namespace
 }  // namespace shadowgen::test
