@@ -1,6 +1,7 @@
 #include "shadowgen/pipeline/load_shadowed.h"
 
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -103,6 +104,14 @@ ShadowedScene database(const std::filesystem::path& path, const std::string* tex
   return shadowed;
 }
 
+// Whether `path` can be read twice: first for its format alone, then as what it is. A
+// stream (standard input, a pipe such as a shell's <(...)) gives its bytes once: it is
+// read whole, once.
+bool readable_twice(const std::filesystem::path& path) {
+  std::error_code error;
+  return path != "-" && !std::filesystem::is_fifo(path, error);
+}
+
 [[noreturn]] void refuse(const Document& document, const LoadOptions& options) {
   if (options.accept == Accept::kShard) {
     throw InputError(document.path.string(), "",
@@ -130,7 +139,7 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
   if (options.accept == Accept::kScene) return generated(read_scene(path, read), path, options);
 
   // A database file is read as it is parsed, never held whole: only its format first.
-  if (path != "-") {
+  if (readable_twice(path)) {
     const std::string format = file_format(path);
     if (format == kShadowedFormat) return database(path, nullptr, read, options);
   }
@@ -144,7 +153,7 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
 }
 
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
-  if (options.accept == Accept::kSceneOrDatabase && path != "-" &&
+  if (options.accept == Accept::kSceneOrDatabase && readable_twice(path) &&
       file_format(path) == kShadowedFormat) {
     std::vector<std::string> warnings;
     ShadowedScene shadowed = read_database(path, read_options(options), warnings);

@@ -61,7 +61,8 @@ struct LoadOptions {
 
 // Throws InputError naming the file for bad input (a format the caller does not take
 // included), and GenerationError naming the file, the face and the light where shadows
-// cannot be generated.
+// cannot be generated. Standard input ("-") and a pipe (a FIFO) are read whole, once; a
+// file is scanned for its format, then read as what it is.
 ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // A scene read as load_shadowed reads one (warnings passed on, lights kept, on_scene

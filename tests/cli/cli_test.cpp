@@ -290,6 +290,25 @@ TEST_F(Cli, ADeviceAsTheInputIsNotARegularFile) {
   }
 }
 
+// A pipe (a FIFO, as a shell's <(...) gives one) gives its bytes once: a scene or a
+// database through one is read whole, once, not scanned for its format and then found
+// empty.
+TEST_F(Cli, APipeAsTheInputIsReadOnce) {
+  const fs::path scene = write("scene.json", kTinyScene);
+  const fs::path db = dir_ / "db.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string()}).code, 0);
+  const fs::path fifo = dir_ / "pipe";
+  ASSERT_EQ(shell("mkfifo " + quoted(fifo.string())), 0);
+  for (const fs::path& input : {scene, db}) {
+    ASSERT_EQ(
+        shell("(timeout 60 cat " + quoted(input.string()) + " > " + quoted(fifo.string()) + " &)"),
+        0);
+    const Outcome report = run({"report", fifo.string()});
+    EXPECT_EQ(report.code, 0) << report.err;
+    EXPECT_EQ(report.out, kTinyCsv) << input;
+  }
+}
+
 TEST_F(Cli, WarningsGoToStderrUnlessQuietAndAreErrorsWhenStrict) {
   const fs::path scene = write("bent.json", kBentScene);
   const Outcome loud = run({"generate", scene.string(), "-o", (dir_ / "a.json").string()});
