@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <fstream>
 #include <optional>
 #include <stdexcept>
@@ -36,47 +37,76 @@ constexpr std::size_t kMaxShards = 1'000'000;
 
 class DatabaseParser {
  public:
-  // `stream_faces`: read each face as soon as the parser has it (see run()).
   DatabaseParser(const std::filesystem::path& path, const ReadOptions& options,
-                 std::vector<std::string>& warnings, bool stream_faces)
-      : path_(path),
-        file_(path.string()),
-        options_(options),
-        warnings_(warnings),
-        stream_faces_(stream_faces) {}
+                 std::vector<std::string>& warnings)
+      : path_(path), file_(path.string()), options_(options), warnings_(warnings) {}
 
   // Faces come last in a database as written (shadowgen/output/database.h), and make
   // nearly all of it: each is read as soon as the parser has it and its tree dropped, so
-  // reading holds the text, the scene and one face's tree, not the whole document's
-  // tree (several times the text). The members before "faces" are read at its first
-  // element. Where some of them come after "faces" instead (a file arranged by hand),
-  // the faces streamed were read too early, and the text is read again whole. Read from
-  // a file, the text itself is never held whole either.
+  // reading holds the scene and one face's tree, never the whole document's tree
+  // (several times the text). The members before "faces" (the header) are read at its
+  // first element. JSON objects are unordered, though: where a member of the header
+  // comes after "faces" (a file arranged by hand), the faces streamed were read too
+  // early (as exact where the method comes later, whole where the shard does), so what
+  // reading them threw waits for the end of this pass, and they are read again in a
+  // second pass, with the header this pass found after them (read_faces_after). Where
+  // the format, the lights or the views come after "faces", no face is read in this
+  // pass at all. Either way reading holds one face's tree at a time; the cost is a
+  // second parse. Read from a file, the text itself is never held whole either.
   // From `text`, or where it is null from the file, read as it is parsed.
   ShadowedScene run(const std::string* text) {
     ShadowedScene shadowed;
     shadowed.scene.file = file_;
     std::optional<JsonObject> top;
-    bool buffered = false;  // a face came before the members it needs: the rest stay
-    std::vector<bool> header_then;
+    bool skipping = false;          // a member the header needs comes after the faces
+    std::exception_ptr too_early;   // what reading the header or a face threw in this pass
+    std::vector<bool> header_then;  // the header's members before the first face
     const std::size_t warnings_before = warnings_.size();
     const auto take = [&](const JsonValue& root, const JsonValue& face) {
-      if (!top && !buffered) {
+      if (!top && !skipping) {
         header_then = header_present(root);
-        if (!stream_faces_ || !header_then[kFormat] || !header_then[kLights] ||
-            !header_then[kViews]) {
-          buffered = true;
-        } else {
-          top.emplace(root.object());
-          read_header(*top, shadowed);
-        }
+        skipping = !header_then[kFormat] || !header_then[kLights] || !header_then[kViews];
+        if (!skipping) top.emplace(root.object());
+        if (!skipping) guarded(too_early, [&] { read_header(*top, shadowed); });
       }
-      if (buffered) return false;
-      read_face(face, shadowed);
-      return true;
+      if (!skipping && !too_early) guarded(too_early, [&] { read_face(face, shadowed); });
+      return true;  // dropped: read, or left for the second pass
     };
     std::optional<std::ifstream> in;
     std::optional<JsonDocument> document;
+    parse(text, take, in, document);
+    const JsonValue root = document->root();
+    if (!root.is_object()) {
+      root.fail("a shadowed database is a JSON object; found " + root.describe());
+    }
+    if (skipping || (top && header_present(root) != header_then)) {
+      shadowed = {};
+      warnings_.resize(warnings_before);
+      return DatabaseParser(path_, options_, warnings_).read_faces_after(root, text);
+    }
+    if (too_early) std::rethrow_exception(too_early);
+    if (!top) {  // no face
+      top.emplace(root.object());
+      read_header(*top, shadowed);
+    }
+    return finished(*top, std::move(shadowed));
+  }
+
+ private:
+  // Runs `read`, keeping what it throws as bad input in `error` instead.
+  template <class Read>
+  static void guarded(std::exception_ptr& error, const Read& read) {
+    try {
+      read();
+    } catch (const InputError&) {
+      error = std::current_exception();
+    }
+  }
+
+  // Parses the database, from `text` or where it is null from the file (opened in `in`),
+  // into `document`, handing each face to `take` as it comes.
+  void parse(const std::string* text, const JsonDocument::ElementTaker& take,
+             std::optional<std::ifstream>& in, std::optional<JsonDocument>& document) const {
     const JsonSource source{file_, options_.strict, &warnings_};
     if (text != nullptr) {
       document.emplace(*text, source, "faces", take);
@@ -84,29 +114,34 @@ class DatabaseParser {
       in.emplace(open_input_file(path_));
       document.emplace(*in, source, "faces", take);
     }
-    const JsonValue root = document->root();
-    if (top && header_present(root) != header_then) {
-      warnings_.resize(warnings_before);
-      return DatabaseParser(path_, options_, warnings_, false).run(text);
-    }
-    if (!root.is_object()) {
-      root.fail("a shadowed database is a JSON object; found " + root.describe());
-    }
-    if (!top) {
-      top.emplace(root.object());
-      read_header(*top, shadowed);
-    }
-    const JsonArray faces = top->get("faces").array();
-    if (buffered) {  // otherwise every face was read as it came, or there is none
-      for (std::size_t i = 0; i < faces.size(); ++i) read_face(faces.at(i), shadowed);
-    }
-    top->finish();
+  }
+
+  // The second pass: the header from `first`, the root of a first pass that read every
+  // member but the faces, then the faces as this pass parses them.
+  ShadowedScene read_faces_after(const JsonValue& first, const std::string* text) {
+    ShadowedScene shadowed;
+    JsonObject top = first.object();
+    read_header(top, shadowed);
+    const auto take = [&](const JsonValue&, const JsonValue& face) {
+      read_face(face, shadowed);
+      return true;
+    };
+    std::optional<std::ifstream> in;
+    std::optional<JsonDocument> document;
+    parse(text, take, in, document);
+    return finished(top, std::move(shadowed));
+  }
+
+  // The checks once every member is read: no unknown key at the top, the lit polygons and
+  // the sun hours (checked with every face read).
+  ShadowedScene finished(JsonObject& top, ShadowedScene shadowed) const {
+    (void)top.get("faces").array();
+    top.finish();
     check_lit(shadowed);
     check_sun_hours(shadowed);
     return shadowed;
   }
 
- private:
   // The members read before the faces, in this order: which of them the root has.
   static constexpr const char* kHeader[] = {"format", "shard", "method",
                                             "lights", "views", "sun_paths"};
@@ -837,7 +872,6 @@ class DatabaseParser {
   const std::string file_;
   const ReadOptions options_;
   std::vector<std::string>& warnings_;
-  const bool stream_faces_;
   detail::IdRegistry face_ids_;
   std::unordered_map<std::string, std::size_t> light_index_;
   // Each face's lists of lit polygons, checked once all are read (check_lit): where each
@@ -856,13 +890,13 @@ class DatabaseParser {
 
 ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path,
                              const ReadOptions& options, std::vector<std::string>& warnings) {
-  return DatabaseParser(path, options, warnings, true).run(&json_text);
+  return DatabaseParser(path, options, warnings).run(&json_text);
 }
 
 ShadowedScene read_database(const std::filesystem::path& path, const ReadOptions& options,
                             std::vector<std::string>& warnings) {
   if (path == "-") return parse_database(read_text_file(path), path, options, warnings);
-  return DatabaseParser(path, options, warnings, true).run(nullptr);
+  return DatabaseParser(path, options, warnings).run(nullptr);
 }
 
 ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path) {

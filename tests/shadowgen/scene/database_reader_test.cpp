@@ -370,13 +370,47 @@ TEST(DatabaseReaderSunHours, LitPolygonsOfAnInstantWhosePolygonsWereDroppedAreAn
 }
 
 // A shard (generate --instants 1/1) of the courtyard over 21 March, its sums in nodes.
-nlohmann::json court_shard() {
+std::string court_shard_text() {
   GenerateOptions options;
   options.threads = 1;
   options.shard = ShardPlace{0, 1};
   const Scene scene =
       parse_scene(test::site_scene(test::kCourtyard, test::kMarch21), "court.json").scene;
-  return nlohmann::json::parse(database_json(generate_shadows(scene, options).shadowed));
+  return database_json(generate_shadows(scene, options).shadowed);
+}
+
+nlohmann::json court_shard() { return nlohmann::json::parse(court_shard_text()); }
+
+// JSON objects are unordered: a sampled method's database with "method" after "faces",
+// and a shard with "shard" after them (its faces hold "lit_area" in place of "lit", and
+// "nodes" in place of "regions"), read as written, from the text and from the file; so
+// does a face's error, which names the face.
+TEST(DatabaseReader, AMethodOrAShardAfterTheFacesReadsAsWritten) {
+  const test::TempFolder folder("database_reader_order");
+  ShadowedScene sampled = test::sun_path_by_hand();
+  sampled.method = {MethodKind::kRays, 64};
+  sampled.sun_paths[0].regions_kept = false;
+  sampled.sun_paths[0].regions.clear();
+  sampled.estimated_lit_area.assign(sampled.scene.lights.size(), {});
+  const std::vector<std::string> written = {database_json(sampled), court_shard_text()};
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    const nlohmann::ordered_json db = nlohmann::ordered_json::parse(written[i]);
+    ASSERT_TRUE(db.contains(i == 0 ? "method" : "shard"));
+    nlohmann::ordered_json late = nlohmann::ordered_json::object();
+    for (const auto& [key, value] : db.items()) {
+      if (key != "method" && key != "shard") late[key] = value;
+    }
+    for (const char* key : {"method", "shard"}) {
+      if (db.contains(key)) late[key] = db[key];
+    }
+    const std::filesystem::path file = folder.write("late.json", late.dump());
+    EXPECT_EQ(database_json(parse_database(late.dump(), "db.json")), written[i]) << i;
+    EXPECT_EQ(database_json(read_database(file)), written[i]) << i;
+    late["faces"][0]["parts"] = nlohmann::ordered_json::array();
+    const Refusal r = refusal(late.dump());
+    EXPECT_EQ(r.problem, "faces[0].parts: a face needs at least one polygon") << i;
+    EXPECT_EQ(r.face, i == 0 ? "g" : "ground") << i;
+  }
 }
 
 // That shard with the ground's nodes changed by `change`, read back: its problem.
