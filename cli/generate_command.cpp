@@ -128,8 +128,8 @@ ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std:
     options.shard = parse_shard(args.instants);
     options.on_scene = [&, check = options.on_scene](const Scene& scene) {
       check(scene);
-      const bool paths = std::any_of(scene.lights.begin(), scene.lights.end(),
-                                     [](const Light& l) { return l.sun && l.sun->step_min > 0; });
+      const bool paths = !scene.sun_paths.empty() ||
+                         std::any_of(scene.lights.begin(), scene.lights.end(), in_sun_path);
       if (!paths) {
         throw InputError(args.scenes[index], "",
                          "--instants shares out the instants of sun paths, and the scene has "

@@ -63,6 +63,16 @@ struct Light {
   std::optional<SunInstant> sun;    // directional lights a `sun` entry placed
 };
 
+// A `sun` entry with from, to and step_min (docs/scene-format.md, "Site and sun path"): a
+// sun path. Its instants are the lights whose Light::sun names it, those with the sun up;
+// it may have none (the sun below the horizon at every step, a polar night) and is a path
+// all the same, whose every step has no sun.
+struct SunPathSpan {
+  std::string id;
+  int step_min = 0;      // positive
+  std::string from, to;  // local standard time, written as SunInstant::time is
+};
+
 // Whether `light` is an instant of a sun path (a `sun` entry's from/to/step_min), not a
 // light of its own.
 inline bool in_sun_path(const Light& light) { return light.sun && light.sun->step_min > 0; }
@@ -116,6 +126,9 @@ struct Scene {
   std::vector<Face> faces;  // polygons first, then mesh faces, in file order
   // In file order; a `sun` entry is its instants, in time order, where it stood.
   std::vector<Light> lights;
+  // The sun paths, in file order (the order of their instants among the lights), those
+  // without an instant included.
+  std::vector<SunPathSpan> sun_paths;
   std::vector<ViewSpec> views;
   std::optional<Site> site;  // the scene's own, or else its weather file's
   std::optional<Weather> weather;

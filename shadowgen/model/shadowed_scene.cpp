@@ -1,5 +1,6 @@
 #include "shadowgen/model/shadowed_scene.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,10 +40,16 @@ const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_vi
 
 void require_sun_path(const Scene& scene, std::string_view id, const std::string& file) {
   std::vector<std::string> known;
+  for (const SunPathSpan& path : scene.sun_paths) {
+    if (path.id == id) return;  // with or without an instant
+    known.push_back(path.id);
+  }
   for (const Light& light : scene.lights) {
     if (!light.sun || light.sun->step_min == 0) continue;  // not an instant of a path
     if (light.sun->sun_id == id) return;
-    if (known.empty() || known.back() != light.sun->sun_id) known.push_back(light.sun->sun_id);
+    if (std::find(known.begin(), known.end(), light.sun->sun_id) == known.end()) {
+      known.push_back(light.sun->sun_id);
+    }
   }
   throw_no_sun_path(id, known, file);
 }

@@ -108,7 +108,7 @@ const SunPathHours& sun_path_named(const ShadowedScene& shadowed, std::string_vi
 // The same check on a scene read but not yet generated, so that a command asked for a
 // path the scene does not have stops before computing its shadows: throws what
 // sun_path_named throws where no `sun` entry of the scene with from, to and step_min has
-// that id and an instant with the sun up.
+// that id (Scene::sun_paths, or the lights its instants placed).
 void require_sun_path(const Scene& scene, std::string_view id, const std::string& file);
 
 // Throws InputError naming `file` where `path` was summed into lit areas alone

@@ -186,6 +186,22 @@ class DatabaseParser {
     if (const std::optional<JsonValue> paths = top.find("sun_paths")) {
       read_sun_paths(*paths, shadowed);
     }
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+      const std::optional<SunInstant>& sun = shadowed.scene.lights[l].sun;
+      if (!sun || sun->step_min <= 0) continue;
+      const auto path = std::find_if(shadowed.sun_paths.begin(), shadowed.sun_paths.end(),
+                                     [&sun](const SunPathHours& p) { return p.id == sun->sun_id; });
+      if (path == shadowed.sun_paths.end()) {
+        const std::string& id = shadowed.scene.lights[l].id;
+        lights.at(l)
+            .named("light '" + one_line(id) + "'", id)
+            .fail("an instant of sun path '" + one_line(sun->sun_id) +
+                  "' (its sun's entry, with a step_min), which \"sun_paths\" does not have");
+      }
+    }
+    for (const SunPathHours& path : shadowed.sun_paths) {
+      shadowed.scene.sun_paths.push_back({path.id, path.step_min, path.from, path.to});
+    }
     if (!shadowed.method.exact()) {
       for (const SunPathHours& path : shadowed.sun_paths) {
         if (path.regions_kept || path.lit_polygons_kept) {
@@ -274,7 +290,9 @@ class DatabaseParser {
     return {seconds[0], seconds[1]};
   }
 
-  // "sun_paths": each path's instants are the lights whose "sun" names it, in order.
+  // "sun_paths": each path's instants are the lights whose "sun" names it, in order: each
+  // at a time on the path's steps from "from" to "to", after the one before it. A path
+  // may have none (the sun below the horizon at every step: a polar night).
   void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
     const JsonArray paths = value.array();
     detail::IdRegistry ids;
@@ -284,6 +302,7 @@ class DatabaseParser {
       path.id = detail::read_claimed_id(entry, ids, "sun path");
       const JsonValue step = entry.get("step_min");
       path.step_min = static_cast<int>(std::min<std::size_t>(step.index(), 1'000'001));
+      if (path.step_min <= 0) step.fail("a sun path needs a positive step_min");
       const auto [from, to] = read_span(entry, path);
       const JsonValue kept = entry.get("instant_polygons");
       if (kept.string() != "kept" && kept.string() != "dropped") {
@@ -299,26 +318,40 @@ class DatabaseParser {
         if (regions->string() != "dropped") regions->fail("expected 'dropped' (or no key)");
         path.regions_kept = false;
       }
+      const std::int64_t step_s = std::int64_t{path.step_min} * 60;
+      std::int64_t before = 0;  // the time of the path's instant before
       for (std::size_t l = 0; l < shadowed.scene.lights.size(); ++l) {
         const std::optional<SunInstant>& sun = shadowed.scene.lights[l].sun;
         if (!sun || sun->sun_id != path.id) continue;
+        const std::string instant =
+            "light '" + one_line(shadowed.scene.lights[l].id) + "' of this path";
         if (sun->step_min != path.step_min) {
-          step.fail("light '" + shadowed.scene.lights[l].id + "' of this path stands for " +
-                    std::to_string(sun->step_min) + " minutes, the path says " +
-                    std::to_string(path.step_min));
+          step.fail(instant + " stands for " + std::to_string(sun->step_min) +
+                    " minutes, the path says " + std::to_string(path.step_min));
         }
         const std::optional<sun::CivilTime> time = sun::parse_civil_time(sun->time);
-        if (!time || sun::seconds_since_1970(*time) < from || sun::seconds_since_1970(*time) > to) {
-          entry.get("to").fail("light '" + shadowed.scene.lights[l].id + "' of this path is at " +
-                               sun->time + ", outside its span from " + path.from + " to " +
-                               path.to);
+        if (!time) {
+          entry.value().fail(instant + " is at '" + one_line(sun->time) +
+                             "', not a local time YYYY-MM-DDTHH:MM (seconds optional)");
         }
+        const std::int64_t at = sun::seconds_since_1970(*time);
+        if (at < from || at > to) {
+          entry.get("to").fail(instant + " is at " + sun->time + ", outside its span from " +
+                               path.from + " to " + path.to);
+        }
+        if ((at - from) % step_s != 0) {
+          step.fail(instant + " is at " + sun->time + ", not on one of its " +
+                    std::to_string(path.step_min) + "-minute steps from " + path.from);
+        }
+        if (!path.instants.empty() && at <= before) {
+          const Light& last = shadowed.scene.lights[path.instants.back()];
+          entry.value().fail(instant + " is at " + sun->time + ", " +
+                             (at == before ? "the time" : "before the time") + " of light '" +
+                             one_line(last.id) + "' before it (" + last.sun->time +
+                             "): a path's instants come in time order, one per step");
+        }
+        before = at;
         path.instants.push_back(l);
-      }
-      if (path.step_min <= 0 || path.instants.empty()) {
-        entry.value().fail(
-            "a sun path needs a positive step_min and lights with its id as "
-            "their sun's entry");
       }
       entry.finish();
       if (shadowed.shard) {

@@ -114,9 +114,10 @@ class SceneParser {
       lights.push_back(detail::read_light(value, light_ids_, detail::Source::kScene));
       return;
     }
-    std::vector<Light> instants = detail::read_sun_light(value, light_ids_, result_.scene.site);
-    lights.insert(lights.end(), std::make_move_iterator(instants.begin()),
-                  std::make_move_iterator(instants.end()));
+    detail::SunEntryRead sun = detail::read_sun_light(value, light_ids_, result_.scene.site);
+    lights.insert(lights.end(), std::make_move_iterator(sun.lights.begin()),
+                  std::make_move_iterator(sun.lights.end()));
+    if (sun.path) result_.scene.sun_paths.push_back(std::move(*sun.path));
   }
 
   // Polygon ids and mesh ids share one namespace (a polygon id never contains '/', and a

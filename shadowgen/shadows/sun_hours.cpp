@@ -250,20 +250,26 @@ std::vector<SunHoursRegion> FaceSunHours::regions(int step_min) const {
 }
 
 std::vector<SunPathHours> sun_paths_of(const Scene& scene) {
+  const auto path_of = [](const std::string& id, int step_min, const std::string& from,
+                          const std::string& to) {
+    SunPathHours path;
+    path.id = id;
+    path.step_min = step_min;
+    path.from = from;
+    path.to = to;
+    return path;
+  };
   std::vector<SunPathHours> paths;
   std::map<std::string, std::size_t> index;
+  for (const SunPathSpan& span : scene.sun_paths) {
+    index.emplace(span.id, paths.size());
+    paths.push_back(path_of(span.id, span.step_min, span.from, span.to));
+  }
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const std::optional<SunInstant>& sun = scene.lights[l].sun;
     if (!sun || sun->step_min <= 0) continue;
     const auto [at, added] = index.emplace(sun->sun_id, paths.size());
-    if (added) {
-      SunPathHours path;
-      path.id = sun->sun_id;
-      path.step_min = sun->step_min;
-      path.from = sun->path_from;
-      path.to = sun->path_to;
-      paths.push_back(std::move(path));
-    }
+    if (added) paths.push_back(path_of(sun->sun_id, sun->step_min, sun->path_from, sun->path_to));
     paths[at->second].instants.push_back(l);
   }
   return paths;

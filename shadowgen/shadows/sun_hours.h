@@ -87,8 +87,9 @@ class FaceSunHours {
 };
 
 // The scene's sun paths (its `sun` entries with from, to and step_min, which placed the
-// lights whose Light::sun has step_min > 0), in the order of their first instant, with
-// their instants; lit_area and regions left empty.
+// lights whose Light::sun has step_min > 0), with their instants: Scene::sun_paths in
+// order, those without an instant included, then any path only lights name, in the order
+// of their first instant; lit_area and regions left empty.
 std::vector<SunPathHours> sun_paths_of(const Scene& scene);
 
 }  // namespace shadowgen

@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/cli/cli_harness.h"
@@ -202,6 +204,58 @@ TEST_F(SunCli, LitAreasAloneServeTheScheduleButNotTheSunHoursRegions) {
   EXPECT_EQ(bands.code, 1);
   EXPECT_EQ(bands.err, refused + "an export by hour bands needs: generate without --areas-only\n");
   EXPECT_EQ(files(), std::vector<std::string>({"yard.json", "yard.shadowed.json"}));
+}
+
+// 21 December at Tromsø (69.65° N): the sun below the horizon at every hour. A polar
+// night is a sun path with no sun, not an error: every face gets 0 sun hours and the
+// shading schedule a row of zeros at each of the 24 steps, from the scene and from its
+// database alike, and shards of it merge into the file one run writes.
+TEST_F(SunCli, APolarNightIsAPathWithNoSun) {
+  std::string night = kYard;
+  night.replace(night.find("51.4779"), 7, "69.65");
+  night.replace(night.find("-0.0015"), 7, "18.96");
+  night.replace(night.find(R"("utc_offset_h": 0)"), 17, R"("utc_offset_h": 1)");
+  night.replace(night.find("2026-03-21T06:00"), 16, "2026-12-21T00:00");
+  night.replace(night.find("2026-03-21T18:30"), 16, "2026-12-21T23:00");
+  night.replace(night.find(R"("step_min": 30)"), 14, R"("step_min": 60)");
+  night.replace(night.find("march21"), 7, "dec21");
+  const fs::path scene = write("tromso.json", night);
+  const fs::path db = dir_ / "tromso.shadowed.json";
+  const Outcome generated = run({"generate", scene.string(), "-o", db.string()});
+  ASSERT_EQ(generated.code, 0) << generated.err;
+  EXPECT_EQ(generated.err, "shadowgen: warning: " + scene.string() +
+                               ": light 'dec21': lights[0] ('dec21'): the sun is below the "
+                               "horizon at every instant of the path\n");
+  for (const fs::path& input : {scene, db}) {
+    const Outcome hours = run({"report", input.string(), "--format", "sun-hours"});
+    ASSERT_EQ(hours.code, 0) << hours.err;
+    EXPECT_EQ(hours.out,
+              "face_id,sun_path,area,mean_sun_hours,min_sun_hours,max_sun_hours,"
+              "area_at_least_2h\n"
+              "yard,dec21,100,0,0,0,0\n"
+              "wall,dec21,40,0,0,0,0\n");
+    const Outcome schedule = run({"report", input.string(), "--format", "energyplus"});
+    ASSERT_EQ(schedule.code, 0) << schedule.err;
+    const std::vector<std::string> rows = lines(schedule.out);
+    ASSERT_EQ(rows.size(), 1u + 24u);
+    EXPECT_EQ(rows[0], "Surface Name,YARD,WALL,");
+    for (int hour = 1; hour <= 24; ++hour) {
+      const std::string stamp = (hour < 10 ? " 12/21 0" : " 12/21 ") + std::to_string(hour);
+      EXPECT_EQ(rows[static_cast<std::size_t>(hour)], stamp + ":00,0.00000000,0.00000000,");
+    }
+  }
+  std::vector<std::string> merge = {"merge"};
+  for (const char* share : {"1/2", "2/2"}) {
+    const fs::path shard = dir_ / ("shard-" + std::string(share, 1) + ".json");
+    const Outcome o = run({"generate", scene.string(), "-o", shard.string(), "--instants", share});
+    ASSERT_EQ(o.code, 0) << o.err;
+    merge.push_back(shard.string());
+  }
+  const fs::path merged = dir_ / "merged.json";
+  merge.insert(merge.end(), {"-o", merged.string()});
+  const Outcome joined = run(merge);
+  ASSERT_EQ(joined.code, 0) << joined.err;
+  EXPECT_EQ(contents(merged), contents(db));
 }
 
 TEST_F(SunCli, NoSunPathOrAThresholdWithoutTheFormatIsAnError) {

@@ -87,7 +87,7 @@ class SunEntry {
     return {instant_light(id_, {id_, sun::civil_text(time), 0}, site_, p)};
   }
 
-  std::vector<Light> path() {
+  std::vector<Light> path(std::optional<SunPathSpan>& span) {
     const JsonValue from_value = entry_.get("from");
     const JsonValue to_value = entry_.get("to");
     const JsonValue step_value = entry_.get("step_min");
@@ -105,6 +105,7 @@ class SunEntry {
       step_value.fail("the path has " + std::to_string(count) + " instants, more than the " +
                       std::to_string(kMaxSunInstants) + " a sun path may have");
     }
+    span = SunPathSpan{id_, step_min, sun::civil_text(from), sun::civil_text(to)};
     std::vector<Light> lights;
     for (std::int64_t k = 0; k < count; ++k) {
       const sun::CivilTime time = sun::civil_time_at(first + k * step_s);
@@ -140,8 +141,8 @@ bool is_sun_light(const JsonValue& value) {
   return type && type->describe() == "a string" && type->string() == "sun";
 }
 
-std::vector<Light> read_sun_light(const JsonValue& value, IdRegistry& ids,
-                                  const std::optional<Site>& site) {
+SunEntryRead read_sun_light(const JsonValue& value, IdRegistry& ids,
+                            const std::optional<Site>& site) {
   JsonObject entry = value.object();
   std::string id = read_claimed_id(entry, ids, "light");
   (void)entry.get("type");
@@ -159,9 +160,10 @@ std::vector<Light> read_sun_light(const JsonValue& value, IdRegistry& ids,
     entry.value().fail("a sun light needs 'time', or 'from', 'to' and 'step_min'");
   }
   SunEntry sun(entry, ids, *site, std::move(id));
-  std::vector<Light> lights = time ? sun.single(*time) : sun.path();
+  SunEntryRead read;
+  read.lights = time ? sun.single(*time) : sun.path(read.path);
   entry.finish();
-  return lights;
+  return read;
 }
 
 }  // namespace shadowgen::detail

@@ -6,7 +6,8 @@
 //   sun at or below the horizon then is an error naming the light;
 // - with "from", "to" and "step_min" (a positive whole number of minutes): one light per
 //   instant from `from` to `to` inclusive whose apparent elevation is above 0, in time
-//   order, named `<id>@<YYYY-MM-DDTHH:MM>`; a path with none draws a warning.
+//   order, named `<id>@<YYYY-MM-DDTHH:MM>`; a path with none (a polar night) is a path
+//   all the same, and draws a warning.
 // Every id is claimed in `ids`. A light's direction is the way the light travels: minus the
 // vector toward the sun in scene axes (+z up, +y at `north_axis_deg` clockwise from true
 // north), scaled like every directional light (Light::direction).
@@ -30,7 +31,14 @@ inline constexpr std::size_t kMaxSunInstants = 1'000'000;
 // Whether lights[i] is a `sun` entry (to be read here rather than by read_light).
 bool is_sun_light(const JsonValue& value);
 
-std::vector<Light> read_sun_light(const JsonValue& value, IdRegistry& ids,
-                                  const std::optional<Site>& site);
+// The lights a `sun` entry places, and the sun path it is (with from, to and step_min;
+// nullopt for a `time`), which stands even where no light does.
+struct SunEntryRead {
+  std::vector<Light> lights;
+  std::optional<SunPathSpan> path;
+};
+
+SunEntryRead read_sun_light(const JsonValue& value, IdRegistry& ids,
+                            const std::optional<Site>& site);
 
 }  // namespace shadowgen::detail

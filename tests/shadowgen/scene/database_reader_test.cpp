@@ -352,9 +352,8 @@ TEST(DatabaseReaderSunHours, SumsThatDoNotTileTheFaceOrMatchTheLitAreasAreErrors
   EXPECT_EQ(sun_path_problem([](nlohmann::json& db) { db["faces"][0].erase("sun_hours"); }),
             "faces[0]: missing 'sun_hours'");
   EXPECT_EQ(sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["id"] = "q"; }),
-            "sun path 'q': sun_paths[0] ('q'): a sun path needs a positive step_min and lights "
-            "with its id as "
-            "their sun's entry");
+            "light 'p@0': lights[0] ('p@0'): an instant of sun path 'p' (its sun's entry, with a "
+            "step_min), which \"sun_paths\" does not have");
 }
 
 // A path whose instant polygons were dropped keeps only its instants' lit areas: a face
@@ -487,6 +486,55 @@ TEST(DatabaseReaderSunHours, APathsSpanMustBeTimesInOrderHoldingItsInstants) {
       sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["to"] = "2026-03-21T12:30"; }),
       "sun path 'p': sun_paths[0] ('p').to: light 'p@3' of this path is at 2026-03-21T13:00, "
       "outside its span from 2026-03-21T10:00 to 2026-03-21T12:30");
+}
+
+// A path's instants are its lights in the file's order: each on one of the path's steps
+// from "from", after the one before it (the shading schedule puts each lit area on the
+// step of its instant's time, the sun hours count one step per instant).
+TEST(DatabaseReaderSunHours, APathsInstantsComeInTimeOrderOnItsSteps) {
+  const auto at = [](int light, const char* time) {
+    return [light, time](nlohmann::json& db) { db["lights"][light]["sun"]["time"] = time; };
+  };
+  EXPECT_EQ(sun_path_problem(at(2, "2026-03-21T11:00")),
+            "sun path 'p': sun_paths[0] ('p'): light 'p@2' of this path is at 2026-03-21T11:00, "
+            "the time of light 'p@1' before it (2026-03-21T11:00): a path's instants come in "
+            "time order, one per step");
+  EXPECT_EQ(sun_path_problem(at(1, "2026-03-21T12:30")),
+            "sun path 'p': sun_paths[0] ('p'): light 'p@2' of this path is at 2026-03-21T12:00, "
+            "before the time of light 'p@1' before it (2026-03-21T12:30): a path's instants "
+            "come in time order, one per step");
+  EXPECT_EQ(sun_path_problem(at(1, "2026-03-21T11:10")),
+            "sun path 'p': sun_paths[0] ('p').step_min: light 'p@1' of this path is at "
+            "2026-03-21T11:10, not on one of its 30-minute steps from 2026-03-21T10:00");
+  EXPECT_EQ(sun_path_problem(at(0, "noon")),
+            "sun path 'p': sun_paths[0] ('p'): light 'p@0' of this path is at 'noon', not a "
+            "local time YYYY-MM-DDTHH:MM (seconds optional)");
+}
+
+// A path with the sun below the horizon at every step (21 December at Tromsø, 69.65° N) is
+// a path all the same: no instant, every face's one region of 0 hours, read back as
+// written.
+TEST(DatabaseReaderSunHours, APathWithoutAnInstantReadsBackAsWritten) {
+  const std::string scene =
+      R"({"format": "shadowgen-scene/1",
+          "polygons": [{"id": "g", "outer": [[0,0,0],[4,0,0],[4,4,0],[0,4,0]]}],
+          "site": {"latitude_deg": 69.65, "longitude_deg": 18.96, "utc_offset_h": 1},
+          "lights": [{"id": "dec21", "type": "sun", "from": "2026-12-21T00:00",
+                      "to": "2026-12-21T23:00", "step_min": 60}]})";
+  const std::string text = database_json(test::generated(scene));
+  const ShadowedScene read = parse_database(text, "db.json");
+  ASSERT_EQ(read.sun_paths.size(), 1u);
+  const SunPathHours& night = read.sun_paths[0];
+  EXPECT_EQ(night.id, "dec21");
+  EXPECT_EQ(night.from, "2026-12-21T00:00");
+  EXPECT_EQ(night.to, "2026-12-21T23:00");
+  EXPECT_TRUE(night.instants.empty());
+  EXPECT_TRUE(read.scene.lights.empty());
+  ASSERT_EQ(night.regions.size(), 1u);
+  ASSERT_EQ(night.regions[0].size(), 1u);
+  EXPECT_EQ(night.regions[0][0].hours, 0.0);
+  EXPECT_EQ(lit_area(night.regions[0][0].polygons), 16.0);
+  EXPECT_EQ(database_json(read), text);
 }
 
 // The dart of kDartUnderRoof, a face of two parts, over a morning: each part's lit areas.

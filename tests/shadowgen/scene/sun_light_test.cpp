@@ -176,12 +176,19 @@ TEST(SunLight, AMisspeltKeyWarnsWithTheKeyMeant) {
                                      "(did you mean 'step_min'?)"}));
 }
 
+// The sun down at every step: no light, a warning, and a path all the same (a polar
+// night has 0 sun hours, not none).
 TEST(SunPath, WithTheSunAlwaysDownIsEmptyAndSaysSo) {
   const ReadResult r = read(
       scene(kGreenwich,
             R"({"id": "night", "type": "sun", "from": "2026-03-21T20:00", "to": "2026-03-21T23:00",
           "step_min": 60})"));
   EXPECT_TRUE(r.scene.lights.empty());
+  ASSERT_EQ(r.scene.sun_paths.size(), 1u);
+  EXPECT_EQ(r.scene.sun_paths[0].id, "night");
+  EXPECT_EQ(r.scene.sun_paths[0].step_min, 60);
+  EXPECT_EQ(r.scene.sun_paths[0].from, "2026-03-21T20:00");
+  EXPECT_EQ(r.scene.sun_paths[0].to, "2026-03-21T23:00");
   EXPECT_EQ(r.warnings, std::vector<std::string>{
                             std::string(kFile) +
                             ": light 'night': lights[0] ('night'): the sun is below the horizon "
