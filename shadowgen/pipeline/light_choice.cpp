@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -13,15 +15,31 @@
 namespace shadowgen {
 namespace {
 
-// Whether each of the scene's lights is kept.
+// An instant of a sun path chosen without the rest of its path: a light of its own, as a
+// `sun` entry with its id and its `time` would place it, so that nothing takes the one
+// instant for the path (its sun hours, its shading schedule).
+void own_light(Light& light) {
+  light.sun->sun_id = light.id;
+  light.sun->step_min = 0;
+  light.sun->path_from.clear();
+  light.sun->path_to.clear();
+}
+
+// Whether each of the scene's lights is kept; `named_paths` gets the sun paths named by
+// their id (Scene::sun_paths).
 std::vector<bool> chosen(const Scene& scene, std::span<const std::string> ids,
-                         const std::string& file) {
+                         const std::string& file, std::set<std::string>& named_paths) {
   std::vector<bool> keep(scene.lights.size(), false);
   for (const std::string& id : ids) {
     const auto named = [&id](const Light& light) {
       return light.id == id || (light.sun && light.sun->sun_id == id);
     };
     bool found = false;
+    for (const SunPathSpan& path : scene.sun_paths) {
+      if (path.id != id) continue;
+      named_paths.insert(id);
+      found = true;
+    }
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
       if (!named(scene.lights[k])) continue;
       keep[k] = true;
@@ -29,8 +47,15 @@ std::vector<bool> chosen(const Scene& scene, std::span<const std::string> ids,
     }
     if (!found) {
       std::string known;
-      for (const Light& light : scene.lights) {
-        known += (known.empty() ? "" : ", ") + std::string("'") + one_line(light.id) + "'";
+      const auto add = [&known](const std::string& name) {
+        known += (known.empty() ? "" : ", ") + std::string("'") + one_line(name) + "'";
+      };
+      for (const Light& light : scene.lights) add(light.id);
+      for (const SunPathSpan& path : scene.sun_paths) {
+        const bool placed = std::any_of(
+            scene.lights.begin(), scene.lights.end(),
+            [&path](const Light& l) { return in_sun_path(l) && l.sun->sun_id == path.id; });
+        if (!placed) add(path.id);  // a path without an instant
       }
       throw InputError(file, "",
                        "--lights names '" + one_line(id) + "', which is not a light of it (" +
@@ -39,6 +64,32 @@ std::vector<bool> chosen(const Scene& scene, std::span<const std::string> ids,
     }
   }
   return keep;
+}
+
+// Keeps the sun paths of `scene` whose instants are all kept (`keep`, per light) and, of
+// those without an instant, the ones named; the instants kept of any other path become
+// lights of their own (own_light).
+void keep_paths(Scene& scene, const std::vector<bool>& keep,
+                const std::set<std::string>& named_paths) {
+  std::map<std::string, std::pair<std::size_t, std::size_t>> counts;  // id: instants, kept
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    if (!in_sun_path(scene.lights[l])) continue;
+    auto& [instants, kept] = counts[scene.lights[l].sun->sun_id];
+    ++instants;
+    kept += keep[l] ? 1 : 0;
+  }
+  const auto whole = [&](const std::string& id) {
+    const auto at = counts.find(id);
+    return at == counts.end() ? named_paths.contains(id) : at->second.first == at->second.second;
+  };
+  std::vector<bool> own(scene.lights.size(), false);
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    own[l] = keep[l] && in_sun_path(scene.lights[l]) && !whole(scene.lights[l].sun->sun_id);
+  }
+  std::erase_if(scene.sun_paths, [&whole](const SunPathSpan& path) { return !whole(path.id); });
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    if (own[l]) own_light(scene.lights[l]);
+  }
 }
 
 template <class T>
@@ -55,7 +106,10 @@ void keep_marked(std::vector<T>& items, const std::vector<bool>& keep) {
 
 void keep_lights(Scene& scene, std::span<const std::string> ids, const std::string& file) {
   if (ids.empty()) return;
-  keep_marked(scene.lights, chosen(scene, ids, file));
+  std::set<std::string> named_paths;
+  const std::vector<bool> keep = chosen(scene, ids, file, named_paths);
+  keep_paths(scene, keep, named_paths);
+  keep_marked(scene.lights, keep);
 }
 
 std::vector<std::string> keep_spread_instants(Scene& scene, std::size_t per_path) {
@@ -90,10 +144,12 @@ std::vector<std::string> keep_spread_instants(Scene& scene, std::size_t per_path
 namespace {
 
 // Keeps the marked lights of a database with their lit polygons, and the sun paths all of
-// whose instants are kept (their indices renumbered). A path's sums cover all its instants:
-// one whose lit polygons were dropped cannot lose some of them; one that kept them becomes
-// plain lights.
-void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const std::string& file) {
+// whose instants are kept (their indices renumbered); of the paths without an instant,
+// those `named_paths` has, or every one where it is null. A path's sums cover all its
+// instants: one whose lit polygons were dropped cannot lose some of them; the instants
+// kept of one that kept them become lights of their own (own_light).
+void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const std::string& file,
+                 const std::set<std::string>* named_paths) {
   if (shadowed.lit.lights() != keep.size()) {
     throw std::invalid_argument("keep_lights: lit polygons for " +
                                 std::to_string(shadowed.lit.lights()) + " lights, " +
@@ -102,12 +158,17 @@ void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const s
   std::vector<std::size_t> renumbered(keep.size());
   for (std::size_t l = 0, next = 0; l < keep.size(); ++l) renumbered[l] = keep[l] ? next++ : 0;
   std::vector<SunPathHours> paths;
+  std::set<std::string> kept_ids;
   for (SunPathHours& path : shadowed.sun_paths) {
     const auto kept = static_cast<std::size_t>(
         std::count_if(path.instants.begin(), path.instants.end(),
                       [&keep](std::size_t l) { return static_cast<bool>(keep[l]); }));
-    if (kept == path.instants.size()) {
+    const bool whole = path.instants.empty()
+                           ? named_paths == nullptr || named_paths->contains(path.id)
+                           : kept == path.instants.size();
+    if (whole) {
       for (std::size_t& l : path.instants) l = renumbered[l];
+      kept_ids.insert(path.id);
       paths.push_back(std::move(path));
     } else if (kept > 0 && !path.lit_polygons_kept) {
       throw InputError(file, "",
@@ -116,9 +177,15 @@ void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const s
                            one_line(path.id) +
                            "', whose lit polygons were summed into sun hours: name the path "
                            "itself, or generate with --keep-instants");
+    } else {
+      for (const std::size_t l : path.instants) {
+        if (keep[l]) own_light(shadowed.scene.lights[l]);
+      }
     }
   }
   shadowed.sun_paths = std::move(paths);
+  std::erase_if(shadowed.scene.sun_paths,
+                [&kept_ids](const SunPathSpan& path) { return !kept_ids.contains(path.id); });
   keep_marked(shadowed.scene.lights, keep);
   shadowed.lit.keep_lights(keep);
   if (!shadowed.estimated_lit_area.empty()) keep_marked(shadowed.estimated_lit_area, keep);
@@ -129,7 +196,9 @@ void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const s
 void keep_lights(ShadowedScene& shadowed, std::span<const std::string> ids,
                  const std::string& file) {
   if (ids.empty()) return;
-  keep_marked(shadowed, chosen(shadowed.scene, ids, file), file);
+  std::set<std::string> named_paths;
+  const std::vector<bool> keep = chosen(shadowed.scene, ids, file, named_paths);
+  keep_marked(shadowed, keep, file, &named_paths);
 }
 
 std::vector<std::string> drop_summed_instants(ShadowedScene& shadowed, const std::string& file) {
@@ -141,7 +210,7 @@ std::vector<std::string> drop_summed_instants(ShadowedScene& shadowed, const std
     keep[l] = path == nullptr;
     if (path && (dropped.empty() || dropped.back() != path->id)) dropped.push_back(path->id);
   }
-  keep_marked(shadowed, keep, file);
+  keep_marked(shadowed, keep, file, nullptr);
   return dropped;
 }
 

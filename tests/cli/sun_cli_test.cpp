@@ -206,6 +206,39 @@ TEST_F(SunCli, LitAreasAloneServeTheScheduleButNotTheSunHoursRegions) {
   EXPECT_EQ(files(), std::vector<std::string>({"yard.json", "yard.shadowed.json"}));
 }
 
+// One instant of a path named alone is a light of its own, not the path: the sun-hours
+// report and the shading schedule, which need the whole path, say there is none (where
+// they gave 0.5 h for the instant and no sun at the path's other steps), and the
+// database holds the light with no path claiming the path's span.
+TEST_F(SunCli, AnInstantOfAPathNamedAloneIsALightOfItsOwnNotThePath) {
+  const fs::path scene = write("yard.json", kYard);
+  const std::string noon = "march21@2026-03-21T12:00";
+  for (const auto& [format, what] : {std::pair<std::string, std::string>{"sun-hours", "sun hours"},
+                                     {"energyplus", "a shading schedule"}}) {
+    const Outcome o = run({"report", scene.string(), "--format", format, "--lights", noon});
+    EXPECT_EQ(o.code, 1) << format;
+    EXPECT_EQ(o.err, "shadowgen: " + scene.string() +
+                         ": has no sun path (a `sun` light with from, to and step_min) to report " +
+                         what + " of\n");
+    EXPECT_EQ(o.out, "");
+  }
+  const fs::path db = dir_ / "noon.shadowed.json";
+  const Outcome generated = run({"generate", scene.string(), "-o", db.string(), "--lights", noon});
+  ASSERT_EQ(generated.code, 0) << generated.err;
+  const nlohmann::json written = nlohmann::json::parse(contents(db));
+  EXPECT_FALSE(written.contains("sun_paths"));
+  ASSERT_EQ(written.at("lights").size(), 1u);
+  EXPECT_EQ(written["lights"][0]["id"], noon);
+  EXPECT_EQ(written["lights"][0]["sun"]["entry"], noon);
+  EXPECT_EQ(written["lights"][0]["sun"]["step_min"], 0);
+  // Its lit polygons are the instant's: the report reads them back as the scene gives them.
+  const Outcome from_db = run({"report", db.string()});
+  ASSERT_EQ(from_db.code, 0) << from_db.err;
+  EXPECT_EQ(from_db.out, run({"report", scene.string(), "--lights", noon}).out);
+  EXPECT_EQ(lines(from_db.out).size(), 3u);
+  EXPECT_EQ(run({"report", db.string(), "--format", "sun-hours"}).code, 1);
+}
+
 // 21 December at Tromsø (69.65° N): the sun below the horizon at every hour. A polar
 // night is a sun path with no sun, not an error: every face gets 0 sun hours and the
 // shading schedule a row of zeros at each of the 24 steps, from the scene and from its

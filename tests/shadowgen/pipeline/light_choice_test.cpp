@@ -57,6 +57,42 @@ TEST(KeepLights, ASunPathsIdNamesAllItsInstants) {
   EXPECT_EQ(light_ids(one), (std::vector<std::string>{"down", "day@2026-03-21T11:00"}));
 }
 
+// An instant named without the rest of its path is a light of its own, as a `sun` entry
+// with its id and `time` places one: generated, it makes no sun path, so that nothing
+// takes the one instant for the whole path (1 h of sun where the path gives 3, a shading
+// schedule with no sun at the other steps). Every instant named is the path again.
+TEST(KeepLights, AnInstantNamedWithoutItsPathIsALightOfItsOwn) {
+  const Scene scene = parse_scene(
+                          R"({"format": "shadowgen-scene/1",
+                              "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+                              "site": {"latitude_deg": 51.4779, "longitude_deg": 0,
+                                       "utc_offset_h": 0},
+                              "lights": [{"id": "day", "type": "sun", "from": "2026-03-21T10:00",
+                                          "to": "2026-03-21T12:00", "step_min": 60}]})",
+                          "sun.json", {})
+                          .scene;
+  Scene one = scene;
+  keep_lights(one, std::vector<std::string>{"day@2026-03-21T11:00"}, "sun.json");
+  ASSERT_EQ(light_ids(one), (std::vector<std::string>{"day@2026-03-21T11:00"}));
+  const SunInstant& sun = one.lights[0].sun.value();
+  EXPECT_EQ(sun.sun_id, "day@2026-03-21T11:00");
+  EXPECT_EQ(sun.time, "2026-03-21T11:00");
+  EXPECT_EQ(sun.step_min, 0);
+  EXPECT_FALSE(in_sun_path(one.lights[0]));
+  const ShadowedScene generated = generate_shadows(one, {}).shadowed;
+  EXPECT_TRUE(generated.sun_paths.empty());
+  EXPECT_EQ(lit_area(generated.lit[0][0]), 1.0);  // a light with its lit polygons
+
+  Scene every = scene;
+  keep_lights(every,
+              std::vector<std::string>{"day@2026-03-21T12:00", "day@2026-03-21T10:00",
+                                       "day@2026-03-21T11:00"},
+              "sun.json");
+  const ShadowedScene path = generate_shadows(every, {}).shadowed;
+  ASSERT_EQ(path.sun_paths.size(), 1u);
+  EXPECT_EQ(path.sun_paths[0].instants, (std::vector<std::size_t>{0, 1, 2}));
+}
+
 // A comparison of view methods draws a few instants of each sun path, spread evenly
 // (ranks ⌊(i + ½)·n / k⌋), every light that is no path's instant, and all of a path no
 // longer than k.
