@@ -12,7 +12,9 @@ This script writes the seeds it can make on its own, named <kind>-<what>:
   - every clipper regression (tests/clipper/regressions/*.wkt) as a scene: the subject
     under the clip and a sun straight above, shadows asked for;
   - small meshes of every format, well formed or not (ASCII and binary STL and PLY);
-  - databases: a few written here, and, with --shadowgen BIN, the database BIN generates
+  - databases: a few written here (sun paths among them: instants at one time, out of
+    order or off the path's steps, a path with no instant, members after "faces"), a
+    polar night's scene, and, with --shadowgen BIN, the database BIN generates
     from examples/scenes/courtyard.json and shards 1 of 1 and 2 of 2 of a small sun path.
 The seeds named <kind>-test-* and <kind>-cli-* hold the malformed inputs of the tables in
 tests/shadowgen/scene/scene_reader_test.cpp and tests/cli/malformed_cli_test.cpp (each
@@ -26,6 +28,7 @@ inputs the fuzzer found that once broke an invariant.
 """
 
 import argparse
+import json
 import pathlib
 import struct
 import subprocess
@@ -345,6 +348,71 @@ end_header
     return out
 
 
+def sun_path_db(times=("10:00", "11:00", "12:00", "13:00"), order=None, method=False, shard=False):
+    """A database of face "g" (4 x 1) and sun path "p" summed into lit areas alone
+    (generate --areas-only), its instants p@0, p@1, ... at `times` on 21 March 2026 (none:
+    the sun down at every step), the path's span 10:00 to 13:00 every 30 minutes. `method`
+    makes it a rays run's, `shard` shard 1 of 1; `order` lists the members in the order
+    to write them (JSON objects are unordered)."""
+    lights = [{"id": f"p@{k}", "type": "directional", "direction": [0.0, 0.5, -0.5],
+               "intensity": [1.0, 1.0, 1.0],
+               "sun": {"entry": "p", "time": f"2026-03-21T{t}", "step_min": 30,
+                       "azimuth_deg": 180.0, "elevation_deg": 30.0}}
+              for k, t in enumerate(times)]
+    face = {"id": "g", "source_file": "s.json",
+            "parts": [{"outer": [[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [4.0, 1.0, 0.0], [0.0, 1.0, 0.0]],
+                       "holes": []}]}
+    if method:
+        face["lit_area"] = {}
+    else:
+        face["lit"] = {}
+    face["sun_hours"] = {"p": {"lit_area": [3.0, 3.0, 2.0, 1.0][:len(times)]}}
+    members = {"format": "shadowgen-shadowed/1"}
+    if shard:
+        members["shard"] = {"index": 1, "count": 1}
+    if method:
+        members["method"] = {"name": "rays", "samples": 64}
+    members.update({
+        "lights": lights, "views": [],
+        "sun_paths": [{"id": "p", "step_min": 30, "from": "2026-03-21T10:00",
+                       "to": "2026-03-21T13:00", "instant_polygons": "dropped",
+                       "regions": "dropped"}],
+        "faces": [face]})
+    if order is not None:
+        members = {key: members[key] for key in order if key in members}
+    return seed(DATABASE, json.dumps(members, indent=1))
+
+
+# A tiny yard at Tromsø (69.65 N) on 21 December, hourly: the sun is down at every step (a
+# polar night, a path with no instant); its shadows asked for.
+POLAR_NIGHT_SCENE = """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "yard", "outer": [[0,0,0],[4,0,0],[4,4,0],[0,4,0]]},
+              {"id": "wall", "outer": [[0,-0.5,0],[4,-0.5,0],[4,-0.5,2],[0,-0.5,2]]}],
+ "site": {"latitude_deg": 69.65, "longitude_deg": 18.96, "utc_offset_h": 1},
+ "lights": [{"id": "dec21", "type": "sun", "from": "2026-12-21T00:00", "to": "2026-12-21T23:00",
+             "step_min": 60},
+            {"id": "lamp", "type": "point", "position": [2, 2, 3]}]}
+"""
+
+
+def sun_path_seeds():
+    """Databases with sun paths: valid, their instants at one time, out of order or off the
+    path's steps, a path with no instant, and members after "faces"."""
+    late = ["format", "views", "faces", "lights", "sun_paths", "method", "shard"]
+    return {
+        "database-sun-path": sun_path_db(),
+        "database-sun-path-instants-repeated": sun_path_db(times=("10:00", "11:00", "11:00", "13:00")),
+        "database-sun-path-instants-out-of-order":
+            sun_path_db(times=("10:00", "12:30", "12:00", "13:00")),
+        "database-sun-path-instant-off-step": sun_path_db(times=("10:00", "11:10", "12:00", "13:00")),
+        "database-sun-path-polar-night": sun_path_db(times=()),
+        "database-lights-after-faces": sun_path_db(order=late),
+        "database-method-after-faces": sun_path_db(method=True, order=late),
+        "database-shard-after-faces": sun_path_db(shard=True, order=late),
+        "scene-sun-path-polar-night": seed(SCENE + GENERATE, POLAR_NIGHT_SCENE),
+    }
+
+
 def database_from_cli(shadowgen):
     with tempfile.TemporaryDirectory() as work:
         target = pathlib.Path(work) / "courtyard.shadowed.json"
@@ -386,6 +454,7 @@ def main():
     parser.add_argument("--shadowgen", help="the shadowgen executable, for the database seed")
     args = parser.parse_args()
     wanted = seeds()
+    wanted.update(sun_path_seeds())
     if args.check:
         stale = [n for n, d in wanted.items()
                  if not (CORPUS / n).is_file() or (CORPUS / n).read_bytes() != d]

@@ -67,7 +67,11 @@ for target in "${targets[@]}"; do
     # -max_len: the clip fuzzer's input format reads at most a few hundred bytes; the
     # readers take a scene or mesh of up to 64 KiB. -timeout: seconds for one input.
     clip) binary=clip_fuzzer corpus=clip flags=(-max_len=2048 -timeout=30) ;;
-    readers) binary=reader_fuzzer corpus=readers flags=(-max_len=65536 -timeout=10) ;;
+    # The readers' dictionary spells the formats' keys and values (readers.dict).
+    readers)
+      binary=reader_fuzzer corpus=readers
+      flags=(-max_len=65536 -timeout=10 -dict=tests/fuzz/readers.dict)
+      ;;
   esac
   echo "== run_fuzz.sh: $binary for $share s"
   cp -R "tests/fuzz/corpus/$corpus" "$work/$corpus"
