@@ -12,7 +12,10 @@
 //     a part without area is kept, as the scene reader keeps it;
 //   - the lit polygons of each (face, light) in the plane of their part, inside it, not
 //     overlapping, their area not above the face's, all within stated rounding
-//     (shadowgen/scene/detail/lit_checks.h).
+//     (shadowgen/scene/detail/lit_checks.h);
+//   - each sun path's instants (the lights whose sun names it) of its step, each at a
+//     time on one of the path's steps from its "from" to its "to", after the one before
+//     it; a path may have none (the sun down at every step).
 //
 // Every problem is an InputError naming the file, the face (when one is to blame), the
 // JSON path and what is wrong.
@@ -29,7 +32,9 @@ namespace shadowgen {
 // `path` names the file in messages. Warnings ("file: path: what" lines) are appended to
 // `warnings`. read_database reads a file as it parses it, its faces one by one, so that
 // it holds the shadowed scene and one face's document, never the whole text or document
-// ("-": standard input, held whole).
+// ("-": standard input, held whole). The members may come in any order: where one that
+// the faces depend on (the format, shard, method, lights, views, sun paths) comes after
+// "faces", the faces are read in a second parse, in the same memory.
 ShadowedScene parse_database(const std::string& json_text, const std::filesystem::path& path,
                              const ReadOptions& options, std::vector<std::string>& warnings);
 ShadowedScene read_database(const std::filesystem::path& path, const ReadOptions& options,

@@ -57,20 +57,26 @@ TEST(KeepLights, ASunPathsIdNamesAllItsInstants) {
   EXPECT_EQ(light_ids(one), (std::vector<std::string>{"down", "day@2026-03-21T11:00"}));
 }
 
+// A unit square "g" at a site (`site`: the members of "site") under `lights` (the inside
+// of the scene's "lights" array).
+Scene unit_square_under(const std::string& site, const std::string& lights) {
+  return parse_scene(R"({"format": "shadowgen-scene/1",
+                         "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
+                         "site": {)" +
+                         site + R"(}, "lights": [)" + lights + "]}",
+                     "sun.json", {})
+      .scene;
+}
+
 // An instant named without the rest of its path is a light of its own, as a `sun` entry
 // with its id and `time` places one: generated, it makes no sun path, so that nothing
 // takes the one instant for the whole path (1 h of sun where the path gives 3, a shading
 // schedule with no sun at the other steps). Every instant named is the path again.
 TEST(KeepLights, AnInstantNamedWithoutItsPathIsALightOfItsOwn) {
-  const Scene scene = parse_scene(
-                          R"({"format": "shadowgen-scene/1",
-                              "polygons": [{"id": "g", "outer": [[0,0,0],[1,0,0],[1,1,0],[0,1,0]]}],
-                              "site": {"latitude_deg": 51.4779, "longitude_deg": 0,
-                                       "utc_offset_h": 0},
-                              "lights": [{"id": "day", "type": "sun", "from": "2026-03-21T10:00",
-                                          "to": "2026-03-21T12:00", "step_min": 60}]})",
-                          "sun.json", {})
-                          .scene;
+  const Scene scene = unit_square_under(
+      R"("latitude_deg": 51.4779, "longitude_deg": 0, "utc_offset_h": 0)",
+      R"({"id": "day", "type": "sun", "from": "2026-03-21T10:00", "to": "2026-03-21T12:00",
+          "step_min": 60})");
   Scene one = scene;
   keep_lights(one, std::vector<std::string>{"day@2026-03-21T11:00"}, "sun.json");
   ASSERT_EQ(light_ids(one), (std::vector<std::string>{"day@2026-03-21T11:00"}));
@@ -91,6 +97,29 @@ TEST(KeepLights, AnInstantNamedWithoutItsPathIsALightOfItsOwn) {
   const ShadowedScene path = generate_shadows(every, {}).shadowed;
   ASSERT_EQ(path.sun_paths.size(), 1u);
   EXPECT_EQ(path.sun_paths[0].instants, (std::vector<std::size_t>{0, 1, 2}));
+}
+
+// A sun path with the sun down at every step has no instant to name it by: its id keeps
+// it, on a scene and on its database, and naming other lights drops it.
+TEST(KeepLights, APathWithoutAnInstantIsKeptWhereItsIdIsNamed) {
+  const Scene scene = unit_square_under(
+      R"("latitude_deg": 69.65, "longitude_deg": 18.96, "utc_offset_h": 1)",
+      R"({"id": "dec21", "type": "sun", "from": "2026-12-21T00:00", "to": "2026-12-21T23:00",
+          "step_min": 60},
+         {"id": "down", "type": "directional", "direction": [0, 0, -1]})");
+  ASSERT_EQ(light_ids(scene), (std::vector<std::string>{"down"}));
+  const ShadowedScene whole = generate_shadows(scene, {}).shadowed;
+  for (const char* id : {"dec21", "down"}) {
+    Scene chosen = scene;
+    keep_lights(chosen, std::vector<std::string>{id}, "sun.json");
+    ShadowedScene from_database = whole;
+    keep_lights(from_database, std::vector<std::string>{id}, "night.db.json");
+    const bool night = std::string(id) == "dec21";
+    EXPECT_EQ(chosen.sun_paths.size(), night ? 1u : 0u) << id;
+    EXPECT_EQ(light_ids(chosen), night ? std::vector<std::string>{} : light_ids(scene)) << id;
+    EXPECT_EQ(generate_shadows(chosen, {}).shadowed.sun_paths.size(), night ? 1u : 0u) << id;
+    EXPECT_EQ(from_database.sun_paths.size(), night ? 1u : 0u) << id;
+  }
 }
 
 // A comparison of view methods draws a few instants of each sun path, spread evenly
