@@ -186,19 +186,6 @@ class DatabaseParser {
     if (const std::optional<JsonValue> paths = top.find("sun_paths")) {
       read_sun_paths(*paths, shadowed);
     }
-    for (std::size_t l = 0; l < lights.size(); ++l) {
-      const std::optional<SunInstant>& sun = shadowed.scene.lights[l].sun;
-      if (!sun || sun->step_min <= 0) continue;
-      const auto path = std::find_if(shadowed.sun_paths.begin(), shadowed.sun_paths.end(),
-                                     [&sun](const SunPathHours& p) { return p.id == sun->sun_id; });
-      if (path == shadowed.sun_paths.end()) {
-        const std::string& id = shadowed.scene.lights[l].id;
-        lights.at(l)
-            .named("light '" + one_line(id) + "'", id)
-            .fail("an instant of sun path '" + one_line(sun->sun_id) +
-                  "' (its sun's entry, with a step_min), which \"sun_paths\" does not have");
-      }
-    }
     for (const SunPathHours& path : shadowed.sun_paths) {
       shadowed.scene.sun_paths.push_back({path.id, path.step_min, path.from, path.to});
     }

@@ -351,9 +351,9 @@ TEST(DatabaseReaderSunHours, SumsThatDoNotTileTheFaceOrMatchTheLitAreasAreErrors
             "faces[0].sun_hours.p: a lit area of 5, more than the face's area of 4");
   EXPECT_EQ(sun_path_problem([](nlohmann::json& db) { db["faces"][0].erase("sun_hours"); }),
             "faces[0]: missing 'sun_hours'");
+  // A path no light names has no instant; the faces' sums are then of a path they lack.
   EXPECT_EQ(sun_path_problem([](nlohmann::json& db) { db["sun_paths"][0]["id"] = "q"; }),
-            "light 'p@0': lights[0] ('p@0'): an instant of sun path 'p' (its sun's entry, with a "
-            "step_min), which \"sun_paths\" does not have");
+            "faces[0].sun_hours: missing 'q'");
 }
 
 // A path whose instant polygons were dropped keeps only its instants' lit areas: a face
