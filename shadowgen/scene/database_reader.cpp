@@ -66,8 +66,10 @@ class DatabaseParser {
       if (!top && !skipping) {
         header_then = header_present(root);
         skipping = !header_then[kFormat] || !header_then[kLights] || !header_then[kViews];
-        if (!skipping) top.emplace(root.object());
-        if (!skipping) guarded(too_early, [&] { read_header(*top, shadowed); });
+        if (!skipping) {
+          top.emplace(root.object());
+          guarded(too_early, [&] { read_header(*top, shadowed); });
+        }
       }
       if (!skipping && !too_early) guarded(too_early, [&] { read_face(face, shadowed); });
       return true;  // dropped: read, or left for the second pass
