@@ -8,8 +8,9 @@
 // at the target, a pixel 2·tan(fov/2)/h of it. Points near the target are projected with
 // a rounding of a few ε·D (ε = 2^-52), so a pixel must be many times that for the picture
 // to hold anything but rounding: at the narrowest field of view, 1e-6° (1.75e-8 rad, just
-// above √ε = 1.49e-8 rad), a pixel of the tallest picture `render` draws
-// (1,000,000 pixels) still spans 1.75e-14 D, 79 ε·D. The widest is below 180°, where tan(fov/2) is infinite.
+// above √ε = 1.49e-8 rad), a pixel of the tallest picture `render` draws (1,000,000
+// pixels) still spans 1.75e-14 D, 79 ε·D. The widest is below 180°, where tan(fov/2) is
+// infinite.
 //
 // Orthographic scale, in pixels per scene unit. Coordinates have magnitudes up to
 // kLargestCoordinate (1e100) and faces span at least kSmallestExtent (1e-100)

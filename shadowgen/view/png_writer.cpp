@@ -10,7 +10,8 @@
 
 namespace shadowgen {
 
-static_assert(kLargestPictureSide <= PNG_USER_WIDTH_MAX && kLargestPictureSide <= PNG_USER_HEIGHT_MAX,
+static_assert(kLargestPictureSide <= PNG_USER_WIDTH_MAX &&
+                  kLargestPictureSide <= PNG_USER_HEIGHT_MAX,
               "libpng is built to write narrower pictures than kLargestPictureSide");
 
 std::string png_bytes(const RgbImage& image) {
