@@ -18,12 +18,18 @@
 // occluder together away (2^30 of that size times sin θ is used, a safe margin). The slab
 // can be far thinner than a rounding of the occluder's coordinates (a sun 1e-40 from
 // grazing), so the occluder is charted in coordinates where it is not: s along the line
-// where its plane meets the face's, t = h / slab. Cut to 0 <= t <= 1 there, every piece is
-// projected vertex by vertex (the projection maps lines to lines) with moderate numbers:
-// affine in (s, t) for a directional light, central from the lamp for a point light,
-// where t is kept below 1 − 2^-40 so that no shadow reaches beyond 2^40 of the lamp's
-// distance to the occluder. Shadows are cut to the face's box before the difference;
-// the crossing points of that cut are accurate to the short edge's length (clip.h).
+// where its plane meets the face's, and a level across the slab. For a directional light
+// the level is t = h / slab, cut to 0 <= t <= 1, and the projection affine in (s, t). For
+// a point light it is u = (slab − h) / slab, taken from the lamp's own height above each
+// point, so that points a hair below the lamp's height, whose shadows reach 1/u of their
+// distance from it, keep their precision; u is cut to u_min <= u <= 1, u_min small enough
+// that the cut's shadow lies beyond the face's box (twice over), so a shadow reaches the
+// face's edge however many times farther than its occluder that is (a box a hair below a
+// lamp 1e-66 in size, its shadow on a ground 1e63 wide). The cut is Sutherland–Hodgman on
+// the two levels (the clipper would snap a level 1e-20 beside an s of 1 to 0), and every
+// piece is projected vertex by vertex (the projection maps lines to lines). Shadows are
+// cut to the face's box before the difference; the crossing points of that cut are
+// accurate to the short edge's length (clip.h).
 
 #include <span>
 #include <vector>

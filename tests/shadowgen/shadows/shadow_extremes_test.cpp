@@ -20,6 +20,7 @@
 #include <limits>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "shadowgen/model/input_error.h"
@@ -562,8 +563,8 @@ TEST(ExtremesRange, LitFractionsDoNotDependOnTheScaleUpToTheRangeEnds) {
 // it cut the top away and lit the walls, which face away from the lamp). The scene reader
 // now refuses a lamp whose nearest face is nearer than 1.19e-135 of its farthest vertex
 // (SceneReader.APointLightNearerToAFaceThanItsDepthRangeAllowsIsRefused); up to that
-// bound (at twice it with boxes of 1e-70 and 1e-99) every lit region matches the exact
-// oracle's. (The box's shadow is then a speck of the ground, lit to every digit.)
+// bound (just inside it, at 1.01 times it, with boxes of 1e-70 and 1e-99) every lit region
+// matches the exact oracle's. (The box's shadow is then a speck of the ground, lit to every digit.)
 TEST(ExtremesRange, ALampAHairAboveAFaceInASceneOfMixedScales) {
   const double least = 2.0 * std::sqrt(3.0) * 0x1p-450;
   for (const double small : {1e-30, 1e-60, 1e-66, 1e-70, 1e-99}) {
@@ -575,9 +576,9 @@ TEST(ExtremesRange, ALampAHairAboveAFaceInASceneOfMixedScales) {
     scene = scaled(scene, small);
     scene.lights = {point_light("lamp", {0.0, 0.0, (1.25 + 1e-6) * small})};
     const double nearest = scene.lights[0].position.z - 1.25 * small;
-    // The ground's corners at twice the least ratio, or at 1e60, where the oracle's
+    // The ground's corners at 1.01 times the least ratio, or at 1e60, where the oracle's
     // squared areas still convert to doubles.
-    const double wide = std::min(1e60, nearest / (2.0 * least * std::sqrt(2.0)));
+    const double wide = std::min(1e60, nearest / (1.01 * least * std::sqrt(2.0)));
     add_face(scene, "ground", ground(-wide, -wide, wide, wide));
     const OracleCheck check = check_against_oracle(scene, kTolerance);
     std::printf("[ a box %-6.3g under a lamp %.3g above, ground %.3g wide ] %s\n", small, nearest,
@@ -608,6 +609,61 @@ TEST(ExtremesRegression, LampsAHairAboveFaces) {
     EXPECT_EQ(check.failures, 0u) << "height " << height << "\n" << check.report;
     EXPECT_EQ(check.invalid, 0u) << "height " << height << "\n" << check.invalid_report;
   }
+}
+
+// A box 1 wide and 1 tall with a lamp 1e-6 above its top, beside a box 2 tall, on a ground
+// far wider than the lamp's height: the taller box stands above the lamp, so its shadow is
+// a wedge to the ground's edge, between the rays from the lamp's foot through its near
+// corners (1.5, ±0.5), a twelfth of a square ground centred under the lamp. The ground is
+// grazed (its lit region comes from its plane), and the shadow's far points are the
+// taller box's points a hair below the lamp's height, sent 1/u of their distance out. They
+// were charted at t = h / slab, kept below 1 − 2^-40: no shadow reached beyond 2^40 of the
+// lamp's distance to its occluder, and the ground past that came out lit (wholly lit at
+// 2e20 wide, and at 2e10 with the boxes 1e-30 in size).
+Scene lamp_beside_a_taller_box(double size, double wide, double hair = 1e-6) {
+  Scene scene;
+  BoxSpec low;
+  add_box(scene, "low", low);
+  BoxSpec tall;
+  tall.cx = 2.0;
+  tall.height = 2.0;
+  add_box(scene, "tall", tall);
+  scene = scaled(scene, size);
+  scene.lights = {point_light("lamp", {0.0, 0.0, (1.0 + hair) * size})};
+  add_face(scene, "ground", ground(-wide / 2, -wide / 2, wide / 2, wide / 2));
+  return scene;
+}
+
+TEST(ExtremesRange, ATallerBoxsShadowFromALampAHairAboveReachesTheGroundsEdge) {
+  // The last case at the edge of the supported depths (coordinate_range.h): boxes 1e-66,
+  // the lamp 1e-72 above the low one's top, 1.01 times the least ratio of that to its
+  // farthest vertex's distance, √2 of the ground's half width.
+  const double least = 2.0 * std::sqrt(3.0) * 0x1p-450;
+  const double edge = 2.0 * (1e-6 * 1e-66) / (1.01 * least * std::sqrt(2.0));
+  const std::vector<std::pair<double, double>> cases = {
+      {1.0, 2e10}, {1.0, 2e20}, {1e-30, 2e10}, {1e-30, 2e20}, {1e-66, edge}};
+  for (const auto& [size, wide] : cases) {
+    const Scene scene = lamp_beside_a_taller_box(size, wide);
+    const OracleCheck check = check_against_oracle(scene, kTolerance);
+    std::printf("[ boxes %-6.3g, ground %-8.3g wide ] %s\n", size, wide, summary(check).c_str());
+    EXPECT_EQ(check.failures, 0u) << "boxes " << size << ", ground " << wide << "\n"
+                                  << check.report;
+    EXPECT_EQ(check.invalid, 0u) << check.invalid_report;
+    const std::vector<ReportRow> rows = report_rows(generate_shadows(scene).shadowed);
+    ASSERT_EQ(scene.faces[rows.back().face].id, "ground");
+    if (wide / size >= 1e20) {
+      // The low box's own shadow, within 5e5 sizes of the lamp, is below 1e-29 of it.
+      EXPECT_NEAR(rows.back().lit_fraction, 11.0 / 12.0, 1e-12)
+          << "boxes " << size << ", ground " << wide;
+    }
+  }
+  // The lamp in the low box's top's plane: the top is edge-on to it, and the walls, whose
+  // tops are at the lamp's height, shadow all of the ground but the box's footprint.
+  const Scene level = lamp_beside_a_taller_box(1.0, 2e20, 0.0);
+  const OracleCheck check = check_against_oracle(level, kTolerance);
+  std::printf("[ the lamp level with the top, ground 2e20 ] %s\n", summary(check).c_str());
+  EXPECT_EQ(check.failures, 0u) << check.report;
+  EXPECT_LE(report_rows(generate_shadows(level).shadowed).back().lit_fraction, 1.0 / 4e40);
 }
 
 }  // namespace
