@@ -666,5 +666,27 @@ TEST(ExtremesRange, ATallerBoxsShadowFromALampAHairAboveReachesTheGroundsEdge) {
   EXPECT_LE(report_rows(generate_shadows(level).shadowed).back().lit_fraction, 1.0 / 4e40);
 }
 
+// A concave polygon with holes, sloping through a lamp's height a hair above a ground far
+// wider than that, and one parallel to the ground just below the lamp: the grazed ground's
+// shadows, cut in the occluder's chart where it rises to the lamp's height, reach the
+// ground's edge through the comb's teeth and holes.
+TEST(ExtremesRange, ACombWithHolesThroughALampsHeightShadesTheGroundToItsEdge) {
+  for (const double wide : {1e12, 1e30}) {
+    for (const double height : {1e-6, 1e-30}) {
+      Scene scene;
+      add_face(scene, "ground", ground(-wide, -wide, wide, wide));
+      add_face(scene, "comb", comb_with_holes(1.0, 0.5, 1.0, 3, height - 0.625, 0.5, 0.25));
+      add_face(scene, "flat", comb_with_holes(-1.0, 0.5, 1.0, 3, height * 0.5));
+      scene.lights = {point_light("lamp", {0.0, 0.0, height})};
+      const OracleCheck check = check_against_oracle(scene, kTolerance);
+      std::printf("[ ground %-6.3g, lamp %-6.3g above ] %s\n", wide, height,
+                  summary(check).c_str());
+      EXPECT_EQ(check.failures, 0u) << "ground " << wide << ", lamp " << height << "\n"
+                                    << check.report;
+      EXPECT_EQ(check.invalid, 0u) << check.invalid_report;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace shadowgen::test
