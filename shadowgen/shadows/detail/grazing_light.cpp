@@ -271,8 +271,6 @@ std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
       shadows.push_back(std::move(p));
     }
   }
-  if (getenv("DBG"))
-    fprintf(stderr, "part %zu shadows %zu reach %g\n", part, shadows.size(), reach);
   return plane.lift(clipper::clip(region, shadows).outside);
 }
 
