@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "coplanar_groups.h"
+#include "hsr/area.h"
 #include "hsr/parallel.h"
 
 namespace shadowgen::detail {
@@ -24,10 +25,12 @@ FaceParts flatten(const Scene& scene) {
       }
     }
   }
-  // The planes in parallel, on the threads of the calling task arena.
+  // The planes and areas in parallel, on the threads of the calling task arena.
   parts.planes.resize(parts.polygons.size());
+  parts.areas.resize(parts.polygons.size());
   hsr::for_each_in_parallel(parts.polygons.size(), [&parts](std::size_t i) {
     parts.planes[i] = hsr::plane_of(parts.polygons[i]);
+    parts.areas[i] = hsr::area(parts.polygons[i]);
   });
   // The box's point nearest the world's origin, not its middle: an image coordinate is
   // then off by a few ulps of min(2|p|, the box's diagonal) for every scene point p. The

@@ -23,6 +23,7 @@ struct PartOwner {
 struct FaceParts {
   std::vector<hsr::Polygon3> polygons;
   std::vector<hsr::Plane3> planes;
+  std::vector<double> areas;  // hsr::area of each polygon, once for every light
   std::vector<PartOwner> owners;
   std::vector<int> coplanar;  // coplanar_groups.h: a group index, or -1
   std::size_t face_count = 0;

@@ -15,7 +15,8 @@
 namespace shadowgen::detail {
 namespace {
 
-// Whether `lit`, the lit polygons of `part`, cover it whole as far as rounding can tell.
+// Whether `lit`, the lit polygons of `part` (of area `part_area`), cover it whole as far as
+// rounding can tell.
 // The exact lit region lies within the part, so lit polygons whose area reaches the
 // part's own are rounded outwards, and whatever they leave unlit is thinner than that
 // rounding: the part is lit whole. A shortfall is taken for rounding too where both
@@ -28,9 +29,9 @@ namespace {
 // 12 u, clipper/clip.h, and the roundings of lifting chart points back onto the plane),
 // which covers lit polygons worked out in the part's own chart (grazing light, views
 // united or cut to the part).
-bool lit_whole(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part, double lit_reach) {
+bool lit_whole(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part, double part_area,
+               double lit_reach) {
   constexpr double kUnit = 0x1p-53;
-  const double part_area = hsr::area(part);
   const double shortfall = part_area - hsr::area(lit);
   if (shortfall <= 0.0) return true;
   double magnitude = 0.0;
@@ -44,9 +45,9 @@ bool lit_whole(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part, do
 }
 
 // One part's lit polygons: the views joined, cut to the part where rounding carried them
-// out of it.
+// out of it. `area`: the part's own (FaceParts::areas).
 std::vector<hsr::Polygon3> joined(LitPart lit, const hsr::Polygon3& polygon,
-                                  const hsr::Plane3& plane) {
+                                  const hsr::Plane3& plane, double area) {
   std::vector<hsr::Polygon3> polygons;
   if (lit.by_view.size() == 1) {
     polygons = std::move(lit.by_view[0]);
@@ -60,7 +61,7 @@ std::vector<hsr::Polygon3> joined(LitPart lit, const hsr::Polygon3& polygon,
   if (!polygons.empty() && (lit.may_stray || !inside_box_of(polygons, polygon))) {
     polygons = within_part(polygons, polygon, plane);
   }
-  if (!polygons.empty() && lit_whole(polygons, polygon, lit.lit_reach)) return {polygon};
+  if (!polygons.empty() && lit_whole(polygons, polygon, area, lit.lit_reach)) return {polygon};
   return polygons;
 }
 
@@ -91,8 +92,9 @@ std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::
   // Parts in parallel, then gathered by face in order.
   std::vector<std::vector<hsr::Polygon3>> joined_parts(parts.size());
   hsr::for_each_in_parallel(parts.size(), [&](std::size_t i) {
-    joined_parts[i] =
-        on_part(i, [&] { return joined(std::move(lit[i]), parts.polygons[i], parts.planes[i]); });
+    joined_parts[i] = on_part(i, [&] {
+      return joined(std::move(lit[i]), parts.polygons[i], parts.planes[i], parts.areas[i]);
+    });
   });
   std::vector<std::vector<LitPolygon>> lit_by_face(parts.face_count);
   for (std::size_t i = 0; i < parts.size(); ++i) {
