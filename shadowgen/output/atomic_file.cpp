@@ -85,7 +85,7 @@ bool same_inode(const fs::path& a, const fs::path& b) {
 // process's (/proc/self/fd/N, /proc/PID/fd/N, /proc/thread-self/fd/N, /dev/fd/N); -1 when
 // it is not.
 int own_descriptor(const fs::path& link) {
-  const std::string& name = link.filename().native();
+  const std::string name = link.filename().native();  // filename() is a temporary
   int fd = -1;
   const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), fd);
   if (error != std::errc() || end != name.data() + name.size() || fd < 0) return -1;
