@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hsr/polygon3.h"
+#include "shadowgen/model/source_model.h"
 
 namespace shadowgen {
 
@@ -25,6 +26,7 @@ struct Face {
   std::string id;
   std::vector<hsr::Polygon3> parts;
   std::string source_file;  // the scene or mesh file it came from, for messages
+  FaceOrigin origin;        // where a model file's face comes from; empty otherwise
 };
 
 enum class LightType { kDirectional, kPoint };
