@@ -26,7 +26,7 @@ struct Face {
   std::string id;
   std::vector<hsr::Polygon3> parts;
   std::string source_file;  // the scene or mesh file it came from, for messages
-  FaceOrigin origin;        // where a model file's face comes from; empty otherwise
+  FaceOrigin origin = {};   // where a model file's face comes from; empty otherwise
 };
 
 enum class LightType { kDirectional, kPoint };

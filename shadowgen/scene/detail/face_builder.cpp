@@ -109,7 +109,7 @@ class FaceBuilder {
         outer_name_(mesh_ ? "the face" : "the outer loop") {}
 
   Face build(hsr::Polygon3 polygon) {
-    Face face{source_.id, {}, source_.file};
+    Face face{source_.id, {}, source_.file, source_.origin};
     check_vertex_counts(polygon);
     if (const std::optional<std::string> problem = coordinate_problem(polygon)) fail(*problem);
     if (degenerate(polygon)) {  // kept as given
@@ -119,7 +119,8 @@ class FaceBuilder {
     const std::vector<std::string> loop_names = drop_collinear_holes(polygon);
     const glm::dvec3 normal = hsr::plane_of(polygon).normal;
     const bool has_normal = finite(normal) && normal != glm::dvec3(0.0);
-    const std::string how_far = distance_from_plane(polygon, normal, has_normal);
+    const std::string how_far =
+        distance_from_plane(polygon, normal, has_normal, source_.vertex_rounding);
     const bool planar = how_far.empty();
     if (!planar && strict_) fail("not planar (" + how_far + ")");
 
@@ -201,7 +202,7 @@ class FaceBuilder {
 
   // "" for a planar face; otherwise how far from its best-fit plane it is, in words.
   static std::string distance_from_plane(const hsr::Polygon3& polygon, const glm::dvec3& normal,
-                                         bool has_normal) {
+                                         bool has_normal, double vertex_rounding) {
     // Three points always lie in a plane. Measured against the rounded Newell normal, the
     // corners of a sliver triangle can seem 1e-7 of its extent off it.
     if (polygon.outer.size() == 3 && polygon.holes.empty()) return "";
@@ -212,6 +213,7 @@ class FaceBuilder {
     const double width = flat.extent > 0.0 ? hsr::area(polygon) / flat.extent : 0.0;
     const double size = std::min(flat.extent, width);
     if (!(flat.deviation > kPlanarityTolerance * size)) return "";
+    if (flat.deviation <= 2.0 * vertex_rounding) return "";
     return "a vertex lies " + short_number(flat.deviation, 3) + " from the best-fit plane, " +
            short_number(flat.deviation / size, 3) +
            " of the face's size (the smaller of its extent and its width); tolerance " +

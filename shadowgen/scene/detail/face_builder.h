@@ -11,7 +11,8 @@
 //     with fewer than 3 vertices: the repeats are a mistake of whoever wrote it, not the
 //     collapse of a mesh face. A hole that is collinear is dropped with a warning.
 //   - Planarity: every vertex within kPlanarityTolerance × (the face's size: the smaller of
-//     its largest extent and its width, area / extent) of
+//     its largest extent and its width, area / extent), or within twice the source's
+//     vertex rounding (FaceSource::vertex_rounding), of
 //     the best-fit plane (Newell's normal through the outer loop's centroid, as
 //     hsr::plane_of). A face that is not planar is an error under ReadOptions::strict;
 //     otherwise it is split into triangles on its original 3D vertices (triangulate.h),
@@ -39,6 +40,12 @@ struct FaceSource {
   std::string id;
   std::string file;  // for messages and Face::source_file
   FaceKind kind = FaceKind::kPolygon;
+  // SourceFace::vertex_rounding, in scene coordinates: a face whose vertices all lie
+  // within twice this of its best-fit plane is planar, whatever its size. Each vertex is
+  // within this of the plane the face was meant to lie in, and the best-fit plane of
+  // vertices so moved is within it too, near the face.
+  double vertex_rounding = 0.0;
+  FaceOrigin origin = {};
 };
 
 // Throws InputError naming source.file and source.id; appends warnings to `warnings`.
