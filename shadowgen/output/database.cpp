@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "detail/method_json.h"
+#include "detail/origin_json.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/output/atomic_file.h"
@@ -317,6 +318,7 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
   const LitTable::ConstRow lit = shadowed.lit[f];
   out.begin_object(Layout::kLines);
   out.key("id").value(face.id).key("source_file").value(face.source_file);
+  detail::write_origin(out, face.origin);
   out.key("parts").begin_array(Layout::kLines);
   for (const Polygon3& part : face.parts) write_polygon(out, part);
   out.end_array();

@@ -17,12 +17,14 @@ namespace {
 
 constexpr std::int64_t kSecondsPerDay = 86'400;
 
-// The face's id as an EnergyPlus surface name: upper case, as EnergyPlus keeps names.
-// InputError naming `file` (the input) where it cannot be one.
+// The face's EnergyPlus surface name: the surface's Name for a face read from an
+// EnergyPlus model (FaceOrigin::object, without the scene entry's id), the face's id
+// otherwise; upper case, as EnergyPlus keeps names. InputError naming `file` (the input)
+// where it cannot be one.
 std::string surface_name(const Face& face, const std::string& file) {
-  const std::string& id = face.id;
+  const std::string& id = face.origin.format == "energyplus" ? face.origin.object : face.id;
   auto refuse = [&](const std::string& why) {
-    throw InputError(file, id, "cannot be an EnergyPlus surface name: " + why);
+    throw InputError(file, face.id, "cannot be an EnergyPlus surface name: " + why);
   };
   if (id.empty()) refuse("it is empty");
   if (id.front() == ' ' || id.back() == ' ') refuse("EnergyPlus trims spaces around names");

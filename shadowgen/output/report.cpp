@@ -12,6 +12,7 @@
 
 #include "detail/csv_fields.h"
 #include "detail/method_json.h"
+#include "detail/origin_json.h"
 #include "detail/text_table.h"
 #include "hsr/area.h"
 #include "shadowgen/json/json_writer.h"
@@ -180,6 +181,7 @@ std::string report_json(const ShadowedScene& shadowed) {
   for (const ReportRow& row : rows) {
     out.begin_object();
     out.key("face_id").value(scene.faces[row.face].id);
+    detail::write_origin(out, scene.faces[row.face].origin);
     out.key("light_id").value(scene.lights[row.light].id);
     out.key("area").value(row.area).key("lit_area").value(row.lit_area);
     out.key("lit_fraction").value(row.lit_fraction);

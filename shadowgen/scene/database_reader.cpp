@@ -507,6 +507,22 @@ class DatabaseParser {
     return loop;
   }
 
+  // A face's "origin" (shadowgen/output/detail/origin_json.h): every member a string,
+  // "format" not empty.
+  static FaceOrigin read_origin(const JsonValue& value) {
+    JsonObject object = value.object();
+    FaceOrigin origin;
+    const JsonValue format = object.get("format");
+    origin.format = format.string();
+    if (origin.format.empty())
+      format.fail("must name the format the face comes from, not be empty");
+    origin.object = object.get("object").string();
+    origin.group = object.get("group").string();
+    origin.semantic = object.get("semantic").string();
+    object.finish();
+    return origin;
+  }
+
   void read_face(const JsonValue& value, ShadowedScene& shadowed) {
     JsonObject entry = value.object();
     Face face;
@@ -514,6 +530,8 @@ class DatabaseParser {
     face_ids_.claim(face.id, "another face", entry.get("id"));
     entry.for_face(face.id);
     face.source_file = entry.get("source_file").string();
+    if (const std::optional<JsonValue> origin = entry.find("origin"))
+      face.origin = read_origin(*origin);
     const JsonValue parts_value = entry.get("parts");
     const JsonArray parts = parts_value.array();
     if (parts.empty()) parts_value.fail("a face needs at least one polygon");

@@ -53,8 +53,10 @@ class SceneParser {
                    [&](const JsonValue& entry) { read_polygon_entry(entry, polygon_warnings); });
     polygon_warnings.append_to(result_.warnings, options_.verbose);
     for_each_entry(top, "meshes", [&](const JsonValue& entry) {
-      result_.scene.files.push_back(detail::read_mesh_entry(entry, path_, options_, face_ids_,
-                                                            result_.scene.faces, result_.warnings));
+      detail::MeshEntryRead read = detail::read_mesh_entry(entry, path_, options_, face_ids_,
+                                                           result_.scene.faces, result_.warnings);
+      if (!read.site.empty()) model_sites_.push_back({std::move(read.site), read.file});
+      result_.scene.files.push_back(std::move(read.file));
     });
     read_site_and_weather(top);
     for_each_entry(top, "lights", [&](const JsonValue& entry) { read_light_entry(entry); });
@@ -90,21 +92,24 @@ class SceneParser {
     top.value().fail(problem);
   }
 
-  // Before the lights: a `sun` light needs the site, which the weather file gives when
-  // the scene has none.
+  // Before the lights: a `sun` light needs the site, whose keys the scene, its model
+  // files and its weather file give, in that order (detail/site_entry.h).
   void read_site_and_weather(JsonObject& top) {
     Scene& scene = result_.scene;
+    std::vector<detail::SiteGiver> givers;
     const std::optional<JsonValue> site = top.find("site");
-    if (site) scene.site = detail::read_site(*site);
+    if (site) givers.push_back({detail::read_site_keys(*site), file_});
+    givers.insert(givers.end(), model_sites_.begin(), model_sites_.end());
     if (const std::optional<JsonValue> weather = top.find("weather")) {
       scene.weather = detail::read_weather(*weather, path_);
       scene.files.push_back(scene.weather->file);
-      if (site) {
-        detail::warn_if_site_differs(*scene.site, *site, *scene.weather);
-      } else {
-        scene.site = scene.weather->site;
-      }
+      givers.push_back(detail::site_giver_of(*scene.weather));
     }
+    detail::MergedSite merged = detail::merge_site(givers);
+    if (site && !merged.site) site->fail(merged.incomplete);
+    scene.site = merged.site;
+    site_incomplete_ = merged.incomplete;
+    if (site && scene.weather) detail::warn_if_site_differs(*scene.site, *site, *scene.weather);
   }
 
   // A `sun` entry becomes the directional lights of its instants, where it stands.
@@ -114,7 +119,8 @@ class SceneParser {
       lights.push_back(detail::read_light(value, light_ids_, detail::Source::kScene));
       return;
     }
-    detail::SunEntryRead sun = detail::read_sun_light(value, light_ids_, result_.scene.site);
+    detail::SunEntryRead sun =
+        detail::read_sun_light(value, light_ids_, result_.scene.site, site_incomplete_);
     lights.insert(lights.end(), std::make_move_iterator(sun.lights.begin()),
                   std::make_move_iterator(sun.lights.end()));
     if (sun.path) result_.scene.sun_paths.push_back(std::move(*sun.path));
@@ -147,6 +153,8 @@ class SceneParser {
   detail::IdRegistry face_ids_;
   detail::IdRegistry light_ids_;
   detail::IdRegistry view_ids_;
+  std::vector<detail::SiteGiver> model_sites_;  // what model files tell of the site
+  std::string site_incomplete_;  // why the keys given make no site, when some are given
 };
 
 }  // namespace

@@ -5,13 +5,17 @@
 #include <cstdint>
 #include <optional>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 
 #include "detail/face_builder.h"
 #include "detail/mesh_reader.h"
 #include "detail/referenced_file.h"
+#include "detail/source_format.h"
+#include "detail/source_readers.h"
 #include "detail/warning_summary.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/number_text.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -98,11 +102,90 @@ hsr::Polygon3 face_polygon(const MeshFaceRecord& record, const std::vector<Place
   return polygon;
 }
 
+// An upper bound of how far an affine transform stretches any length: the Frobenius norm
+// of its linear part. nullopt for a projective transform, which stretches without bound
+// near its plane at infinity.
+std::optional<double> stretch_of(const std::optional<Transform>& transform) {
+  if (!transform) return 1.0;
+  const Transform& m = *transform;
+  if (m[3][0] != 0.0 || m[3][1] != 0.0 || m[3][2] != 0.0 || m[3][3] != 1.0) return std::nullopt;
+  double sum = 0.0;
+  for (std::size_t r = 0; r < 3; ++r) {
+    for (std::size_t c = 0; c < 3; ++c) sum += m[r][c] * m[r][c];
+  }
+  return std::sqrt(sum);
+}
+
+hsr::Loop3 placed_loop(const hsr::Loop3& loop, const Transform& transform, const std::string& file,
+                       const std::string& face_id) {
+  hsr::Loop3 out;
+  out.reserve(loop.size());
+  int w_sign = 0;
+  for (const glm::dvec3& p : loop) {
+    const PlacedVertex v = place(transform, p);
+    if (!v.finite) {
+      throw InputError(
+          file, face_id,
+          "the mesh transform sends a vertex to infinity (w = " + number_text(v.w) + ")");
+    }
+    const int sign = v.w > 0.0 ? 1 : -1;
+    if (w_sign != 0 && sign != w_sign) {
+      throw InputError(file, face_id,
+                       "the projective mesh transform splits the face across infinity (w "
+                       "changes sign between its vertices)");
+    }
+    w_sign = sign;
+    out.push_back(v.p);
+  }
+  return out;
+}
+
+// The faces of a model file of another tool, as its room gave them.
+void add_source_faces(SourceModel& model, const std::string& id,
+                      const std::optional<Transform>& transform, const std::string& file,
+                      const ReadOptions& options, std::vector<Face>& faces,
+                      std::vector<std::string>& warnings) {
+  if (model.faces.empty()) {
+    throw InputError(file, "", "model '" + id + "' has no faces");
+  }
+  const std::optional<double> stretch = stretch_of(transform);
+  std::unordered_map<std::string, const SourceFace*> seen;
+  WarningSummary summary(file, "faces of model '" + id + "'");
+  std::vector<std::string> face_warnings;
+  for (SourceFace& source : model.faces) {
+    const std::string face_id = id + "/" + source.id;
+    if (const auto [at, fresh] = seen.emplace(source.id, &source); !fresh) {
+      throw InputError(file, face_id,
+                       source.described + " has the id of " + at->second->described +
+                           ": face ids must be unique");
+    }
+    hsr::Polygon3 polygon = std::move(source.polygon);
+    if (transform) {
+      polygon.outer = placed_loop(polygon.outer, *transform, file, face_id);
+      for (hsr::Loop3& hole : polygon.holes) hole = placed_loop(hole, *transform, file, face_id);
+    }
+    const FaceSource face_source{face_id, file, FaceKind::kMeshFace,
+                                 stretch ? source.vertex_rounding * *stretch : 0.0,
+                                 std::move(source.origin)};
+    faces.push_back(build_face(std::move(polygon), face_source, options.strict, face_warnings));
+    for (std::string& line : face_warnings) summary.add(face_id, std::move(line));
+    face_warnings.clear();
+  }
+  summary.append_to(warnings, options.verbose);
+  warnings.insert(warnings.end(), model.warnings.begin(), model.warnings.end());
+}
+
+// The entry's "lod": a string, or a number written as its shortest decimal form.
+std::string lod_of(const JsonValue& value) {
+  if (value.describe() == "a number") return shortest(value.number());
+  return value.string();
+}
+
 }  // namespace
 
-std::string read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path,
-                            const ReadOptions& options, IdRegistry& ids, std::vector<Face>& faces,
-                            std::vector<std::string>& warnings) {
+MeshEntryRead read_mesh_entry(const JsonValue& value, const std::filesystem::path& scene_path,
+                              const ReadOptions& options, IdRegistry& ids, std::vector<Face>& faces,
+                              std::vector<std::string>& warnings) {
   JsonObject entry = value.object();
   const std::string id = read_id(entry);
   ids.claim(id, "mesh '" + id + "'", entry.get("id"));
@@ -110,11 +193,24 @@ std::string read_mesh_entry(const JsonValue& value, const std::filesystem::path&
   const JsonValue file_value = entry.get("file");
   std::optional<Transform> transform;
   if (const std::optional<JsonValue> t = entry.find("transform")) transform = transform_of(*t);
+  const std::optional<JsonValue> lod = entry.find("lod");
+  SourceOptions source_options{options.strict, {}};
+  if (lod) source_options.lod = lod_of(*lod);
   entry.finish();
 
   const std::filesystem::path mesh_path = referenced_file(file_value, scene_path, "mesh file");
-  const MeshSoup soup = read_mesh(mesh_path, id);
   const std::string mesh_file = mesh_path.string();
+  const SourceFormat format = format_of_file(mesh_path);
+  if (lod && format != SourceFormat::kCityJson) {
+    lod->fail("'lod' chooses a CityJSON file's level of detail; '" + mesh_file + "' is " +
+              std::string(format_name(format)));
+  }
+  if (format != SourceFormat::kMesh) {
+    SourceModel model = read_source(format, mesh_path, source_options);
+    add_source_faces(model, id, transform, mesh_file, options, faces, warnings);
+    return {mesh_file, std::move(model.site)};
+  }
+  const MeshSoup soup = read_mesh(mesh_path, id);
   if (soup.faces.empty()) {
     warnings.push_back(face_message(mesh_file, "", "mesh '" + id + "' has no faces"));
   }
@@ -133,7 +229,7 @@ std::string read_mesh_entry(const JsonValue& value, const std::filesystem::path&
     face_warnings.clear();
   }
   summary.append_to(warnings, options.verbose);
-  return mesh_file;
+  return {mesh_file, {}};
 }
 
 }  // namespace shadowgen::detail

@@ -142,10 +142,14 @@ bool is_sun_light(const JsonValue& value) {
 }
 
 SunEntryRead read_sun_light(const JsonValue& value, IdRegistry& ids,
-                            const std::optional<Site>& site) {
+                            const std::optional<Site>& site, const std::string& site_incomplete) {
   JsonObject entry = value.object();
   std::string id = read_claimed_id(entry, ids, "light");
   (void)entry.get("type");
+  if (!site && !site_incomplete.empty()) {
+    entry.value().fail("a sun light needs the site, and its keys are incomplete: " +
+                       site_incomplete + "; give the rest in the scene's \"site\"");
+  }
   if (!site) {
     entry.value().fail(
         "a sun light needs the scene's \"site\" (latitude_deg, longitude_deg, utc_offset_h) "

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "detail/json_entities.h"
@@ -38,7 +39,10 @@ struct SunEntryRead {
   std::optional<SunPathSpan> path;
 };
 
+// `site_incomplete` says, when there is no site, why the keys given make none
+// (MergedSite::incomplete); empty when none is given.
 SunEntryRead read_sun_light(const JsonValue& value, IdRegistry& ids,
-                            const std::optional<Site>& site);
+                            const std::optional<Site>& site,
+                            const std::string& site_incomplete = {});
 
 }  // namespace shadowgen::detail

@@ -48,6 +48,7 @@ ShadowedScene sample() {
             {Polygon3{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1.5}}, {}},
              Polygon3{{{1, 0, 1}, {1, 1, 1}, {0, 1, 1.5}}, {}}},
             "models/bent.obj"};
+  bent.origin = {"cityjson", "NL.Pand.1-0", "NL.Pand.1", "RoofSurface"};
   s.scene.faces = {ground, bent};
 
   Light sun;
@@ -123,6 +124,7 @@ void expect_same(const ShadowedScene& a, const ShadowedScene& b) {
     const Face& y = b.scene.faces[f];
     EXPECT_EQ(x.id, y.id);
     EXPECT_EQ(x.source_file, y.source_file);
+    EXPECT_EQ(x.origin, y.origin) << x.id;
     expect_same(x.parts, y.parts, x.id + ".parts");
   }
   ASSERT_EQ(a.scene.lights.size(), b.scene.lights.size());
@@ -209,6 +211,22 @@ std::string error_of(const std::string& json) {
 TEST(Database, RoundTripKeepsEverythingBitForBit) {
   const ShadowedScene s = sample();
   expect_same(s, round_trip(s));
+}
+
+TEST(Database, FaceOriginsRoundTripAndAreChecked) {
+  const ShadowedScene s = sample();
+  const std::string text = database_json(s);
+  const nlohmann::json json = nlohmann::json::parse(text);
+  EXPECT_FALSE(json["faces"][0].contains("origin"));
+  EXPECT_EQ(json["faces"][1]["origin"],
+            nlohmann::json::parse(R"({"format": "cityjson", "object": "NL.Pand.1-0",
+                                      "group": "NL.Pand.1", "semantic": "RoofSurface"})"));
+  std::string empty_format = text;
+  const std::string cityjson = R"("cityjson")";
+  empty_format.replace(empty_format.find(cityjson), cityjson.size(), R"("")");
+  EXPECT_EQ(error_of(empty_format),
+            "broken.json: face 'mesh/7': faces[1].origin.format: must name the format the face "
+            "comes from, not be empty");
 }
 
 TEST(Database, RoundTripIsAFixedPoint) {

@@ -75,6 +75,25 @@ TEST(EnergyPlusShading, OneRowPerHourStampedWithItsEndHoldingTheInstantThatStart
             "every time step)");
 }
 
+TEST(EnergyPlusShading, AnEnergyPlusModelsFaceIsNamedByItsSurfaceNameAlone) {
+  ShadowedScene shadowed =
+      by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {{"2026-06-21T12:00", 4, 0.875}});
+  shadowed.scene.faces[1].id = "house/Zn001:Wall-South";
+  shadowed.scene.faces[1].origin = {"energyplus", "Zn001:Wall-South", "Zn001", "Wall"};
+  EXPECT_EQ(lines_of(energyplus_shading(shadowed).csv)[0], "Surface Name,ROOF,ZN001:WALL-SOUTH,");
+  // Two models' surfaces of one name cannot both be EnergyPlus surfaces.
+  shadowed.scene.faces[0].id = "other/zn001:wall-south";
+  shadowed.scene.faces[0].origin = {"energyplus", "zn001:wall-south", "Zn001", "Wall"};
+  try {
+    energyplus_shading(shadowed);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "test.json: face 'house/Zn001:Wall-South': is the EnergyPlus surface name "
+              "ZN001:WALL-SOUTH in upper case, as face 'other/zn001:wall-south' is");
+  }
+}
+
 TEST(EnergyPlusShading, QuarterHourStepsAndDaysRunOn) {
   const EnergyPlusShading out =
       energyplus_shading(by_hand(15, "2026-12-31T00:00", "2027-01-01T23:45",

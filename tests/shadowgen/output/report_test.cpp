@@ -217,6 +217,18 @@ TEST(ReportJson, LayoutToTheByte) {
 )");
 }
 
+TEST(ReportJson, AModelFileFacesOriginFollowsItsId) {
+  ShadowedScene s = scene_with_ids("ground", "sun");
+  s.scene.faces[2].origin = {"cityjson", "b1-part", "b1", "RoofSurface"};
+  const std::string text = report_json(s);
+  EXPECT_NE(
+      text.find(
+          R"({"face_id":"roof","origin":{"format":"cityjson","object":"b1-part","group":"b1","semantic":"RoofSurface"},"light_id":"sun",)"),
+      std::string::npos)
+      << text;
+  EXPECT_EQ(text.find(R"({"face_id":"ground","origin")"), std::string::npos);
+}
+
 TEST(ReportJson, RowsAndTotals) {
   const ShadowedScene s = scene_with_ids("ground", "sun");
   const nlohmann::json json = nlohmann::json::parse(report_json(s));

@@ -1,0 +1,24 @@
+#include "detail/source_readers.h"
+
+#include <string>
+
+#include "shadowgen/model/input_error.h"
+
+namespace shadowgen::detail {
+
+SourceModel read_source(SourceFormat format, const std::filesystem::path& file,
+                        const SourceOptions& options) {
+  (void)options;
+  switch (format) {
+    case SourceFormat::kMesh:
+      break;
+    case SourceFormat::kEnergyPlus:
+    case SourceFormat::kCityJson:
+    case SourceFormat::kGltf:
+      throw InputError(file.string(), "",
+                       "is " + std::string(format_name(format)) + ", which this build cannot read");
+  }
+  throw InputError(file.string(), "", "is not a model file of another tool");
+}
+
+}  // namespace shadowgen::detail
