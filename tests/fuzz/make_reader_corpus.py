@@ -12,6 +12,8 @@ This script writes the seeds it can make on its own, named <kind>-<what>:
   - every clipper regression (tests/clipper/regressions/*.wkt) as a scene: the subject
     under the clip and a sun straight above, shadows asked for;
   - small meshes of every format, well formed or not (ASCII and binary STL and PLY);
+  - model files of other tools through a scene: an EnergyPlus IDF and epJSON, CityJSON
+    and CityJSONSeq, glTF and binary glTF;
   - databases: a few written here (sun paths among them: instants at one time, out of
     order or off the path's steps, a path with no instant, members after "faces"), a
     polar night's scene, and, with --shadowgen BIN, the database BIN generates
@@ -28,6 +30,7 @@ inputs the fuzzer found that once broke an invariant.
 """
 
 import argparse
+import base64
 import json
 import pathlib
 import struct
@@ -413,6 +416,140 @@ def sun_path_seeds():
     }
 
 
+# Model files of other tools, written from their specifications: an EnergyPlus IDF and
+# epJSON (Input Output Reference), CityJSON 2.0 and CityJSONSeq, glTF 2.0 (.gltf with a
+# data URI buffer, .glb). Each through a scene with a sun at noon, shadows asked for.
+IDF = """!- A room with a window, written for the fuzzer from the Input Output Reference.
+Version,23.2;
+Site:Location,Delft,52.0,4.36,1,0;
+Building,House,30,Suburbs,0.04,0.4,FullExterior,25,6;
+GlobalGeometryRules,UpperLeftCorner,Counterclockwise,Relative;
+Zone,Room,10,5,0,0,  !- relative north 10, origin (5, 0, 0)
+  1,1,autocalculate,autocalculate;
+BuildingSurface:Detailed,Wall South,Wall,Ext,Room,,Outdoors,,SunExposed,WindExposed,
+  autocalculate,4,0,0,3,0,0,0,10,0,0,10,0,3;
+BuildingSurface:Detailed,Roof,Roof,Ext,Room,,Outdoors,,SunExposed,WindExposed,
+  autocalculate,4,0,6,3,0,0,3,10,0,3,10,6,3;
+FenestrationSurface:Detailed,Window South,Window,Glz,Wall South,,autocalculate,,1,4,
+  2,0,2,2,0,1,4,0,1,4,0,2;
+Wall:Exterior,Wall East,Ext,Room,,90,90,10,0,0,6,3;
+Shading:Overhang,Ledge,Window South,0.2,90,0.4,0.4,0.5;
+Shading:Site:Detailed,Fence,,4,-2,-3,2,-2,-3,0,12,-3,0,12,-3,2;
+"""
+
+EPJSON = """{"Version": {"Version 1": {"version_identifier": "23.2"}},
+ "Site:Location": {"Delft": {"latitude": 52.0, "longitude": 4.36, "time_zone": 1, "elevation": 0}},
+ "GlobalGeometryRules": {"GlobalGeometryRules 1": {"starting_vertex_position": "UpperLeftCorner",
+   "vertex_entry_direction": "Counterclockwise", "coordinate_system": "Relative"}},
+ "Zone": {"Room": {"direction_of_relative_north": 0, "x_origin": 0, "y_origin": 0, "z_origin": 0}},
+ "BuildingSurface:Detailed": {"Wall South": {"surface_type": "Wall", "construction_name": "Ext",
+   "zone_name": "Room", "outside_boundary_condition": "Outdoors", "sun_exposure": "SunExposed",
+   "wind_exposure": "WindExposed", "number_of_vertices": 4,
+   "vertices": [{"vertex_x_coordinate": 0, "vertex_y_coordinate": 0, "vertex_z_coordinate": 3},
+                {"vertex_x_coordinate": 0, "vertex_y_coordinate": 0, "vertex_z_coordinate": 0},
+                {"vertex_x_coordinate": 10, "vertex_y_coordinate": 0, "vertex_z_coordinate": 0},
+                {"vertex_x_coordinate": 10, "vertex_y_coordinate": 0, "vertex_z_coordinate": 3}]}},
+ "FenestrationSurface:Detailed": {"Door": {"surface_type": "Door", "construction_name": "Wood",
+   "building_surface_name": "Wall South", "number_of_vertices": 4,
+   "vertex_1_x_coordinate": 6, "vertex_1_y_coordinate": 0, "vertex_1_z_coordinate": 2,
+   "vertex_2_x_coordinate": 6, "vertex_2_y_coordinate": 0, "vertex_2_z_coordinate": 0,
+   "vertex_3_x_coordinate": 7, "vertex_3_y_coordinate": 0, "vertex_3_z_coordinate": 0,
+   "vertex_4_x_coordinate": 7, "vertex_4_y_coordinate": 0, "vertex_4_z_coordinate": 2}}}
+"""
+
+# A 10 m box at millimetre precision in RD New + NAP, one of its walls with a window hole.
+CITYJSON_OBJECTS = """{"b1": {"type": "Building", "children": ["b1-p"], "attributes": {"name": "box"}},
+  "b1-p": {"type": "BuildingPart", "parents": ["b1"], "geometry": [
+   {"type": "Solid", "lod": "1.2", "boundaries": [[[[0,3,2,1]],[[4,5,6,7]],[[0,1,5,4],[8,9,10,11]],
+     [[1,2,6,5]],[[2,3,7,6]],[[3,0,4,7]]]],
+    "semantics": {"surfaces": [{"type": "GroundSurface"}, {"type": "RoofSurface"},
+                               {"type": "WallSurface"}], "values": [[0,1,2,2,2,2]]}}]}}"""
+CITYJSON_VERTICES = """[[0,0,0],[10000,0,0],[10000,10000,0],[0,10000,0],
+  [0,0,6000],[10000,0,6000],[10000,10000,6000],[0,10000,6000],
+  [2000,0,1000],[2000,0,2000],[4000,0,2000],[4000,0,1000]]"""
+CITYJSON_HEAD = """"version": "2.0",
+ "transform": {"scale": [0.001, 0.001, 0.001], "translate": [85000.0, 447000.0, 0.0]},
+ "metadata": {"referenceSystem": "https://www.opengis.net/def/crs/EPSG/0/7415"}"""
+CITYJSON = ('{"type": "CityJSON", ' + CITYJSON_HEAD + ',\n "CityObjects": ' + CITYJSON_OBJECTS +
+            ',\n "vertices": ' + CITYJSON_VERTICES + '}\n')
+CITYJSON_SEQ = ('{"type": "CityJSON", ' + CITYJSON_HEAD.replace("\n", "") +
+                ', "CityObjects": {}, "vertices": []}\n' +
+                '{"type": "CityJSONFeature", "id": "b1", "CityObjects": ' +
+                CITYJSON_OBJECTS.replace("\n", "") + ', "vertices": ' +
+                CITYJSON_VERTICES.replace("\n", "") + '}\n')
+
+
+def gltf_parts():
+    """A unit square as two indexed triangles under a node turned and moved, as the JSON
+    and the binary buffer of a glTF file."""
+    positions = struct.pack("<12f", 0, 0, 0, 1, 0, 0, 1, 0, -1, 0, 0, -1)
+    indices = struct.pack("<6H", 0, 1, 2, 0, 2, 3)
+    buffer = positions + indices
+    document = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "roof", "mesh": 0, "translation": [0, 3, 0],
+                   "rotation": [0, 0.38268343, 0, 0.92387953]}],
+        "meshes": [{"name": "roof", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [0, 0, -1], "max": [1, 0, 0]},
+            {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+        "buffers": [{"byteLength": len(buffer)}],
+    }
+    return document, buffer
+
+
+def gltf_text():
+    document, buffer = gltf_parts()
+    document["buffers"][0]["uri"] = ("data:application/octet-stream;base64," +
+                                     base64.b64encode(buffer).decode())
+    return json.dumps(document)
+
+
+def glb_bytes():
+    document, buffer = gltf_parts()
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    buffer += b"\0" * (-len(buffer) % 4)
+    chunks = (struct.pack("<II", len(text), 0x4E4F534A) + text +
+              struct.pack("<II", len(buffer), 0x004E4942) + buffer)
+    return struct.pack("<III", 0x46546C67, 2, 12 + len(chunks)) + chunks
+
+
+def model_scene(file, site=""):
+    return """{"format": "shadowgen-scene/1",
+ "polygons": [{"id": "ground", "outer": [[-20,-20,0],[40,-20,0],[40,40,0],[-20,40,0]]}],
+ "meshes": [{"id": "m", "file": "%s"}],%s
+ "lights": [{"id": "noon", "type": "sun", "time": "2026-06-21T13:00"}]}""" % (file, site)
+
+
+def model_seeds():
+    utc = '\n "site": {"utc_offset_h": 1},'
+    cityjson_scene = model_scene("m.city.json", utc)
+    return {
+        "scene-model-idf": seed(SCENE + GENERATE, model_scene("m.idf"), ("m.idf", IDF)),
+        "scene-model-epjson": seed(SCENE + GENERATE, model_scene("m.epJSON"), ("m.epJSON", EPJSON)),
+        "scene-model-cityjson": seed(SCENE + GENERATE, cityjson_scene, ("m.city.json", CITYJSON)),
+        "scene-model-cityjson-lod": seed(
+            SCENE, cityjson_scene.replace('"file": "m.city.json"', '"file": "m.city.json", "lod": "1.2"'),
+            ("m.city.json", CITYJSON)),
+        "scene-model-cityjsonseq": seed(SCENE + GENERATE, model_scene("m.city.jsonl", utc),
+                                        ("m.city.jsonl", CITYJSON_SEQ)),
+        "scene-model-gltf": seed(SCENE + GENERATE,
+                                 model_scene("m.gltf", '\n "site": {"latitude_deg": 52, '
+                                             '"longitude_deg": 4.4, "utc_offset_h": 1},'),
+                                 ("m.gltf", gltf_text())),
+        "scene-model-glb": seed(SCENE + GENERATE,
+                                model_scene("m.glb", '\n "site": {"latitude_deg": 52, '
+                                            '"longitude_deg": 4.4, "utc_offset_h": 1},'),
+                                ("m.glb", glb_bytes())),
+    }
+
+
 def database_from_cli(shadowgen):
     with tempfile.TemporaryDirectory() as work:
         target = pathlib.Path(work) / "courtyard.shadowed.json"
@@ -455,6 +592,7 @@ def main():
     args = parser.parse_args()
     wanted = seeds()
     wanted.update(sun_path_seeds())
+    wanted.update(model_seeds())
     if args.check:
         stale = [n for n, d in wanted.items()
                  if not (CORPUS / n).is_file() or (CORPUS / n).read_bytes() != d]
