@@ -20,8 +20,8 @@ namespace shadowgen {
 inline constexpr double kPlanarityTolerance = 1e-9;
 
 // One face of the scene. Its front side is the side from which the outer loop of each
-// part runs counter-clockwise. A planar face has one part; a non-planar polygon is split
-// into triangles that all keep the face's id.
+// part runs counter-clockwise. A planar face has one part per piece of its region (holes
+// sharing edges can cut it apart); a non-planar polygon is split into triangles (same id).
 struct Face {
   std::string id;
   std::vector<hsr::Polygon3> parts;

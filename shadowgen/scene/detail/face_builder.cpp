@@ -4,8 +4,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 
+#include "clipper/clip.h"
 #include "clipper/predicates.h"
 #include "clipper/triangulate.h"
 #include "coordinate_range.h"
@@ -14,6 +16,7 @@
 #include "hsr/plane_chart.h"
 #include "loop_validation.h"
 #include "numbers.h"
+#include "region_less_holes.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
@@ -64,6 +67,9 @@ class PlaneFrame {
     }
     return out;
   }
+
+  // The point of the plane at frame coordinates q.
+  glm::dvec3 lift(const clipper::Point2& q) const { return origin_ + q.x * u_ + q.y * v_; }
 
  private:
   glm::dvec3 origin_, u_, v_;
@@ -127,22 +133,36 @@ class FaceBuilder {
     // A planar face is checked in its exact chart; a non-planar one in its projection on
     // the best-fit plane, where it will be triangulated (a coordinate chart could fold it).
     std::vector<clipper::Loop2> loops;
+    hsr::PlaneChart chart;
+    std::optional<PlaneFrame> frame;
     if (planar) {
-      const hsr::PlaneChart chart =
-          has_normal ? hsr::chart_facing(normal) : chart_without_normal(polygon.outer);
+      chart = has_normal ? hsr::chart_facing(normal) : chart_without_normal(polygon.outer);
       loops = flatten_loops(polygon, [&chart](const hsr::Loop3& l) { return chart.flatten(l); });
     } else {
-      const PlaneFrame frame(polygon.outer[0], normal);
-      loops = flatten_loops(polygon, [&frame](const hsr::Loop3& l) { return frame.project(l); });
+      frame.emplace(polygon.outer[0], normal);
+      loops = flatten_loops(polygon, [&frame](const hsr::Loop3& l) { return frame->project(l); });
     }
-    orient_holes(polygon, loops, loop_names);
-    if (planar) {
+    const LoopCheck check = orient_holes(polygon, loops, loop_names);
+    if (planar && !check.shares_edges) {
       face.parts.push_back(std::move(polygon));
       return face;
     }
-    face.parts = triangles(polygon, loops, how_far);
-    warn("not planar (" + how_far + "): split into " + std::to_string(face.parts.size()) +
-         " triangles");
+    if (planar) {
+      face.parts = planar_region(polygon, has_normal ? normal : chart_normal(chart, check));
+    } else {
+      face.parts = check.shares_edges ? region_triangles(polygon, loops, *frame, how_far)
+                                      : triangles(loops, all_vertices(polygon), how_far);
+      if (!face.parts.empty() || !check.shares_edges) {
+        warn("not planar (" + how_far + "): split into " + std::to_string(face.parts.size()) +
+             " triangles");
+      }
+    }
+    if (face.parts.empty() && check.shares_edges) {
+      // Holes that cover the outer loop whole: a face without area, kept as the other
+      // degenerate faces are, its one part a loop along the outer loop's first edge.
+      warn("zero area (its holes cover it whole): kept, with area 0");
+      face.parts.push_back({{polygon.outer[0], polygon.outer[1], polygon.outer[0]}, {}});
+    }
     return face;
   }
 
@@ -228,9 +248,9 @@ class FaceBuilder {
   }
 
   // Validates the loops; turns holes to run opposite to the outer loop.
-  void orient_holes(hsr::Polygon3& polygon, std::vector<clipper::Loop2>& loops,
-                    const std::vector<std::string>& loop_names) const {
-    const LoopCheck check = check_loops(loops, loop_names);
+  LoopCheck orient_holes(hsr::Polygon3& polygon, std::vector<clipper::Loop2>& loops,
+                         const std::vector<std::string>& loop_names) const {
+    LoopCheck check = check_loops(loops, loop_names);
     if (check.problem) fail(*check.problem);
     for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
       if (check.counter_clockwise[k + 1] == check.counter_clockwise[0]) {
@@ -238,18 +258,93 @@ class FaceBuilder {
         std::reverse(loops[k + 1].begin(), loops[k + 1].end());
       }
     }
+    return check;
   }
 
-  // A non-planar face as triangles on its own 3D vertices, those without area left out.
-  std::vector<hsr::Polygon3> triangles(const hsr::Polygon3& polygon,
-                                       const std::vector<clipper::Loop2>& loops,
-                                       const std::string& how_far) const {
-    const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
-    if (!triangles) fail("not planar (" + how_far + "), and could not be split into triangles");
+  // The normal of a planar face whose Newell vector came out zero, as its chart has it
+  // (chart_without_normal): the unit vector of the dropped axis, signed so that the chart
+  // does not mirror the outer loop's front side.
+  static glm::dvec3 chart_normal(const hsr::PlaneChart& chart, const LoopCheck& check) {
+    glm::dvec3 n(0.0);
+    n[chart.dropped_axis] = check.counter_clockwise[0] ? 1.0 : -1.0;
+    return n;
+  }
+
+  // The region of a planar face whose holes share edges with its outer loop or each other
+  // (region_less_holes.h), computed in the chart the loops were checked in (the one
+  // chart_facing `normal` chooses; ChartFrom::kWorld, the coordinates as they are), its
+  // pieces lifted back onto the input's own 3D vertices: the face's parts, each turning
+  // as the outer loop did. A point that is no input vertex is put on the plane through
+  // the outer loop's first vertex (hsr::ChartedPlane::on_plane).
+  std::vector<hsr::Polygon3> planar_region(const hsr::Polygon3& polygon,
+                                           const glm::dvec3& normal) const {
+    hsr::ChartedPlane plane(normal, polygon.outer[0], hsr::ChartFrom::kWorld);
+    const clipper::PolygonWithHoles2 flat = plane.flatten_known(polygon);
+    std::vector<clipper::Loop2> loops{flat.outer};
+    loops.insert(loops.end(), flat.holes.begin(), flat.holes.end());
+    return plane.lift(region(loops));
+  }
+
+  // A non-planar face whose holes share edges: its region in the projection on the
+  // best-fit plane where it was checked, each piece split into triangles on the input's 3D
+  // vertices (a point that is no input vertex: on the best-fit plane).
+  std::vector<hsr::Polygon3> region_triangles(const hsr::Polygon3& polygon,
+                                              const std::vector<clipper::Loop2>& loops,
+                                              const PlaneFrame& frame,
+                                              const std::string& how_far) const {
+    std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> known;
+    const std::vector<glm::dvec3> vertices = all_vertices(polygon);
+    std::size_t k = 0;
+    for (const clipper::Loop2& loop : loops) {
+      for (const clipper::Point2& q : loop) known.emplace(q, vertices[k++]);
+    }
+    auto lift = [&](const clipper::Point2& q) {
+      const auto it = known.find(q);
+      return it != known.end() ? it->second : frame.lift(q);
+    };
+    std::vector<hsr::Polygon3> parts;
+    for (const clipper::PolygonWithHoles2& piece : region(loops)) {
+      std::vector<clipper::Loop2> piece_loops{piece.outer};
+      piece_loops.insert(piece_loops.end(), piece.holes.begin(), piece.holes.end());
+      std::vector<glm::dvec3> corners;
+      for (const clipper::Loop2& loop : piece_loops) {
+        for (const clipper::Point2& q : loop) corners.push_back(lift(q));
+      }
+      std::vector<hsr::Polygon3> more = triangles(piece_loops, corners, how_far);
+      parts.insert(parts.end(), std::make_move_iterator(more.begin()),
+                   std::make_move_iterator(more.end()));
+    }
+    return parts;
+  }
+
+  // region_less_holes, its clipper's failure named after the face.
+  clipper::PolygonSet2 region(const std::vector<clipper::Loop2>& loops) const {
+    try {
+      return region_less_holes(loops);
+    } catch (const clipper::SnapRoundingError& e) {
+      throw clipper::SnapRoundingError(face_message(
+          source_.file, source_.id,
+          std::string("its region, the outer loop less holes that share edges, could not be "
+                      "computed: ") +
+              e.what()));
+    }
+  }
+
+  static std::vector<glm::dvec3> all_vertices(const hsr::Polygon3& polygon) {
     std::vector<glm::dvec3> vertices(polygon.outer);
     for (const hsr::Loop3& hole : polygon.holes) {
       vertices.insert(vertices.end(), hole.begin(), hole.end());
     }
+    return vertices;
+  }
+
+  // Triangles on the 3D vertices (numbered through the loops in order), those without
+  // area left out; the loops are valid as check_loops accepts them, sharing no edges.
+  std::vector<hsr::Polygon3> triangles(const std::vector<clipper::Loop2>& loops,
+                                       const std::vector<glm::dvec3>& vertices,
+                                       const std::string& how_far) const {
+    const std::optional<std::vector<clipper::Triangle>> triangles = clipper::triangulate(loops);
+    if (!triangles) fail("not planar (" + how_far + "), and could not be split into triangles");
     std::vector<hsr::Polygon3> parts;
     for (const clipper::Triangle& t : *triangles) {
       hsr::Loop3 corners{vertices[t[0]], vertices[t[1]], vertices[t[2]]};

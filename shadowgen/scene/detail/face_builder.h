@@ -18,13 +18,24 @@
 //     otherwise it is split into triangles on its original 3D vertices (triangulate.h),
 //     each exactly planar, all keeping the face's id, with a warning. A triangle is planar
 //     whatever the rounded normal says.
-//   - Loops must be simple, holes inside the outer loop and apart from each other
-//     (loop_validation.h). A planar face is checked in its plane chart (hsr/plane_chart.h),
-//     exactly; a non-planar one in its projection on the best-fit plane (rounded
-//     coordinates, exact predicates on them), the same 2D image its triangulation uses,
-//     since a coordinate chart can fold a strongly bent face onto itself.
+//   - Loops must be simple, holes inside the outer loop and apart from each other, though
+//     they may touch it and each other at points and share segments of their edges
+//     (loop_validation.h). A planar face is checked in its plane chart
+//     (hsr/plane_chart.h), exactly; a non-planar one in its projection on the best-fit
+//     plane (rounded coordinates, exact predicates on them), the same 2D image its
+//     triangulation uses, since a coordinate chart can fold a strongly bent face onto
+//     itself.
 //   - Holes are turned to run opposite to the outer loop, which keeps its orientation:
 //     it defines the front side.
+//   - Holes that share a segment with the outer loop or with each other are resolved at
+//     once, so that nothing downstream meets loops along an edge: the face's region (the
+//     outer loop less the holes) is computed with the clipper in the chart it was checked
+//     in (region_less_holes.h), and each of its pieces, lifted back onto the input's own
+//     3D vertices, is a part of the face. A door at the foot of a wall leaves one part,
+//     a window across the wall's whole width two, coplanar. Holes that cover the outer
+//     loop whole leave a face without area: kept, with a warning, its one part a loop
+//     along the outer loop's first edge (as a degenerate face, area 0). A non-planar face
+//     with such holes has each piece of its region split into triangles.
 
 #include <string>
 #include <vector>

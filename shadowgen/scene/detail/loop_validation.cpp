@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "clipper/box.h"
+#include "clipper/clip.h"
 #include "clipper/normalize.h"
 #include "clipper/predicates.h"
 #include "clipper/segment_contact.h"
@@ -52,7 +53,10 @@ class Checker {
   LoopCheck run() {
     LoopCheck result;
     result.problem = check();
-    if (!result.problem) result.counter_clockwise = std::move(ccw_);
+    if (!result.problem) {
+      result.counter_clockwise = std::move(ccw_);
+      result.shares_edges = !sharing_.empty();
+    }
     return result;
   }
 
@@ -79,7 +83,8 @@ class Checker {
     for (const auto& [at, passages] : touches_) {
       if (auto problem = check_sides(at, passages)) return problem;
     }
-    return check_containment();
+    if (auto problem = check_containment()) return problem;
+    return check_sharing_pairs();
   }
 
   std::string vertex_name(std::uint32_t loop, std::size_t clean_index) const {
@@ -162,8 +167,9 @@ class Checker {
       return names_[f.loop] + " crosses " + names_[e.loop] + " " + edges;
     }
     if (m.contact == clipper::Contact::kOverlap) {
-      return names_[f.loop] + " runs along " + names_[e.loop] + " " + edges +
-             "; loops may touch only at points";
+      // A shared segment: where the two loops lie is left to check_sharing_pairs.
+      sharing_.insert({e.loop, f.loop});
+      return std::nullopt;
     }
     std::vector<Passage>& passages = touches_[m.at];
     if (!ends_at(e, m.at)) passages.push_back({e.loop, e.index, true});
@@ -233,10 +239,11 @@ class Checker {
       const Corner a = corner(passages[i], at);
       for (std::size_t j = i + 1; j < passages.size(); ++j) {
         const Corner b = corner(passages[j], at);
-        if (a.prev == b.prev || a.prev == b.next || a.next == b.prev || a.next == b.next) continue;
-        if (!cross(a, b)) continue;
         const Passage& s = passages[i];
         const Passage& t = passages[j];
+        if (a.prev == b.prev || a.prev == b.next || a.next == b.prev || a.next == b.next) continue;
+        if (sharing(s.loop, t.loop)) continue;  // directions in common: check_sharing_pairs
+        if (!cross(a, b)) continue;
         if (s.loop == t.loop) {
           return names_[s.loop] + " intersects itself: it crosses over at vertex " +
                  vertex_name(s.loop, s.index) + ", which it passes again as vertex " +
@@ -298,6 +305,7 @@ class Checker {
     for (auto a = sides.begin(); a != sides.end(); ++a) {
       for (auto b = std::next(a); b != sides.end(); ++b) {
         touching_.insert({a->first, b->first});
+        if (sharing(a->first, b->first)) continue;  // directions in common: check_sharing_pairs
         bool b_in_a = false;
         bool b_out_of_a = false;
         bool a_in_b = false;
@@ -320,7 +328,7 @@ class Checker {
     std::vector<clipper::Box2> boxes;
     for (const CleanLoop& l : loops_) boxes.push_back(clipper::box_of(l.points));
     for (std::uint32_t h = 1; h < loops_.size(); ++h) {
-      if (touching_.count({0, h}) != 0) continue;
+      if (touching_.count({0, h}) != 0 || sharing(0, h)) continue;
       if (!boxes[0].contains(boxes[h]) || !inside_loop(loops_[0].points, loops_[h].points[0])) {
         return names_[h] + " is not inside " + names_[0];
       }
@@ -328,13 +336,43 @@ class Checker {
     for (std::uint32_t h = 1; h < loops_.size(); ++h) {
       for (std::uint32_t g = 1; g < loops_.size(); ++g) {
         if (g == h || !boxes[g].contains(boxes[h])) continue;
-        if (touching_.count({std::min(g, h), std::max(g, h)}) != 0) continue;
+        if (touching_.count({std::min(g, h), std::max(g, h)}) != 0 || sharing(g, h)) continue;
         if (inside_loop(loops_[g].points, loops_[h].points[0])) {
           return names_[h] + " lies inside " + names_[g] + " (holes must not overlap)";
         }
       }
     }
     return std::nullopt;
+  }
+
+  // Loops that share a segment meet along it, not only at points, so their sides cannot be
+  // told from their directions: the clipper tells whether the hole lies in the outer loop
+  // (nothing of it left outside), or two holes overlap (something in both). Pieces within
+  // the rounding of the clipper's snapping are nothing (loop_validation.h).
+  std::optional<std::string> check_sharing_pairs() const {
+    auto something = [](const clipper::PolygonSet2& pieces) {
+      return std::any_of(pieces.begin(), pieces.end(), [](const clipper::PolygonWithHoles2& p) {
+        double bound = clipper::rounding_area_bound(p.outer);
+        for (const clipper::Loop2& hole : p.holes) bound += clipper::rounding_area_bound(hole);
+        return clipper::area(p) > bound;
+      });
+    };
+    for (const auto& [g, h] : sharing_) {
+      const clipper::PolygonSet2 first{{loops_[g].points, {}}};
+      const clipper::PolygonSet2 second{{loops_[h].points, {}}};
+      if (g == 0) {
+        if (something(clipper::difference(second, first))) {
+          return names_[h] + " is not inside " + names_[0];
+        }
+      } else if (something(clipper::intersection(first, second))) {
+        return names_[g] + " and " + names_[h] + " overlap";
+      }
+    }
+    return std::nullopt;
+  }
+
+  bool sharing(std::uint32_t a, std::uint32_t b) const {
+    return sharing_.count({std::min(a, b), std::max(a, b)}) != 0;
   }
 
   std::vector<CleanLoop> loops_;
@@ -346,6 +384,8 @@ class Checker {
   std::vector<bool> pinched_;  // per loop: passes a vertex twice
   std::vector<LoopPieces> pieces_;
   std::set<std::pair<std::uint32_t, std::uint32_t>> touching_;
+  // Pairs of loops (lower first) that share a segment of positive length.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> sharing_;
   std::vector<bool> ccw_;
 };
 

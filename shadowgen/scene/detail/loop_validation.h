@@ -10,8 +10,18 @@
 //     edge, edges running along each other otherwise, or an edge that doubles back along
 //     its predecessor;
 //   - holes lie inside the outer loop, and holes' interiors are disjoint; loops may touch
-//     at isolated points, but neither cross nor run along each other.
+//     at isolated points and may share segments of their edges (a door at the foot of a
+//     wall, two windows side by side), but never cross.
 // Consecutive repeated vertices are ignored (they add no edge).
+//
+// Two loops that share a segment have directions in common where they meet, so their
+// sides cannot be told from their directions there (below). For such a pair, whether the
+// hole lies inside the outer loop, or whether two holes overlap, is decided by the
+// clipper (clipper/clip.h) on the loops as given: the hole less the outer loop, or the
+// two holes' intersection, must be empty. With no crossing the clipper makes no new
+// point, so its answer is exact but for the hot pixels of its snapping: a piece thinner
+// than the rounding of its coordinates (clipper::rounding_area_bound) counts as empty.
+// Every other pair of loops is checked exactly as below.
 //
 // How a pinched or bridged loop is checked: at every point it passes more than once, no
 // two of its passages may cross (their directions in and out must not interleave around
@@ -26,7 +36,7 @@
 // all overlap (long parallel slivers) degrade towards O(n^2) cheap box tests. Each hole
 // costs one point-in-polygon test against the outer loop, and one against every hole
 // whose box contains its box. A loop that falls into k pieces costs k - 1 winding-number
-// tests more.
+// tests more. Each pair of loops that share a segment costs one clip.
 
 #include <optional>
 #include <span>
@@ -44,6 +54,10 @@ struct LoopCheck {
   // Per loop, when valid: whether it runs counter-clockwise in the chart (for a pinched or
   // bridged loop: whether the region it bounds lies to its left).
   std::vector<bool> counter_clockwise;
+  // When valid: whether two loops share a segment of positive length. The loops are then
+  // no polygon with holes in the clipper's sense (clipper/polygon.h), and no input for
+  // clipper::triangulate: their region is to be computed (shared_edge_region.h).
+  bool shares_edges = false;
 };
 
 // loops[0] is the outer loop, the others are holes (either orientation); each has at

@@ -204,9 +204,9 @@ std::vector<MalformedCase> malformed_cases() {
       {"HoleCrossingOuter",
        polygons(polygon("wall", kSquare, "[[[8,4,0],[12,4,0],[12,6,0],[8,6,0]]]")), "wall",
        "hole 0 crosses the outer loop"},
-      {"HoleAlongOuterEdge",
-       polygons(polygon("wall", kSquare, "[[[0,2,0],[2,2,0],[2,4,0],[0,4,0]]]")), "wall",
-       "hole 0 runs along the outer loop"},
+      {"HoleAlongOuterEdgeOutsideIt",
+       polygons(polygon("wall", kSquare, "[[[0,-2,0],[2,-2,0],[2,0,0],[0,0,0]]]")), "wall",
+       "hole 0 is not inside the outer loop"},
       {"HoleTouchingOuterFromOutside",
        polygons(polygon("wall", kSquare, "[[[10,10,0],[12,10,0],[12,12,0]]]")), "wall",
        "hole 0 is not inside the outer loop"},
@@ -221,10 +221,10 @@ std::vector<MalformedCase> malformed_cases() {
        polygons(polygon("wall", kSquare,
                         "[[[1,1,0],[8,1,0],[8,8,0],[1,8,0]], [[3,3,0],[4,3,0],[4,4,0],[3,4,0]]]")),
        "wall", "hole 1 lies inside hole 0"},
-      {"HolesSharingAnEdge",
+      {"HolesSharingAnEdgeAndOverlapping",
        polygons(polygon("wall", kSquare,
-                        "[[[1,1,0],[3,1,0],[3,3,0],[1,3,0]], [[3,1,0],[5,1,0],[5,3,0],[3,3,0]]]")),
-       "wall", "hole 1 runs along hole 0"},
+                        "[[[1,1,0],[3,1,0],[3,3,0],[1,3,0]], [[1,1,0],[2,1,0],[2,3,0],[1,3,0]]]")),
+       "wall", "hole 0 and hole 1 overlap"},
       // Lights.
       {"LightsNotAnArray", scene(R"("lights": 3)"), "",
        "lights: expected an array, found a number"},
@@ -667,6 +667,30 @@ TEST(SceneReader, HolesMayTouchTheOuterLoopAndEachOtherAtPoints) {
       "[[[0,5,0],[3,4,0],[3,6,0]], [[3,6,0],[5,5,0],[5,8,0]], [[10,10,0],[8,9,0],[9,8,0]]]")));
   EXPECT_TRUE(r.warnings.empty());
   EXPECT_EQ(total_area(r.scene.faces[0]), 100.0 - 3.0 - 3.0 - 1.5);
+}
+
+TEST(SceneReader, HolesMayShareEdgesWithTheOuterLoopAndEachOther) {
+  // A door at the foot of the square and two windows side by side: one part, the door a
+  // notch of its outline, the windows one hole.
+  const ReadResult r = parse(
+      polygons(polygon("wall", kSquare,
+                       "[[[4,0,0],[6,0,0],[6,3,0],[4,3,0]], [[1,5,0],[3,5,0],[3,7,0],[1,7,0]],"
+                       " [[3,5,0],[5,5,0],[5,7,0],[3,7,0]]]")));
+  EXPECT_TRUE(r.warnings.empty());
+  const Face& face = r.scene.faces.at(0);
+  ASSERT_EQ(face.parts.size(), 1u);
+  EXPECT_EQ(face.parts[0].outer.size(), 8u);
+  ASSERT_EQ(face.parts[0].holes.size(), 1u);
+  EXPECT_EQ(face.parts[0].holes[0].size(), 6u);
+  EXPECT_EQ(total_area(face), 100.0 - 6.0 - 4.0 - 4.0);
+}
+
+TEST(SceneReader, AHoleAcrossTheWholeFaceCutsItIntoParts) {
+  const ReadResult r =
+      parse(polygons(polygon("wall", kSquare, "[[[0,4,0],[10,4,0],[10,5,0],[0,5,0]]]")));
+  EXPECT_TRUE(r.warnings.empty());
+  EXPECT_EQ(r.scene.faces.at(0).parts.size(), 2u);
+  EXPECT_EQ(total_area(r.scene.faces.at(0)), 90.0);
 }
 
 TEST(SceneReader, CollinearVerticesMakeADegenerateFaceKeptWithAWarning) {
