@@ -572,6 +572,16 @@ LitComparison ShadowOracle::compare(std::size_t face, std::size_t light,
     }
     if (!best) return fail("lit polygon " + std::to_string(p) + " on a face without area");
     const ExactPlane& plane = impl_->parts[mine[*best]].plane;
+    // Parts exactly in that plane (a face whose holes cut its region apart has several)
+    // are one chart: the polygon goes to the one it overlaps most, below.
+    std::vector<std::size_t> coplanar;
+    for (std::size_t m = 0; m < mine.size(); ++m) {
+      const Part& part = impl_->parts[mine[m]];
+      if (!part.plane.degenerate && is_zero(cross(part.plane.n, plane.n)) &&
+          CGAL::is_zero(plane.side(part.loops[0][0]))) {
+        coplanar.push_back(m);
+      }
+    }
     auto to_chart = [&plane](const hsr::Loop3& loop) {
       std::vector<Point2> out_points;
       out_points.reserve(loop.size());
@@ -611,6 +621,17 @@ LitComparison ShadowOracle::compare(std::size_t face, std::size_t light,
         removed.join(loop_region(polygon.holes[h], "hole " + std::to_string(h)));
       }
       piece.difference(removed);
+    }
+    if (coplanar.size() > 1) {
+      Q most(-1);
+      for (const std::size_t m : coplanar) {
+        PolygonSet common = piece;
+        common.intersection(impl_->parts[mine[m]].region);
+        if (const Q overlap = chart_area(common); overlap > most) {
+          most = overlap;
+          best = m;
+        }
+      }
     }
     pieces_chart[*best] += chart_area(piece);
     our_sets[*best].join(piece);

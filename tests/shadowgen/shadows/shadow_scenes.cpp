@@ -7,6 +7,8 @@
 #include <sstream>
 #include <utility>
 
+#include "shadowgen/scene/detail/face_builder.h"
+
 namespace shadowgen::test {
 namespace {
 
@@ -223,6 +225,41 @@ NamedScene eight_lights() {
   return {"eight_lights", scene};
 }
 
+Scene walls_sharing_edges_as_written() {
+  // A rectangle from (x0, z0) to (x1, z1) in the plane y = y, front side towards -y.
+  auto rectangle = [](double y, double x0, double z0, double x1, double z1) {
+    return hsr::Loop3{{x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}};
+  };
+  Scene scene;
+  add_face(scene, "ground", ground(-2, -6, 12, 6));
+  add_face(
+      scene, "front",
+      polygon(rectangle(0, 0, 0, 10, 3), {rectangle(0, 4, 0, 5, 2),      // a door at the foot
+                                          rectangle(0, 1, 1, 2.5, 2),    // two windows side by side
+                                          rectangle(0, 2.5, 1, 3.5, 2),  //
+                                          rectangle(0, 7, 2, 9, 3)}));   // a window at the top
+  add_face(scene, "back", polygon(rectangle(1.5, 0, 0, 10, 3), {rectangle(1.5, 0, 1, 10, 2)}));
+  add_face(scene, "overhang",
+           polygon({{1, -1.5, 2.75}, {9, -1.5, 2.75}, {9, -0.25, 2.75}, {1, -0.25, 2.75}}));
+  add_face(scene, "post", polygon({{3.5, -2, 0}, {3.5, -1, 0}, {3.5, -1, 2.5}, {3.5, -2, 2.5}}));
+  scene.lights.push_back(directional_light("sun", {0.375, 0.75, -0.625}));
+  scene.lights.push_back(point_light("lamp", {5, -4, 2.5}));
+  return scene;
+}
+
+NamedScene walls_with_openings_sharing_edges() {
+  return {"walls_with_openings_sharing_edges", as_read(walls_sharing_edges_as_written())};
+}
+
+Scene as_read(const Scene& scene) {
+  Scene out = scene;
+  for (Face& face : out.faces) {
+    std::vector<std::string> warnings;
+    face = detail::build_face(face.parts.at(0), {face.id, "scene.json"}, false, warnings);
+  }
+  return out;
+}
+
 std::vector<NamedScene> oracle_scenes() {
   return {boxes_on_ground_sun(),
           boxes_on_ground_lamp(),
@@ -230,7 +267,8 @@ std::vector<NamedScene> oracle_scenes() {
           interpenetrating_polygons(),
           lamp_among_objects(),
           open_box_lit_inside(),
-          eight_lights()};
+          eight_lights(),
+          walls_with_openings_sharing_edges()};
 }
 
 Scene shuffled(const Scene& scene, std::uint64_t seed) {

@@ -61,7 +61,17 @@ NamedScene interpenetrating_polygons();
 NamedScene lamp_among_objects();
 NamedScene open_box_lit_inside();
 NamedScene eight_lights();
+// Two walls with openings whose edges they share (a door at the foot, windows side by
+// side, a window at the top, a window across a whole wall), an overhang, a post and the
+// ground, under a sun and a lamp. As written, each wall is one polygon with its holes
+// (which the oracle takes as they are); as read, each face is what the scene reader makes
+// of it (the region less the holes as its parts: detail/face_builder.h).
+Scene walls_sharing_edges_as_written();
+NamedScene walls_with_openings_sharing_edges();
 std::vector<NamedScene> oracle_scenes();
+
+// The scene with every face's one polygon read as the scene reader reads it.
+Scene as_read(const Scene& scene);
 
 // Metamorphic transforms. Each coordinate is rounded once (except shuffles).
 Scene shuffled(const Scene& scene, std::uint64_t seed);  // faces and lights permuted
