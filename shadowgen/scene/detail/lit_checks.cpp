@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <sstream>
 
 #include "clipper/clip.h"
@@ -73,6 +74,8 @@ LitChecker::LitChecker(const Face& face) : several_parts_(face.parts.size() > 1)
     const glm::dvec3 size = hi - lo;
     const glm::dvec3 magnitude = glm::max(glm::abs(lo), glm::abs(hi));
     part.extent = std::max({size.x, size.y, size.z});
+    part.lo = lo;
+    part.hi = hi;
     part.reach = kRoundingReach * (part.extent + std::max({magnitude.x, magnitude.y, magnitude.z}));
     part.perimeter = hsr::perimeter(polygon);
     const double area = hsr::area(polygon);
@@ -109,13 +112,24 @@ clipper::PolygonWithHoles2 LitChecker::to_chart(const Part& part,
 std::size_t LitChecker::nearest_part(const hsr::Polygon3& polygon) const {
   std::size_t best = 0;
   double best_distance = INFINITY;
+  std::vector<double> distances(parts_.size(), 0.0);
   for (std::size_t k = 0; k < parts_.size(); ++k) {
-    double d = 0.0;
+    double& d = distances[k];
     for (const glm::dvec3& p : polygon.outer) d = std::max(d, distance_to_plane(parts_[k], p));
     if (d < best_distance) {
       best_distance = d;
       best = k;
     }
+  }
+  for (std::size_t k = 0; k < parts_.size(); ++k) {
+    const Part& part = parts_[k];
+    if (!(distances[k] <= best_distance + part.reach)) continue;
+    const bool held =
+        std::all_of(polygon.outer.begin(), polygon.outer.end(), [&](const glm::dvec3& p) {
+          return glm::all(glm::greaterThanEqual(p, part.lo - part.reach)) &&
+                 glm::all(glm::lessThanEqual(p, part.hi + part.reach));
+        });
+    if (held) return k;
   }
   return best;
 }

@@ -52,8 +52,10 @@ class LitChecker {
  public:
   explicit LitChecker(const Face& face);
 
-  // The part whose plane is nearest to the polygon's outer vertices, the first of equals
-  // (for lit polygons written without "part").
+  // The part whose plane is nearest to the polygon's outer vertices (for lit polygons
+  // written without "part"). Among parts as near within rounding (kRoundingReach), as the
+  // coplanar parts of a face whose holes cut its region apart are, the first whose
+  // bounding box holds the polygon's outer vertices; otherwise the first of the nearest.
   std::size_t nearest_part(const hsr::Polygon3& polygon) const;
 
   // The first problem of the lit polygons of one light on this face, if any.
@@ -72,7 +74,8 @@ class LitChecker {
     glm::dvec3 origin{0.0};    // the outer loop's first vertex
     glm::dvec3 centroid{0.0};  // of the outer loop, relative to origin
     double extent = 0.0;
-    double reach = 0.0;  // kRoundingReach × (extent + magnitude)
+    glm::dvec3 lo{0.0}, hi{0.0};  // the bounding box
+    double reach = 0.0;           // kRoundingReach × (extent + magnitude)
     // How far the rounding of the normal alone can put a point of the part off its plane:
     // Newell's vector is off by ulps of extent² beside its length, twice the area, so a
     // sliver's plane is known only to that tilt, times extent (kRoundingReach × extent³ /

@@ -89,6 +89,17 @@ TEST(DatabaseReader, GoodLitPolygonsAreRead) {
                                  "db.json"));
 }
 
+TEST(DatabaseReader, LitPolygonsWithoutPartGoOnTheCoplanarPartThatHoldsThem) {
+  // A face of two coplanar parts (a square whose hole across it cut it apart), its lit
+  // polygons written without "part": each is read on the part that holds it.
+  const std::string parts = square(0, 0, 4) + "," + square(0, 6, 4);
+  const ShadowedScene s =
+      parse_database(database(square(1, 7, 1) + "," + square(1, 1, 2), parts), "db.json");
+  ASSERT_EQ(s.lit[0][0].size(), 2u);
+  EXPECT_EQ(s.lit[0][0][0].part, 1u);
+  EXPECT_EQ(s.lit[0][0][1].part, 0u);
+}
+
 TEST(DatabaseReader, LitAreaAboveTheFacesIsAnError) {
   // Three times the face's area (15), and 2500 times.
   const std::string big = R"({"outer": [[-2,-2,0],[7,-2,0],[7,3,0],[-2,3,0]], "holes": []})";
