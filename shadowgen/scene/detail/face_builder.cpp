@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 
@@ -250,7 +251,8 @@ class FaceBuilder {
   // Validates the loops; turns holes to run opposite to the outer loop.
   LoopCheck orient_holes(hsr::Polygon3& polygon, std::vector<clipper::Loop2>& loops,
                          const std::vector<std::string>& loop_names) const {
-    LoopCheck check = check_loops(loops, loop_names);
+    LoopCheck check = clipping("its holes that share edges could not be checked",
+                               [&] { return check_loops(loops, loop_names); });
     if (check.problem) fail(*check.problem);
     for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
       if (check.counter_clockwise[k + 1] == check.counter_clockwise[0]) {
@@ -319,14 +321,19 @@ class FaceBuilder {
 
   // region_less_holes, its clipper's failure named after the face.
   clipper::PolygonSet2 region(const std::vector<clipper::Loop2>& loops) const {
+    return clipping("its region, the outer loop less holes that share edges, could not be computed",
+                    [&] { return region_less_holes(loops); });
+  }
+
+  // `work`, a clip whose snapping does not settle (clipper/clip.h, Limit; no input is known
+  // to cause it) named after the face: not the input's fault, so no InputError.
+  template <typename Work>
+  std::invoke_result_t<Work&> clipping(const std::string& what, Work work) const {
     try {
-      return region_less_holes(loops);
+      return work();
     } catch (const clipper::SnapRoundingError& e) {
-      throw clipper::SnapRoundingError(face_message(
-          source_.file, source_.id,
-          std::string("its region, the outer loop less holes that share edges, could not be "
-                      "computed: ") +
-              e.what()));
+      throw clipper::SnapRoundingError(
+          face_message(source_.file, source_.id, what + ": " + e.what()));
     }
   }
 

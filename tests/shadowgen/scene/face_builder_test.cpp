@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "clipper/clip.h"
 #include "hsr/area.h"
 #include "hsr/polygon3.h"
 #include "shadowgen/model/input_error.h"
@@ -193,6 +194,23 @@ TEST(FaceBuilderSharedEdges, ANonPlanarFaceIsSplitIntoTrianglesOfItsRegion) {
     EXPECT_LT(hsr::plane_of(t).normal.y, 0.0);
   }
   EXPECT_NEAR(hsr::area(b.face.parts), 28.0, 1e-3);
+}
+
+TEST(FaceBuilderSharedEdges, AClipThatDoesNotSettleNamesTheFileAndTheFace) {
+  // The door's corners lie inside the wall's foot: with the snapping held to no rounds and
+  // no grid (clipper/clip.h), checking where it lies cannot settle. Not the input's fault:
+  // the clipper's error, naming the face.
+  const clipper::SnapRoundLimitForTesting limit(0, 0);
+  try {
+    build({kWall, {rectangle(4, 0, 5, 2)}});
+    ADD_FAILURE() << "no error";
+  } catch (const clipper::SnapRoundingError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("scene.json: face 'wall': its holes that share edges "
+                                          "could not be checked: snap rounding of ",
+                                          0),
+              0u)
+        << e.what();
+  }
 }
 
 // ---- What stays refused ------------------------------------------------------------------
