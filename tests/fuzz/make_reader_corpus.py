@@ -230,6 +230,18 @@ def seeds():
     { "id": "main", "eye": [20, -15, 10], "target": [5, 5, 0], "up": [0, 0, 1], "fov_deg": 45 }
   ]
 }""", ("models/box.obj", CUBE_OBJ))
+    # Holes that share edges with their outer loop and each other: a door at the foot of a
+    # wall, windows side by side, a window across a whole wall (its two coplanar parts).
+    out["scene-holes-sharing-edges"] = seed(SCENE + GENERATE, """{"format": "shadowgen-scene/1",
+ "polygons": [
+  {"id": "front", "outer": [[0,0,0],[10,0,0],[10,0,3],[0,0,3]],
+   "holes": [[[4,0,0],[5,0,0],[5,0,2],[4,0,2]], [[1,0,1],[2.5,0,1],[2.5,0,2],[1,0,2]],
+             [[2.5,0,1],[3.5,0,1],[3.5,0,2],[2.5,0,2]], [[7,0,2],[9,0,2],[9,0,3],[7,0,3]]]},
+  {"id": "back", "outer": [[0,1.5,0],[10,1.5,0],[10,1.5,3],[0,1.51,3]],
+   "holes": [[[0,1.5,1],[10,1.5,1],[10,1.5,2],[0,1.5,2]]]},
+  {"id": "ground", "outer": [[-2,-6,0],[12,-6,0],[12,6,0],[-2,6,0]]}],
+ "lights": [{"id": "sun", "type": "directional", "direction": [0.375, 0.75, -0.625]},
+            {"id": "lamp", "type": "point", "position": [5, -4, 2.5]}]}""")
     # Every mesh format through a scene, with a projective transform.
     for ext, body in (("obj", CUBE_OBJ), ("stl", ASCII_STL), ("ply", ASCII_PLY),
                       ("off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")):

@@ -135,15 +135,32 @@ class FaceBuilder {
     // the best-fit plane, where it will be triangulated (a coordinate chart could fold it).
     std::vector<clipper::Loop2> loops;
     hsr::PlaneChart chart;
-    std::optional<PlaneFrame> frame;
+    std::optional<PlaneFrame> frame;  // where a non-planar face is checked in its projection
+    auto in_chart = [&chart](const hsr::Loop3& l) { return chart.flatten(l); };
     if (planar) {
       chart = has_normal ? hsr::chart_facing(normal) : chart_without_normal(polygon.outer);
-      loops = flatten_loops(polygon, [&chart](const hsr::Loop3& l) { return chart.flatten(l); });
+      loops = flatten_loops(polygon, in_chart);
     } else {
       frame.emplace(polygon.outer[0], normal);
       loops = flatten_loops(polygon, [&frame](const hsr::Loop3& l) { return frame->project(l); });
     }
-    const LoopCheck check = orient_holes(polygon, loops, loop_names);
+    LoopCheck check = checked(loops, loop_names);
+    if (check.problem && !planar) {
+      // The projection's rounded coordinates can put a hole's vertex that lies on an edge
+      // of the outer loop in 3D (a window along a bent wall's side) a hair beyond it. The
+      // exact chart keeps every incidence of the 3D points: where the loops are valid in
+      // it (it does not fold the face), they are cut and triangulated there.
+      chart = hsr::chart_facing(normal);
+      std::vector<clipper::Loop2> charted = flatten_loops(polygon, in_chart);
+      LoopCheck exact = checked(charted, loop_names);
+      if (!exact.problem) {
+        loops = std::move(charted);
+        check = std::move(exact);
+        frame.reset();
+      }
+    }
+    if (check.problem) fail(*check.problem);
+    orient_holes(polygon, loops, check);
     if (planar && !check.shares_edges) {
       face.parts.push_back(std::move(polygon));
       return face;
@@ -151,8 +168,14 @@ class FaceBuilder {
     if (planar) {
       face.parts = planar_region(polygon, has_normal ? normal : chart_normal(chart, check));
     } else {
-      face.parts = check.shares_edges ? region_triangles(polygon, loops, *frame, how_far)
-                                      : triangles(loops, all_vertices(polygon), how_far);
+      auto lift = [&](const clipper::Point2& q) {
+        return frame ? frame->lift(q)
+                     : hsr::ChartedPlane(normal, polygon.outer[0], hsr::ChartFrom::kWorld)
+                           .on_plane(q);
+      };
+      face.parts = check.shares_edges
+                       ? region_triangles(polygon, loops, check.counter_clockwise[0], lift, how_far)
+                       : triangles(loops, all_vertices(polygon), how_far);
       if (!face.parts.empty() || !check.shares_edges) {
         warn("not planar (" + how_far + "): split into " + std::to_string(face.parts.size()) +
              " triangles");
@@ -248,19 +271,21 @@ class FaceBuilder {
     return loops;
   }
 
-  // Validates the loops; turns holes to run opposite to the outer loop.
-  LoopCheck orient_holes(hsr::Polygon3& polygon, std::vector<clipper::Loop2>& loops,
-                         const std::vector<std::string>& loop_names) const {
-    LoopCheck check = clipping("its holes that share edges could not be checked",
-                               [&] { return check_loops(loops, loop_names); });
-    if (check.problem) fail(*check.problem);
+  LoopCheck checked(const std::vector<clipper::Loop2>& loops,
+                    const std::vector<std::string>& loop_names) const {
+    return clipping("its holes that share edges could not be checked",
+                    [&] { return check_loops(loops, loop_names); });
+  }
+
+  // Turns holes to run opposite to the outer loop, as the check of the loops found them.
+  static void orient_holes(hsr::Polygon3& polygon, std::vector<clipper::Loop2>& loops,
+                           const LoopCheck& check) {
     for (std::size_t k = 0; k < polygon.holes.size(); ++k) {
       if (check.counter_clockwise[k + 1] == check.counter_clockwise[0]) {
         std::reverse(polygon.holes[k].begin(), polygon.holes[k].end());
         std::reverse(loops[k + 1].begin(), loops[k + 1].end());
       }
     }
-    return check;
   }
 
   // The normal of a planar face whose Newell vector came out zero, as its chart has it
@@ -287,12 +312,14 @@ class FaceBuilder {
     return plane.lift(region(loops));
   }
 
-  // A non-planar face whose holes share edges: its region in the projection on the
-  // best-fit plane where it was checked, each piece split into triangles on the input's 3D
-  // vertices (a point that is no input vertex: on the best-fit plane).
+  // A non-planar face whose holes share edges: its region in the 2D coordinates where it
+  // was checked (`loops`, the outer loop counter-clockwise there or not), each piece split
+  // into triangles on the input's 3D vertices, running as the outer loop does (a point
+  // that is no input vertex: `lift`, onto the best-fit plane).
+  template <typename Lift>
   std::vector<hsr::Polygon3> region_triangles(const hsr::Polygon3& polygon,
                                               const std::vector<clipper::Loop2>& loops,
-                                              const PlaneFrame& frame,
+                                              bool outer_counter_clockwise, Lift lift_new,
                                               const std::string& how_far) const {
     std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> known;
     const std::vector<glm::dvec3> vertices = all_vertices(polygon);
@@ -302,12 +329,15 @@ class FaceBuilder {
     }
     auto lift = [&](const clipper::Point2& q) {
       const auto it = known.find(q);
-      return it != known.end() ? it->second : frame.lift(q);
+      return it != known.end() ? it->second : lift_new(q);
     };
     std::vector<hsr::Polygon3> parts;
     for (const clipper::PolygonWithHoles2& piece : region(loops)) {
       std::vector<clipper::Loop2> piece_loops{piece.outer};
       piece_loops.insert(piece_loops.end(), piece.holes.begin(), piece.holes.end());
+      if (!outer_counter_clockwise) {  // the clipper's pieces run counter-clockwise
+        for (clipper::Loop2& loop : piece_loops) std::reverse(loop.begin(), loop.end());
+      }
       std::vector<glm::dvec3> corners;
       for (const clipper::Loop2& loop : piece_loops) {
         for (const clipper::Point2& q : loop) corners.push_back(lift(q));

@@ -24,7 +24,11 @@
 //     (hsr/plane_chart.h), exactly; a non-planar one in its projection on the best-fit
 //     plane (rounded coordinates, exact predicates on them), the same 2D image its
 //     triangulation uses, since a coordinate chart can fold a strongly bent face onto
-//     itself.
+//     itself. The projection's rounding can put a hole's vertex that lies on an edge of
+//     the outer loop in 3D a hair beyond it; a non-planar face refused in its projection
+//     is checked again in its exact chart (chart_facing its best-fit normal), which keeps
+//     every incidence of the 3D points, and where its loops are valid there, it is cut and
+//     triangulated there.
 //   - Holes are turned to run opposite to the outer loop, which keeps its orientation:
 //     it defines the front side.
 //   - Holes that share a segment with the outer loop or with each other are resolved at
