@@ -75,6 +75,28 @@ TEST(EnergyPlusPlacement, ClockwiseInputFromTheUpperRightCornerIsTurnedToStartUp
   expect_loop(wall.polygon.holes[0], {{1, 0, 2}, {1, 0, 0.5}, {3, 0, 0.5}, {3, 0, 2}});
 }
 
+// Entered from the lower left corner, counter-clockwise: GetVertices brings the upper left
+// corner first, so that vertex 2, from which windows are placed, is the lower left one.
+TEST(EnergyPlusPlacement, LowerLeftCornerInputPlacesWindowsFromTheLowerLeftCorner) {
+  const SourceModel model = read_idf(R"(
+Version, 9.6;
+GlobalGeometryRules, LowerLeftCorner, Counterclockwise, World;
+Zone, Z1;
+BuildingSurface:Detailed, South, Wall, Ext, Z1, , Outdoors, , SunExposed, WindExposed, , 4,
+  0, 0, 0,  4, 0, 0,  4, 0, 3,  0, 0, 3;
+Window, South Window, Glass, South, , 1, 1, 0.5, 2, 1.5;
+Shading:Zone:Detailed, Fin, South, , 3,  4, 0, 0,  4, -1, 0,  4, -1, 3;
+)");
+  expect_loop(face_named(model, "South").polygon.outer,
+              {{0, 0, 3}, {0, 0, 0}, {4, 0, 0}, {4, 0, 3}});
+  expect_loop(face_named(model, "South Window").polygon.outer,
+              {{1, 0, 2}, {1, 0, 0.5}, {3, 0, 0.5}, {3, 0, 2}});
+  // A triangle from its lower left corner turns as a rectangle does: its last vertex first.
+  expect_loop(face_named(model, "Fin").polygon.outer, {{4, -1, 3}, {4, 0, 0}, {4, -1, 0}});
+  EXPECT_EQ(face_named(model, "Fin").origin,
+            (FaceOrigin{"energyplus", "Fin", "Z1", "Shading:Zone"}));
+}
+
 TEST(EnergyPlusPlacement, WorldCoordinatesIgnoreNorthAxesAndZoneOrigins) {
   const SourceModel model = read_idf(kClockwiseWorld);
   // Azimuth 90 (east) as entered, from (2, 3, 0) as entered.
