@@ -1,6 +1,9 @@
 #include "detail/model_builder.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <utility>
@@ -18,6 +21,10 @@ constexpr std::string_view kFormat = "energyplus";
 // FenestrationSurface:Detailed holds at most 4 vertices (the IDD's \maximum 4).
 constexpr std::size_t kMostOpeningVertices = 4;
 constexpr std::size_t kMostVertices = static_cast<std::size_t>(-1);
+// How far from its base's plane an opening computed on it may lie by rounding alone,
+// relative to the largest coordinate: a few operations' rounding (2^-52 each) on the
+// corner, the sines and the sides, with the plane's own fit; 64 ε = 1.4e-14.
+constexpr double kPlaneRounding = 64.0 * std::numeric_limits<double>::epsilon();
 
 // A surface made of an object, before its holes are cut.
 struct Surface {
@@ -240,13 +247,25 @@ class ModelBuilder {
   }
 
   // The opening's vertices, taken along the base surface's normal into its plane, as a
-  // hole of the base surface.
+  // hole of the base surface. An opening already in that plane to within the rounding of
+  // computing it there is kept as it is: a door placed on its wall from the wall's own
+  // corner has its sill exactly on the wall's lower edge, and moving it by a rounding
+  // error along a normal that is itself rounded would take it off that edge.
   void cut_hole(std::size_t base_index, const std::vector<glm::dvec3>& vertices) {
     Surface& base = made_[base_index][0];
     const hsr::Plane3 plane = hsr::plane_of(hsr::Polygon3{base.placed.vertices, {}});
+    double extent = 0.0;
+    for (const glm::dvec3& p : base.placed.vertices) {
+      extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    }
+    bool in_plane = true;
+    for (const glm::dvec3& p : vertices) {
+      in_plane = in_plane && std::abs(plane.signed_distance(p)) <= kPlaneRounding * extent;
+    }
     hsr::Loop3 hole;
-    for (const glm::dvec3& p : vertices)
-      hole.push_back(p - plane.normal * plane.signed_distance(p));
+    for (const glm::dvec3& p : vertices) {
+      hole.push_back(in_plane ? p : p - plane.normal * plane.signed_distance(p));
+    }
     base.holes.push_back(std::move(hole));
   }
 

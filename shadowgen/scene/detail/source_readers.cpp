@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "shadowgen/energyplus/energyplus_reader.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
@@ -13,6 +14,7 @@ SourceModel read_source(SourceFormat format, const std::filesystem::path& file,
     case SourceFormat::kMesh:
       break;
     case SourceFormat::kEnergyPlus:
+      return energyplus::read_energyplus(file, options);
     case SourceFormat::kCityJson:
     case SourceFormat::kGltf:
       throw InputError(file.string(), "",
