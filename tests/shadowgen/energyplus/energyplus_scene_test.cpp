@@ -93,5 +93,36 @@ TEST(EnergyPlusScene, SiteLocationGivesTheScenesSite) {
   EXPECT_EQ(scene.site->utc_offset_h, 1.0);
 }
 
+// The example model reads whole, its openings cut from their walls, and a winter
+// afternoon's shadows on it (the neighbour's, the overhangs', the fins') are exact.
+TEST(EnergyPlusScene, TheExampleOfficesAreExactUnderAWinterAfternoon) {
+  Scene scene =
+      read_scene(std::filesystem::path(SHADOWGEN_EXAMPLES_DIR) / "energyplus" / "office.json")
+          .scene;
+  ASSERT_EQ(scene.faces.size(), 23u);
+  const auto face = [&](std::string_view id) -> const Face& {
+    for (const Face& f : scene.faces) {
+      if (f.id == id) return f;
+    }
+    ADD_FAILURE() << "no face " << id;
+    return scene.faces[0];
+  };
+  EXPECT_EQ(face("office/West Office South Wall").parts[0].holes.size(), 2u);
+  EXPECT_EQ(face("office/West Office West Wall").parts[0].holes.size(), 1u);
+  EXPECT_EQ(face("office/East Office East Window Fin Left").origin.semantic, "Shading:Zone");
+  ASSERT_TRUE(scene.site.has_value());
+  EXPECT_EQ(scene.site->latitude_deg, 39.74);
+
+  std::erase_if(scene.lights,
+                [](const Light& light) { return light.id != "year@2026-01-15T13:00"; });
+  ASSERT_EQ(scene.lights.size(), 1u);
+  // The instant as a light of its own, so that its lit polygons are kept to compare.
+  scene.lights[0].sun.reset();
+  scene.sun_paths.clear();
+  const test::OracleCheck check = test::check_against_oracle(scene, 1e-9);
+  EXPECT_EQ(check.failures, 0u) << check.report;
+  EXPECT_GT(check.pairs, 0u);
+}
+
 }  // namespace
 }  // namespace shadowgen
