@@ -79,12 +79,13 @@ std::vector<glm::dvec3> ObjectFields::vertices(std::size_t most) const {
   const std::size_t count = coordinates.size() / 3;
   const auto stated = object_.fields.find("number_of_vertices");
   if (stated != object_.fields.end() && !same_text(stated->second.text, "autocalculate")) {
-    const std::optional<std::int64_t> n = parse_integer(stated->second.text);
-    if (!n) {
+    // A number, as EnergyPlus reads the field (4 and 4.0 alike), that must be whole.
+    const std::optional<double> n = parse_number(stated->second.text);
+    if (!n || !std::isfinite(*n) || std::floor(*n) != *n) {
       fail_at(stated->second.line, stated->second.label,
               "'" + stated->second.text + "' is not a whole number (nor autocalculate)");
     }
-    if (*n < 0 || static_cast<std::size_t>(*n) != count) {
+    if (*n != static_cast<double>(count)) {
       fail_at(stated->second.line, stated->second.label,
               "says " + stated->second.text + " vertices, and " + std::to_string(count) +
                   (count == 1 ? " is" : " are") + " given");

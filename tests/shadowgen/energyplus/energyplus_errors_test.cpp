@@ -53,6 +53,16 @@ TEST(EnergyPlusErrors, VertexCountThatDoesNotMatch) {
             "are x, y, z each, so a multiple of 3");
 }
 
+TEST(EnergyPlusErrors, VertexCountThatIsNotAWholeNumber) {
+  EXPECT_EQ(error_of(with_head("Shading:Site:Detailed, S, , four, 0, 0, 0, 1, 0, 0, 1, 0, 1;\n")),
+            "model.idf: line 4: Shading:Site:Detailed 'S', Number of Vertices: 'four' is not a "
+            "whole number (nor autocalculate)");
+  // 3.0 is the number 3, as EnergyPlus reads it.
+  EXPECT_EQ(read_idf(with_head("Shading:Site:Detailed, S, , 3.0, 0, 0, 0, 1, 0, 0, 1, 0, 1;\n"))
+                .faces.size(),
+            1u);
+}
+
 TEST(EnergyPlusErrors, UnknownZone) {
   EXPECT_EQ(error_of(with_head("Wall:Exterior, W, Ext, Z9, , 180, 90, 0, 0, 0, 1, 1;\n")),
             "model.idf: line 4: Wall:Exterior 'W', Zone Name: no Zone is named 'Z9'");
