@@ -255,6 +255,63 @@ BuildingSurface:Detailed, Wall, Wall, Ext, Z1, , Outdoors, , SunExposed, WindExp
   EXPECT_DOUBLE_EQ(face_named(model, "Wall").vertex_rounding, kRoot3 / 2 * 1e-3);
 }
 
+// A Relative coordinate system with World rectangles: the rectangle's azimuth still turns
+// with the building's north axis (GetRectSurfaces), its starting corner is taken as it is
+// (MakeRectangularVertices), as EnergyPlus does (and warns of).
+TEST(EnergyPlusPlacement, WorldRectanglesInARelativeFileTurnTheirAzimuthOnly) {
+  const SourceModel model = read_idf(R"(
+Version, 9.6;
+GlobalGeometryRules, UpperLeftCorner, Counterclockwise, Relative, Relative, World;
+Building, B, 90;
+Zone, Z1, 0, 5, 0, 0;
+Wall:Exterior, W, Ext, Z1, , 180, 90, 0, 0, 0, 4, 3;
+)");
+  expect_loop(face_named(model, "W").polygon.outer, {{0, 0, 3}, {0, 0, 0}, {0, -4, 0}, {0, -4, 3}});
+}
+
+// Depths as fractions of the window: an overhang's of its height, a fin's of its width.
+TEST(EnergyPlusPlacement, ProjectionShadingTakesItsDepthFromTheWindow) {
+  const SourceModel model = read_idf(R"(
+Version, 9.6;
+GlobalGeometryRules, UpperLeftCorner, Counterclockwise, World;
+Zone, Z1;
+Wall:Exterior, South, Ext, Z1, , 180, 90, 0, 0, 0, 10, 3;
+Window, Win, Glass, South, , 1, 2, 1, 4, 1.5;
+Shading:Overhang:Projection, Brow, Win, 0, 90, 0, 0, 0.4;
+Shading:Fin:Projection, Side, Win, 0, 0, 0, 90, 0.25, 0, 0, 0, 90, 0.5;
+)");
+  // 0.4 × 1.5 = 0.6 deep, right over the window's top (2.5).
+  expect_loop(face_named(model, "Brow").polygon.outer,
+              {{2, -0.6, 2.5}, {2, 0, 2.5}, {6, 0, 2.5}, {6, -0.6, 2.5}});
+  // 0.25 × 4 = 1 and 0.5 × 4 = 2 deep, along the window's sides.
+  expect_loop(face_named(model, "Side Left").polygon.outer,
+              {{2, 0, 2.5}, {2, 0, 1}, {2, -1, 1}, {2, -1, 2.5}});
+  expect_loop(face_named(model, "Side Right").polygon.outer,
+              {{6, 0, 2.5}, {6, 0, 1}, {6, -2, 1}, {6, -2, 2.5}});
+}
+
+// What EnergyPlus drops, with a word: a vertex within 0.01 m of the one before it, and an
+// overhang without area.
+TEST(EnergyPlusPlacement, DroppedVerticesAndSurfacesAreSaid) {
+  const SourceModel model = read_idf(R"(
+Version, 9.6;
+GlobalGeometryRules, UpperLeftCorner, Counterclockwise, World;
+Zone, Z1;
+Shading:Site:Detailed, S, , 5,  0, 0, 0,  4, 0, 0,  4.005, 0, 0,  4, 0, 3,  0, 0, 3;
+Wall:Exterior, South, Ext, Z1, , 180, 90, 0, 0, 0, 10, 3;
+Window, Win, Glass, South, , 1, 2, 1, 4, 1.5;
+Shading:Overhang, Flat, Win, 0.1, 90, 0, 0, 0;
+)");
+  expect_loop(face_named(model, "S").polygon.outer, {{0, 0, 0}, {4, 0, 0}, {4, 0, 3}, {0, 0, 3}});
+  EXPECT_EQ(model.faces.size(), 3u);  // no overhang
+  EXPECT_EQ(model.warnings,
+            (std::vector<std::string>{
+                "model.idf: line 8: Shading:Overhang 'Flat': its length times its depth is not "
+                "positive; EnergyPlus enters no surface for it, and neither does this reader",
+                "model.idf: 1 surface has a vertex within 0.01 m of the one before it, dropped "
+                "as EnergyPlus drops it: 'S'"}));
+}
+
 TEST(EnergyPlusPlacement, SiteLocationGivesTheSite) {
   const SourceModel model = read_idf(R"(
 Version, 9.6;
