@@ -2,7 +2,8 @@
 
 // The EnergyPlus versions read: 8.9 to 26.x. The field positions of the objects read
 // (object_classes.h) are those of 8.9, of 9.0 to 9.5 and of 9.6 on; releases after 9.6
-// (numbered 22.1, 22.2, 23.1, ... by year) changed none of them.
+// (numbered 22.1, 22.2, 23.1, ... by year) are read with 9.6's field lists, which they
+// have not moved as far as this reader knows (docs/energyplus.md, "Versions").
 
 #include <optional>
 #include <string>
