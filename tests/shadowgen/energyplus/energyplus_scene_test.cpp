@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "hsr/area.h"
 #include "shadowgen/scene/scene_reader.h"
 #include "shadowgen/shadows/generate.h"
 #include "tests/shadowgen/shadows/shadow_check.h"
@@ -14,8 +15,8 @@ namespace shadowgen {
 namespace {
 
 // A house turned 90 degrees from true north, so its south wall faces west: a window with an
-// overhang and fins, a door on a 0.1 m sill, and a neighbouring building's wall on the site
-// (never turned) 6 m west of it.
+// overhang and fins, a door at floor level (a hole sharing the wall's lower edge), and a
+// neighbouring building's wall on the site (never turned) 6 m west of it.
 constexpr std::string_view kHouse = R"(
 Version, 24.1;
 GlobalGeometryRules, UpperLeftCorner, Counterclockwise, Relative, Relative, Relative;
@@ -24,7 +25,7 @@ Site:Location, Somewhere, 52.0, 4.4, 1, 0;
 Zone, Living;
 Wall:Exterior, South, Ext, Living, , 180, 90, 0, 0, 0, 10, 3;
 Window, South Window, Glass, South, , 1, 2, 1, 3, 1.5;
-Door, South Door, Door, South, 1, 7, 0.1, 1, 2;
+Door, South Door, Door, South, 1, 7, 0, 1, 2;
 Shading:Overhang, Overhang, South Window, 0.2, 90, 0.5, 0.5, 1;
 Shading:Fin, Fin, South Window, 0.1, 0.2, 0.3, 90, 0.5, 0.1, 0.2, 0.3, 90, 0.5;
 Shading:Site, Neighbour, 90, 90, -6, -12, 0, 14, 6;
@@ -40,9 +41,9 @@ constexpr std::string_view kPlainPolygons = R"({ "format": "shadowgen-scene/1",
   "polygons": [
     { "id": "South", "outer": [[0,0,3],[0,0,0],[0,-10,0],[0,-10,3]],
       "holes": [ [[0,-2,2.5],[0,-2,1],[0,-5,1],[0,-5,2.5]],
-                 [[0,-7,2.1],[0,-7,0.1],[0,-8,0.1],[0,-8,2.1]] ] },
+                 [[0,-7,2],[0,-7,0],[0,-8,0],[0,-8,2]] ] },
     { "id": "South Window", "outer": [[0,-2,2.5],[0,-2,1],[0,-5,1],[0,-5,2.5]] },
-    { "id": "South Door", "outer": [[0,-7,2.1],[0,-7,0.1],[0,-8,0.1],[0,-8,2.1]] },
+    { "id": "South Door", "outer": [[0,-7,2],[0,-7,0],[0,-8,0],[0,-8,2]] },
     { "id": "Overhang", "outer": [[-1,-1.5,2.7],[0,-1.5,2.7],[0,-5.5,2.7],[-1,-5.5,2.7]] },
     { "id": "Fin Left", "outer": [[0,-1.9,2.7],[0,-1.9,0.7],[-0.5,-1.9,0.7],[-0.5,-1.9,2.7]] },
     { "id": "Fin Right", "outer": [[0,-5.1,2.7],[0,-5.1,0.7],[-0.5,-5.1,0.7],[-0.5,-5.1,2.7]] },
@@ -108,7 +109,13 @@ TEST(EnergyPlusScene, TheExampleOfficesAreExactUnderAWinterAfternoon) {
     return scene.faces[0];
   };
   EXPECT_EQ(face("office/West Office South Wall").parts[0].holes.size(), 2u);
-  EXPECT_EQ(face("office/West Office West Wall").parts[0].holes.size(), 1u);
+  // The door at floor level shares the wall's lower edge: the wall is one outline that
+  // runs round it, the wall's 4 corners and the door's 4.
+  const Face& west_wall = face("office/West Office West Wall");
+  ASSERT_EQ(west_wall.parts.size(), 1u);
+  EXPECT_TRUE(west_wall.parts[0].holes.empty());
+  EXPECT_EQ(west_wall.parts[0].outer.size(), 8u);
+  EXPECT_NEAR(hsr::area(west_wall.parts), 6.0 * 3.0 - 1.0 * 2.1, 1e-12);  // net of the door
   EXPECT_EQ(face("office/East Office East Window Fin Left").origin.semantic, "Shading:Zone");
   ASSERT_TRUE(scene.site.has_value());
   EXPECT_EQ(scene.site->latitude_deg, 39.74);
