@@ -139,6 +139,13 @@ void CityObjectFaces::add_faces(const Object& object, const std::string& group,
     for (const std::size_t index : ring) {
       const glm::dvec3 p =
           placement ? placement->linear * points[index] + placement->offset : points[index];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        throw InputError(file_, "",
+                         "object '" + object.id + "' surface " + std::to_string(k) +
+                             ": its template's transformationMatrix takes vertex " +
+                             std::to_string(index) +
+                             " of vertices-templates beyond the range of a double");
+      }
       bounds_.add(p);
       loop.push_back(p);
     }

@@ -1,6 +1,6 @@
 #pragma once
 
-// The faces of a file's city objects (CityJSON 2.0 specification, §2 "City Objects"),
+// The faces of a file's city objects (CityJSON 2.0 specification, "City Objects"),
 // collected over one CityJSON file or over the features of a CityJSONSeq file:
 //
 // - Each city object with geometry gives the surfaces of its chosen geometries: those of
@@ -19,7 +19,7 @@
 //   keys in), within a CityJSONSeq feature too, features in the order of their lines.
 // - Keys a city object or a geometry does not define draw a warning (an error under
 //   strict), except keys starting with "+" and every key of an object whose type does
-//   (an Extension's: CityJSON 2.0, §8 "Extensions"); "attributes" are not looked into.
+//   (an Extension's: CityJSON 2.0, "Extensions"); "attributes" are not looked into.
 
 #include <cstddef>
 #include <glm/vec3.hpp>

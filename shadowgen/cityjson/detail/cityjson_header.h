@@ -1,6 +1,6 @@
 #pragma once
 
-// The members of a CityJSON object (CityJSON 2.0 specification, §1 "CityJSON Object")
+// The members of a CityJSON object (CityJSON 2.0 specification, "CityJSON Object")
 // that say how to read its city objects: "type" ("CityJSON"), "version" (1.0, 1.1 or 2.0,
 // with or without a patch number), "transform", "metadata" (its "referenceSystem"; its
 // other members are not looked into), "geometry-templates"; "extensions" and

@@ -1,6 +1,6 @@
 #pragma once
 
-// A CityJSONSeq file (CityJSON 2.0 specification, §7.2 "Text sequences and streaming with
+// A CityJSONSeq file (CityJSON 2.0 specification, "Text sequences and streaming with
 // CityJSONFeature"; cityjson.org's CityJSONSeq specification): JSON Lines, the first line
 // a CityJSON object whose "CityObjects" and "vertices" are empty and whose "transform"
 // (required: the features' vertices are integers), "metadata" and "geometry-templates"

@@ -1,7 +1,7 @@
 #pragma once
 
 // CityJSON lets Extensions add members anywhere, named with a leading "+" (CityJSON 2.0
-// specification, §8 "Extensions": "+census" at the root, "+colour" on a city object):
+// specification, "Extensions": "+census" at the root, "+colour" on a city object):
 // they are not unknown keys.
 
 #include "shadowgen/json/json_reader.h"

@@ -1,16 +1,17 @@
 #pragma once
 
 // One Geometry Object of a city object or of "geometry-templates" (CityJSON 2.0
-// specification, §3 "Geometry Objects", §3.4 "Geometry templates"), read whole: its type,
+// specification, "Geometry Objects", "Geometry templates"), read whole: its type,
 // level of detail, surfaces and their semantic types; for a GeometryInstance, the
 // template it places and how.
 //
-// A GeometryInstance (§3.4) places template "template" of "geometry-templates": each of
-// the template's vertices (in "vertices-templates", real coordinates never touched by the
-// file's transform) v goes to M · (v, 1) + r, M the 4 × 4 "transformationMatrix" given row
-// by row (16 numbers, row-major, applied to the column vector (x, y, z, 1)), r the
-// reference point, the one vertex of the file's own list in the instance's "boundaries".
-// M must be affine (last row 0, 0, 0, 1). Its level of detail is the template's.
+// A GeometryInstance ("Geometry templates") places template "template" of
+// "geometry-templates": each of the template's vertices v (in "vertices-templates", real
+// coordinates never touched by the file's transform) goes to M · (v, 1) + r, M the 4 × 4
+// "transformationMatrix" given row by row (16 numbers, row-major, applied to the column
+// vector (x, y, z, 1)), r the reference point, the one vertex of the file's own list in
+// the instance's "boundaries". M must be affine (last row 0, 0, 0, 1). Its level of
+// detail is the template's.
 
 #include <cstddef>
 #include <glm/mat3x3.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 
-// A file's "geometry-templates" (CityJSON 2.0 specification, §3.4 "Geometry templates"):
+// A file's "geometry-templates" (CityJSON 2.0 specification, "Geometry templates"):
 // "templates", an array of Geometry Objects, and "vertices-templates", the vertices they
 // index, in real coordinates as written (the file's transform does not apply to them;
 // their rounding follows from the decimals written, vertex_list.h). A CityJSONSeq file

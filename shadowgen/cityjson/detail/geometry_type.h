@@ -1,6 +1,6 @@
 #pragma once
 
-// CityJSON's geometry types (CityJSON 2.0 specification, §3 "Geometry Objects") and the
+// CityJSON's geometry types (CityJSON 2.0 specification, "Geometry Objects") and the
 // nesting of their "boundaries": a surface is an array of rings, the first the exterior,
 // the others its holes, each an array of vertex indices; a MultiSurface or a
 // CompositeSurface is an array of surfaces, a Solid an array of shells (the first the

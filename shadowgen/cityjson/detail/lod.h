@@ -1,6 +1,6 @@
 #pragma once
 
-// A geometry's level of detail, as the file writes it (CityJSON 2.0 specification, §3
+// A geometry's level of detail, as the file writes it (CityJSON 2.0 specification,
 // "Geometry Objects"): a string of a number ("2", "2.2") since version 1.1, a number
 // (2, 2.2) in version 1.0. Levels are ordered by their numbers; a level asked for by name
 // (SourceOptions::lod, the scene entry's "lod") is compared as the file writes it: the

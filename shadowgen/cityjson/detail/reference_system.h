@@ -1,7 +1,7 @@
 #pragma once
 
 // A file's metadata.referenceSystem as a CRS PROJ resolves: "EPSG:7415" from
-// "https://www.opengis.net/def/crs/EPSG/0/7415" (CityJSON 1.1 and 2.0, §4 "Metadata": an
+// "https://www.opengis.net/def/crs/EPSG/0/7415" (CityJSON 1.1 and 2.0, "Metadata": an
 // OGC CRS URL, http or https, {authority}/{version}/{code}) or from
 // "urn:ogc:def:crs:EPSG::7415" (CityJSON 1.0: an OGC URN, {authority}:{version}:{code},
 // the version often empty).

@@ -2,7 +2,7 @@
 
 // The surfaces a geometry's "boundaries" hold, in the order the file gives them (solids in
 // order, their shells in order, their surfaces in order), each with its semantic surface
-// when "semantics" gives one (CityJSON 2.0 specification, §3.3 "Semantics of geometric
+// when "semantics" gives one (CityJSON 2.0 specification, "Semantics of geometric
 // primitives": "values" nests as the boundaries do, down to one index into "surfaces" or
 // null per surface, and null at any level stands for no semantics below it).
 

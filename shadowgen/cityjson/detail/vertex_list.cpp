@@ -52,7 +52,13 @@ VertexList read_vertices(const JsonValue& value, const VertexTransform* transfor
     out.rounding = decimal_rounding(out.points);
     return out;
   }
-  for (glm::dvec3& p : out.points) p = transform->scale * p + transform->translate;
+  for (std::size_t i = 0; i < out.points.size(); ++i) {
+    glm::dvec3& p = out.points[i];
+    p = transform->scale * p + transform->translate;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      value.array().at(i).fail("the transform takes this vertex beyond the range of a double");
+    }
+  }
   out.rounding = transform_rounding(*transform);
   return out;
 }

@@ -4,7 +4,7 @@
 // how far their written precision lets each of them stray (SourceFace::vertex_rounding).
 //
 // CityJSON stores a vertex as integers and a top-level "transform" (CityJSON 2.0
-// specification, §3 "Transform object"): real coordinate = scale × v + translate, axis by
+// specification, "Transform Object"): real coordinate = scale × v + translate, axis by
 // axis. Each real coordinate is then a multiple of its axis's scale away from the
 // translation, so the point the writer meant lies within half a step of it per axis: a
 // vertex within |scale| / 2, the Euclidean norm of the three half steps (0.866 mm for the

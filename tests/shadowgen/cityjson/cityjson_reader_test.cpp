@@ -256,8 +256,8 @@ TEST(CityJsonReader, AMultiSolidsSurfacesAreNumberedOnAcrossItsSolids) {
 }
 
 TEST(CityJsonReader, HolesAreTheRingsAfterTheFirst) {
-  // A wall 4 × 4 with a window 2 × 2 (CityJSON 2.0, §3.1: a surface is its exterior ring,
-  // then its interior rings).
+  // A wall 4 × 4 with a window 2 × 2 (CityJSON 2.0, "Geometry Objects": a surface is its
+  // exterior ring, then its interior rings).
   const SourceModel model = read("hole.city.json", city_json(R"("w": {"type": "Building",
       "geometry": [{"type": "MultiSurface", "lod": "2",
         "boundaries": [[[0, 1, 2, 3], [4, 7, 6, 5]]]}]})",
@@ -275,8 +275,9 @@ TEST(CityJsonReader, HolesAreTheRingsAfterTheFirst) {
 }
 
 TEST(CityJsonReader, SemanticSurfaceTypesGoWithTheirFaces) {
-  // CityJSON 2.0, §3.3: "values" nests as the boundaries, one index (or null) per
-  // surface; null in place of a shell's array stands for none in that shell.
+  // CityJSON 2.0, "Semantics of geometric primitives": "values" nests as the boundaries,
+  // one index (or null) per surface; null in place of a shell's array stands for none in
+  // that shell.
   const SourceModel model = read("semantics.city.json", city_json(R"("s": {"type": "Building",
       "geometry": [{"type": "Solid", "lod": "2", "boundaries": [)" + cube_shell(0) +
                                                                       R"(],
@@ -293,10 +294,10 @@ TEST(CityJsonReader, SemanticSurfaceTypesGoWithTheirFaces) {
 }
 
 TEST(CityJsonReader, AGeometryInstancePlacesItsTemplateByItsMatrixAtItsReferencePoint) {
-  // A tree template (CityJSON 2.0, §3.4): two crossed triangles in vertices-templates, real
-  // coordinates the transform does not touch. The instance's matrix (row-major) doubles x
-  // and y, keeps z, and moves by (1, 0, 0); its reference point is vertex 1 of the file,
-  // integer (4, 2, 0), real (155002, 463001, 10).
+  // A tree template (CityJSON 2.0, "Geometry templates"): two crossed triangles in
+  // vertices-templates, real coordinates the transform does not touch. The instance's
+  // matrix (row-major) doubles x and y, keeps z, and moves by (1, 0, 0); its reference
+  // point is vertex 1 of the file, integer (4, 2, 0), real (155002, 463001, 10).
   const SourceModel model = read("tree.city.json", city_json(R"(
       "t": {"type": "SolitaryVegetationObject", "geometry": [
         {"type": "GeometryInstance", "template": 1, "boundaries": [1],
@@ -529,6 +530,10 @@ TEST(CityJsonReader, BadInputIsOneLineNamingTheFileTheObjectAndTheProblem) {
            "translate": [0, 0, 0]}, "CityObjects": {}, "vertices": []})",
        "transform.scale[1]: a transform's scale must be above 0 (the size of one integer step "
        "of the coordinates)"},
+      {"huge.city.json",
+       R"({"type": "CityJSON", "version": "2.0", "transform": {"scale": [1e300, 1, 1],
+           "translate": [0, 0, 0]}, "CityObjects": {}, "vertices": [[0, 0, 0], [1e10, 0, 0]]})",
+       "vertices[1]: the transform takes this vertex beyond the range of a double"},
       {"version.city.json",
        R"({"type": "CityJSON", "version": "0.9", "CityObjects": {}, "vertices": []})",
        "version: CityJSON version '0.9' is not one shadowgen reads (1.0, 1.1, 2.0)"},
