@@ -16,7 +16,7 @@ SourceModel read_cityjson_text(std::string_view text, const std::string& file,
   const VertexList vertices =
       read_vertices(top.get("vertices"), header.transform ? &*header.transform : nullptr);
   const GeometryVertices geometry_vertices{
-      &vertices.points, {vertices.points.size(), "the file has"}, vertices.rounding};
+      &vertices.points, {vertices.points.size(), "the file has"}, vertices.rounding()};
   CityObjectFaces faces(file, options);
   faces.read(top.get("CityObjects"), geometry_vertices,
              header.templates ? &*header.templates : nullptr, 0);

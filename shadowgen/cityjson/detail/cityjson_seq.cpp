@@ -87,7 +87,7 @@ SourceModel read_cityjson_seq(const std::string& first, std::size_t next_line, s
       feature.get("id").string();
       const VertexList vertices = read_vertices(feature.get("vertices"), &*header.transform);
       const GeometryVertices geometry_vertices{
-          &vertices.points, {vertices.points.size(), "the feature has"}, vertices.rounding};
+          &vertices.points, {vertices.points.size(), "the feature has"}, vertices.rounding()};
       faces.read(feature.get("CityObjects"), geometry_vertices, templates, line);
       feature.has("appearance");
       finish_allowing_extension_keys(feature);

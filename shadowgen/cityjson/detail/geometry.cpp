@@ -1,6 +1,7 @@
 #include "detail/geometry.h"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 
 #include "detail/geometry_templates.h"
 
@@ -66,15 +67,18 @@ TemplatePlacement read_placement(JsonObject& object, const GeometryVertices& ver
   if (m[3][0] != 0.0 || m[3][1] != 0.0 || m[3][2] != 0.0 || m[3][3] != 1.0) {
     matrix_value.fail("the last row must be 0, 0, 0, 1: a template is placed by an affine map");
   }
-  double frobenius_squared = 0.0;
+  // A template vertex off by at most h_j on axis j moves, placed, by at most
+  // Σ_j |m_ij| h_j on axis i.
+  const glm::dvec3 h = templates.vertices.half_step;
+  glm::dvec3 placed_half_step(0.0);
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) {
       out.linear[c][r] = m[r][c];  // glm is column-major: linear[column][row]
-      frobenius_squared += m[r][c] * m[r][c];
+      placed_half_step[r] += std::abs(m[r][c]) * h[c];
     }
   }
   out.offset = glm::dvec3(m[0][3], m[1][3], m[2][3]) + (*vertices.points)[reference];
-  out.rounding = vertices.rounding + std::sqrt(frobenius_squared) * templates.vertices.rounding;
+  out.rounding = vertices.rounding + glm::length(placed_half_step);
   return out;
 }
 

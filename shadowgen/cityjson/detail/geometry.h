@@ -35,7 +35,8 @@ struct TemplatePlacement {
   glm::dmat3 linear{1.0};
   glm::dvec3 offset{0.0};  // the matrix's translation plus the reference point
   // How far a placed vertex may stray: the reference point's rounding, plus the
-  // template vertices' stretched by the matrix (at most its Frobenius norm times theirs).
+  // template vertices' as the matrix moves them: off by h_j on axis j, a template vertex
+  // lands off by at most Σ_j |m_ij| h_j on axis i, a distance the norm of those.
   double rounding = 0.0;
 };
 

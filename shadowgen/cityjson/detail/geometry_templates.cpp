@@ -8,7 +8,7 @@ GeometryTemplates read_geometry_templates(const JsonValue& value) {
   out.vertices = read_vertices(object.get("vertices-templates"), nullptr);
   const GeometryVertices vertices{&out.vertices.points,
                                   {out.vertices.points.size(), "vertices-templates has"},
-                                  out.vertices.rounding};
+                                  out.vertices.rounding()};
   const JsonArray templates = object.get("templates").array();
   out.templates.reserve(templates.size());
   for (std::size_t i = 0; i < templates.size(); ++i) {

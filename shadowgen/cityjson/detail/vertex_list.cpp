@@ -24,6 +24,16 @@ int decimals_written(double value) {
   return std::max(decimals, 0);
 }
 
+// Half the step of the most decimals any coordinate of `points` is written with.
+double decimal_half_step(const std::vector<glm::dvec3>& points) {
+  if (points.empty()) return 0.0;
+  int decimals = 0;
+  for (const glm::dvec3& p : points) {
+    for (int axis = 0; axis < 3; ++axis) decimals = std::max(decimals, decimals_written(p[axis]));
+  }
+  return 0.5 * std::pow(10.0, -decimals);
+}
+
 }  // namespace
 
 VertexTransform read_transform(const JsonValue& value) {
@@ -49,7 +59,7 @@ VertexList read_vertices(const JsonValue& value, const VertexTransform* transfor
   VertexList out;
   out.points = value.vec3_list();
   if (transform == nullptr) {
-    out.rounding = decimal_rounding(out.points);
+    out.half_step = glm::dvec3(decimal_half_step(out.points));
     return out;
   }
   for (std::size_t i = 0; i < out.points.size(); ++i) {
@@ -59,21 +69,10 @@ VertexList read_vertices(const JsonValue& value, const VertexTransform* transfor
       value.array().at(i).fail("the transform takes this vertex beyond the range of a double");
     }
   }
-  out.rounding = transform_rounding(*transform);
+  out.half_step = 0.5 * transform->scale;
   return out;
 }
 
-double transform_rounding(const VertexTransform& transform) {
-  return 0.5 * glm::length(transform.scale);
-}
-
-double decimal_rounding(const std::vector<glm::dvec3>& points) {
-  if (points.empty()) return 0.0;
-  int decimals = 0;
-  for (const glm::dvec3& p : points) {
-    for (int axis = 0; axis < 3; ++axis) decimals = std::max(decimals, decimals_written(p[axis]));
-  }
-  return std::sqrt(3.0) * 0.5 * std::pow(10.0, -decimals);
-}
+double VertexList::rounding() const { return glm::length(half_step); }
 
 }  // namespace shadowgen::cityjson::detail

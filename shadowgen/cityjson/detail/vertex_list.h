@@ -32,18 +32,16 @@ VertexTransform read_transform(const JsonValue& value);
 
 struct VertexList {
   std::vector<glm::dvec3> points;  // real coordinates
-  double rounding = 0.0;           // how far each may stray, as a distance (see above)
+  // How far each coordinate may stray, axis by axis: half a step (see above).
+  glm::dvec3 half_step{0.0};
+
+  // How far each vertex may stray, as a distance: |half_step|.
+  double rounding() const;
 };
 
-// A "vertices" array of [x, y, z], placed by `transform` when there is one (its rounding
-// then the transform's), otherwise as written (its rounding from the decimals written).
+// A "vertices" array of [x, y, z], placed by `transform` when there is one (its half step
+// then the transform's, scale / 2), otherwise as written (10^-d / 2 on each axis, d the
+// most decimals any coordinate of the list is written with; 0 for an empty list).
 VertexList read_vertices(const JsonValue& value, const VertexTransform* transform);
-
-// Half a step of the transform, as a distance: |scale| / 2.
-double transform_rounding(const VertexTransform& transform);
-
-// √3 × 10^-d / 2, d the most decimals any coordinate of `points` is written with (0 for
-// an empty list).
-double decimal_rounding(const std::vector<glm::dvec3>& points);
 
 }  // namespace shadowgen::cityjson::detail

@@ -319,8 +319,9 @@ TEST(CityJsonReader, AGeometryInstancePlacesItsTemplateByItsMatrixAtItsReference
   EXPECT_EQ(model.faces[0].origin, (FaceOrigin{"cityjson", "t", "t", "+Crown"}));
   EXPECT_EQ(model.faces[1].origin.semantic, "");
   // The reference point's rounding (0.375) plus the template's (2 decimals written: half
-  // of 0.01 on each axis, √3 × 0.005) stretched by the matrix (Frobenius norm 3).
-  EXPECT_DOUBLE_EQ(model.faces[0].vertex_rounding, 0.375 + 3.0 * std::sqrt(3.0) * 0.005);
+  // of 0.01 on each axis) as the matrix moves it: 0.01 on x and y, 0.005 on z.
+  EXPECT_DOUBLE_EQ(model.faces[0].vertex_rounding,
+                   0.375 + std::sqrt(2 * 0.01 * 0.01 + 0.005 * 0.005));
 }
 
 // ---- CityJSON 1.0 and CityJSONSeq ------------------------------------------------------
