@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "shadowgen/cityjson/cityjson_reader.h"
 #include "shadowgen/energyplus/energyplus_reader.h"
 #include "shadowgen/model/input_error.h"
 
@@ -9,13 +10,13 @@ namespace shadowgen::detail {
 
 SourceModel read_source(SourceFormat format, const std::filesystem::path& file,
                         const SourceOptions& options) {
-  (void)options;
   switch (format) {
     case SourceFormat::kMesh:
       break;
     case SourceFormat::kEnergyPlus:
       return energyplus::read_energyplus(file, options);
     case SourceFormat::kCityJson:
+      return cityjson::read_cityjson(file, options);
     case SourceFormat::kGltf:
       throw InputError(file.string(), "",
                        "is " + std::string(format_name(format)) + ", which this build cannot read");
