@@ -15,6 +15,7 @@
 
 #include "hsr/polygon3.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/scene/scene_reader.h"
 #include "tests/support/temp_folder.h"
 
 namespace shadowgen::cityjson {
@@ -442,6 +443,39 @@ TEST(CityJsonReader, AGeographicCrsGivesNoSiteAndAWarning) {
             (std::vector<std::string>{write("geographic.city.json", text) +
                                       ": metadata.referenceSystem: no site from it: EPSG:4979 is a "
                                       "geographic CRS, not a projected one"}));
+}
+
+// ---- Precision, through a scene -------------------------------------------------------
+
+TEST(CityJsonReader, ARoofOffItsPlaneByItsQuantizationIsPlanarInAScene) {
+  // A roof 10 m square at real RD coordinates, stored to the millimetre: one corner 1 mm
+  // (one step) above the plane of the other three lies 0.25 mm from their best-fit plane,
+  // 2.5e-5 of the roof's size, far beyond the relative tolerance 1e-9, but within twice
+  // the vertex rounding, 2 × 0.866 mm: planar, not split. Eight millimetres (2 mm from the
+  // plane) are not.
+  auto roof = [](int lift_mm) {
+    return R"({"type": "CityJSON", "version": "2.0",
+      "transform": {"scale": [0.001, 0.001, 0.001], "translate": [84500, 447200, 0]},
+      "CityObjects": {"r": {"type": "Building", "geometry": [
+        {"type": "MultiSurface", "lod": "2", "boundaries": [[[0, 1, 2, 3]]]}]}},
+      "vertices": [[0, 0, 9000], [10000, 0, 9000], [10000, 10000, )" +
+           std::to_string(9000 + lift_mm) + R"(], [0, 10000, 9000]]})";
+  };
+  const std::string scene = R"({"format": "shadowgen-scene/1",
+    "meshes": [{"id": "m", "file": "roof.city.json"}], "lights": []})";
+  write("roof.city.json", roof(1));
+  const ReadResult planar = read_scene(write("roof-scene.json", scene));
+  ASSERT_EQ(planar.scene.faces.size(), 1u);
+  EXPECT_EQ(planar.scene.faces[0].parts.size(), 1u);
+  EXPECT_TRUE(planar.warnings.empty());
+
+  write("roof.city.json", roof(8));
+  const ReadResult bent = read_scene(write("roof-scene.json", scene));
+  ASSERT_EQ(bent.scene.faces.size(), 1u);
+  EXPECT_EQ(bent.scene.faces[0].parts.size(), 2u);  // split into triangles
+  ASSERT_EQ(bent.warnings.size(), 1u);
+  EXPECT_NE(bent.warnings[0].find("face 'm/r/0': not planar"), std::string::npos)
+      << bent.warnings[0];
 }
 
 // ---- Reading rules ---------------------------------------------------------------------
