@@ -53,10 +53,9 @@ SourceModel read_cityjson_seq(const std::string& first, std::size_t next_line, s
     JsonObject top = document.root().object();
     header = read_header(top);
     if (!header.transform) {
-      top.get("transform")
-          .fail(
-              "a CityJSONSeq file's first line needs a transform: its features' vertices are "
-              "integers it scales");
+      top.value().fail(
+          "missing 'transform': a CityJSONSeq file's first line needs one, its features' "
+          "vertices are integers it scales");
     }
     const JsonValue objects = top.get("CityObjects");
     if (objects.object().size() != 0) {

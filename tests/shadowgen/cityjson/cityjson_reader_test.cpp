@@ -604,7 +604,8 @@ TEST(CityJsonReader, BadCityJsonSeqLinesAreNamedByTheirLine) {
        R"({"type": "CityJSON", "version": "2.0", "CityObjects": {}, "vertices": []})"
        "\n" +
            feature + "\n",
-       "line 1: missing 'transform'"},
+       "line 1: missing 'transform': a CityJSONSeq file's first line needs one, its features' "
+       "vertices are integers it scales"},
       {"not-feature.city.jsonl", header + "\n" + feature + "\n" + header + "\n",
        "line 3: type: expected a CityJSONFeature, found 'CityJSON': after its first line a "
        "CityJSONSeq file holds one feature a line"},
