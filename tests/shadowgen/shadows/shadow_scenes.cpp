@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <numeric>
 #include <random>
 #include <sstream>
 #include <utility>
 
-#include "shadowgen/scene/detail/face_builder.h"
+#include "shadowgen/scene/scene_reader.h"
 
 namespace shadowgen::test {
 namespace {
@@ -252,11 +253,22 @@ NamedScene walls_with_openings_sharing_edges() {
 }
 
 Scene as_read(const Scene& scene) {
-  Scene out = scene;
-  for (Face& face : out.faces) {
-    std::vector<std::string> warnings;
-    face = detail::build_face(face.parts.at(0), {face.id, "scene.json"}, false, warnings);
+  // Each face's first part written as a scene's polygon (numbers round-trip) and read.
+  const auto loop_json = [](const hsr::Loop3& loop) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const glm::dvec3& p : loop) points.push_back({p.x, p.y, p.z});
+    return points;
+  };
+  nlohmann::json polygons = nlohmann::json::array();
+  for (const Face& face : scene.faces) {
+    nlohmann::json holes = nlohmann::json::array();
+    for (const hsr::Loop3& hole : face.parts.at(0).holes) holes.push_back(loop_json(hole));
+    polygons.push_back(
+        {{"id", face.id}, {"outer", loop_json(face.parts.at(0).outer)}, {"holes", holes}});
   }
+  const nlohmann::json text = {{"format", "shadowgen-scene/1"}, {"polygons", polygons}};
+  Scene out = scene;
+  out.faces = parse_scene(text.dump(), "scene.json").scene.faces;
   return out;
 }
 

@@ -65,7 +65,7 @@ NamedScene eight_lights();
 // side, a window at the top, a window across a whole wall), an overhang, a post and the
 // ground, under a sun and a lamp. As written, each wall is one polygon with its holes
 // (which the oracle takes as they are); as read, each face is what the scene reader makes
-// of it (the region less the holes as its parts: detail/face_builder.h).
+// of it (the region less the holes as its parts, as the scene reader builds faces).
 Scene walls_sharing_edges_as_written();
 NamedScene walls_with_openings_sharing_edges();
 std::vector<NamedScene> oracle_scenes();
