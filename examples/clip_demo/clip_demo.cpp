@@ -2,11 +2,12 @@
 // octagonal hole, clipped against each other with clipper/clip.h. Prints the areas and
 // writes an SVG picture of the inputs (left) and of the inside and outside pieces (right).
 //
-//   clip_demo [OUTPUT.svg]        (default clip_demo.svg)
+//   clip_demo [OUTPUT.svg]        (default clip_demo.svg; -h or --help: this usage)
 //
 // The picture is written to a temporary file beside OUTPUT and renamed over it, so a
 // reader never sees a partial file. Exit status: 0 on success, 1 when the file cannot be
-// written, 2 when the areas do not add up (inside + outside must equal the subject).
+// written, 2 when the areas do not add up (inside + outside must equal the subject) or
+// the arguments are not an optional file name (an option other than --help, two names).
 
 #include <cmath>
 #include <cstdio>
@@ -177,8 +178,26 @@ bool write_atomically(const std::filesystem::path& target, const std::string& te
 
 }  // namespace
 
+constexpr const char* kUsage =
+    "usage: clip_demo [OUTPUT.svg]\n"
+    "Clips a letter A and a seven-pointed star with a hole against each other, prints the\n"
+    "areas and writes a picture of the inputs and the pieces to OUTPUT.svg (default\n"
+    "clip_demo.svg).\n";
+
 int main(int argc, char** argv) {
-  const std::filesystem::path output = argc > 1 ? argv[1] : "clip_demo.svg";
+  // One optional argument, a file name; an option is never taken for one (--help once
+  // wrote a picture named "--help").
+  const std::string first = argc > 1 ? argv[1] : "";
+  if (first == "-h" || first == "--help") {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  if (argc > 2 || (first.size() > 1 && first[0] == '-')) {
+    std::fprintf(stderr, "clip_demo: unexpected argument '%s'\n%s", argc > 2 ? argv[2] : argv[1],
+                 kUsage);
+    return 2;
+  }
+  const std::filesystem::path output = first.empty() ? "clip_demo.svg" : first;
   const PolygonWithHoles2 subject = letter_a();
   const PolygonWithHoles2 clip_region = holed_star();
   const ClipResult result = shadowgen::clipper::clip(subject, clip_region);
