@@ -1,12 +1,23 @@
 #include "shadowgen/output/sun_instants.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 
 #include "detail/csv_fields.h"
+#include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
 
 std::string sun_instants_csv(const Scene& scene, CsvIds ids) {
+  // A path with no instant (a polar night) is a sun light all the same: its table is empty.
+  const bool suns = !scene.sun_paths.empty() ||
+                    std::any_of(scene.lights.begin(), scene.lights.end(),
+                                [](const Light& light) { return light.sun.has_value(); });
+  if (!suns) {
+    throw InputError(scene.file, "",
+                     "has no sun lights (a light of type \"sun\", at a time or from, to and "
+                     "step_min) to list the instants of");
+  }
   std::string out =
       "light,instant,time,step_min,azimuth_deg,elevation_deg,direction_x,direction_y,"
       "direction_z\n";

@@ -11,7 +11,9 @@
 // single `time`), `time` local standard time, `step_min` the minutes the instant stands for
 // (0 for a single `time`), azimuth clockwise from true north, apparent elevation, and the
 // direction the light travels in scene axes as a unit vector. Numbers with %.17g; ids
-// quoted as RFC 4180 says, guarded as `ids` says. Lines end with "\n".
+// quoted as RFC 4180 says, guarded as `ids` says. Lines end with "\n". A scene without sun
+// lights is an InputError naming Scene::file (the header alone would hide a scene that was
+// meant to have some); a sun path whose sun is down at every step gives the header alone.
 
 #include <string>
 

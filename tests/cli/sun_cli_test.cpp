@@ -109,12 +109,18 @@ TEST_F(SunCli, ASunLightWithoutASiteExits1NamingTheLightAndLeavesNoFile) {
   EXPECT_EQ(files(), std::vector<std::string>{"nosite.json"});
 }
 
-TEST_F(SunCli, ASceneWithoutSunsGivesTheHeaderAlone) {
+// A scene without sun lights is bad input naming it (it once printed the header alone and
+// exited 0, as if the suns had all been down); nothing is written.
+TEST_F(SunCli, ASceneWithoutSunsIsAnErrorNamingIt) {
   const fs::path scene = write("lamp.json", R"({"format": "shadowgen-scene/1", "polygons": [],
                        "lights": [{"id": "lamp", "type": "point", "position": [0, 0, 3]}]})");
-  const Outcome o = run({"sun", scene.string()});
-  ASSERT_EQ(o.code, 0) << o.err;
-  EXPECT_EQ(o.out, std::string(kHeader) + "\n");
+  const Outcome o = run({"sun", scene.string(), "-o", (dir_ / "instants.csv").string()});
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.out, "");
+  EXPECT_EQ(o.err, "shadowgen: " + scene.string() +
+                       ": has no sun lights (a light of type \"sun\", at a time or from, to and "
+                       "step_min) to list the instants of\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"lamp.json"});
 }
 
 TEST_F(SunCli, ThreadsIsNotAnOptionOfIt) {

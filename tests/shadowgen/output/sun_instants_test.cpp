@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "shadowgen/model/input_error.h"
+
 namespace shadowgen {
 namespace {
 
@@ -41,6 +43,28 @@ TEST(SunInstantsCsv, IdsAreQuotedAndGuardedAsInTheReport) {
   EXPECT_NE(safe.find("\n\"'=a,b\",\"'=a,b@2026-03-21T12:00\",2026-03-21T12:00,"),
             std::string::npos)
       << safe;
+}
+
+TEST(SunInstantsCsv, ASceneWithoutSunLightsIsAnErrorNamingIt) {
+  Scene scene;
+  scene.file = "lamp.json";
+  Light lamp;
+  lamp.id = "lamp";
+  lamp.type = LightType::kPoint;
+  scene.lights = {lamp};
+  try {
+    sun_instants_csv(scene);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "lamp.json: has no sun lights (a light of type \"sun\", at a time or from, to "
+                 "and step_min) to list the instants of");
+  }
+  // A path with the sun down at every step is a sun light without instants: the header.
+  scene.sun_paths = {SunPathSpan{"night", 60, "2026-12-21T00:00", "2026-12-21T23:00"}};
+  EXPECT_EQ(sun_instants_csv(scene),
+            "light,instant,time,step_min,azimuth_deg,elevation_deg,direction_x,direction_y,"
+            "direction_z\n");
 }
 
 }  // namespace
