@@ -17,7 +17,7 @@ set -euo pipefail
 
 faces=${1:-10000}
 build=${BUILD_DIR:-build/release}
-methods=${METHODS:-rays:16,rays:64,rays:256,rays:1024,shadow-map:16:512,shadow-map:64:1024,shadow-map:256:2048,shadow-map:1024:4096}
+methods=${METHODS:-rays:16,rays:64,rays:256,rays:1024,shadow-map:512:samples=16,shadow-map:1024:samples=64,shadow-map:2048:samples=256,shadow-map:4096:samples=1024}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 out=${OUT_DIR:-$work}

@@ -45,11 +45,13 @@ void add_method_options(CLI::App& command, MethodArgs& args) {
           ->check(whole_number_in(1, kMaxResolution));
 }
 
-void add_lights_option(CLI::App& command, std::vector<std::string>& ids) {
+void add_lights_option(CLI::App& command, std::vector<std::string>& ids,
+                       const std::string& others) {
   command
       .add_option("--lights", ids,
                   "only these lights, by id (comma-separated or repeated), as if the input "
-                  "held no other: a scene's other lights are not generated")
+                  "held no other: " +
+                      others)
       ->delimiter(',');
 }
 
@@ -61,7 +63,9 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress, bo
                      "worker threads when generating, for the lights and the regions of each "
                      "light's view (0: one per hardware thread); the result does not depend "
                      "on them");
-  add_lights_option(command, args.lights);
+  add_lights_option(command, args.lights,
+                    generates ? "a scene's other lights are not generated"
+                              : "the other lights' instants are not listed");
   // Declared once above for every subcommand; one that computes no shadow has no use for it.
   if (!generates) command.remove_option(command.get_option("--threads"));
   command.add_flag("--verbose", args.verbose,

@@ -89,8 +89,9 @@ struct MethodArgs {
 // --method, --samples and --resolution on `command`.
 void add_method_options(CLI::App& command, MethodArgs& args);
 
-// --lights on `command`: the ids of the only lights a run takes (LoadOptions::lights).
-void add_lights_option(CLI::App& command, std::vector<std::string>& ids);
+// --lights on `command`: the ids of the only lights a run takes (LoadOptions::lights);
+// `others` says what becomes of the others ("a scene's other lights are not generated").
+void add_lights_option(CLI::App& command, std::vector<std::string>& ids, const std::string& others);
 
 // The required positional "input" on `command`: a scene or a shadowed database.
 void add_input_option(CLI::App& command, std::string& path);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 
 #include "cli/command.h"
 #include "cli/number_options.h"
+#include "cli/run_progress.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/model/shadowed_scene.h"
@@ -41,9 +43,9 @@ constexpr CommandText kCompareText{
 constexpr const char* kDefaultMethods[] = {"rays:16",
                                            "rays:64",
                                            "rays:256",
-                                           "shadow-map:16:512",
-                                           "shadow-map:64:1024",
-                                           "shadow-map:256:2048"};
+                                           "shadow-map:512:samples=16",
+                                           "shadow-map:1024:samples=64",
+                                           "shadow-map:2048:samples=256"};
 
 // The default view methods of --view.
 constexpr const char* kDefaultViewMethods[] = {
@@ -75,8 +77,14 @@ std::optional<int> count(const std::string& text, int max) {
   return static_cast<int>(*value);
 }
 
-// NAME[:SAMPLES[:RESOLUTION]]: "exact", "rays:64", "shadow-map:64:1024". Throws UsageError.
-Method parse_method(const std::string& text) {
+// A method of --methods: exact, rays[:SAMPLES] or shadow-map[:RESOLUTION][:samples=N]
+// (samples= may be written for rays too): the number after shadow-map is the depth maps'
+// resolution in texels, as in --view-methods and --resolution. Throws UsageError. The
+// spelling before, shadow-map:SAMPLES:RESOLUTION, is refused saying the new one; where
+// shadow-map is followed by a bare number alone, which once meant samples, `on_warning`
+// is told that it now means texels.
+Method parse_method(const std::string& text,
+                    const std::function<void(const std::string&)>& on_warning) {
   std::vector<std::string> fields{""};
   for (const char c : text) {
     if (c == ':') {
@@ -86,30 +94,49 @@ Method parse_method(const std::string& text) {
     }
   }
   const std::optional<MethodKind> kind = method_kind(fields[0]);
-  const std::size_t most = kind == MethodKind::kExact ? 1 : kind == MethodKind::kRays ? 2 : 3;
   const auto refuse = [&text] {
     throw UsageError("--methods " + text +
-                     ": expected exact, rays[:SAMPLES] or shadow-map[:SAMPLES[:RESOLUTION]], "
+                     ": expected exact, rays[:SAMPLES] or shadow-map[:RESOLUTION][:samples=N], "
                      "samples from 1 to " +
-                     std::to_string(kMaxSamples) + ", resolution from 1 to " +
+                     std::to_string(kMaxSamples) + ", resolution (texels a side) from 1 to " +
                      std::to_string(kMaxResolution));
   };
-  if (!kind || fields.size() > most) refuse();
+  if (!kind) refuse();
   Method method{*kind};
-  if (method.exact()) return method;
-  method.samples = kDefaultSamples;
-  if (fields.size() > 1) {
-    const std::optional<int> samples = count(fields[1], kMaxSamples);
-    if (!samples) refuse();
-    method.samples = *samples;
+  if (method.exact()) {
+    if (fields.size() > 1) refuse();
+    return method;
   }
-  if (method.kind == MethodKind::kShadowMap) {
-    method.resolution = kDefaultResolution;
-    if (fields.size() > 2) {
-      const std::optional<int> resolution = count(fields[2], kMaxResolution);
-      if (!resolution) refuse();
-      method.resolution = *resolution;
+  const bool map = method.kind == MethodKind::kShadowMap;
+  std::optional<int> samples;
+  std::vector<std::string> bare;  // the fields without a name
+  for (std::size_t k = 1; k < fields.size(); ++k) {
+    if (fields[k].rfind("samples=", 0) != 0) {
+      bare.push_back(fields[k]);
+    } else if (samples || !(samples = count(fields[k].substr(8), kMaxSamples))) {
+      refuse();
     }
+  }
+  if (map && bare.size() == 2 && !samples) {
+    throw UsageError("--methods " + text +
+                     ": shadow-map:SAMPLES:RESOLUTION is written shadow-map:" + bare[1] +
+                     ":samples=" + bare[0] +
+                     " (the number after shadow-map is the depth maps' resolution in texels, as "
+                     "in --view-methods)");
+  }
+  std::optional<int> number;
+  if (bare.size() > 1 || (!map && !bare.empty() && samples)) refuse();
+  if (!bare.empty() && !(number = count(bare[0], map ? kMaxResolution : kMaxSamples))) refuse();
+  if (!map) {
+    method.samples = samples.value_or(number.value_or(kDefaultSamples));
+    return method;
+  }
+  method.samples = samples.value_or(kDefaultSamples);
+  method.resolution = number.value_or(kDefaultResolution);
+  if (number && !samples && on_warning) {
+    on_warning("--methods " + text + ": " + bare[0] +
+               " is the depth maps' resolution in texels, as in --view-methods (it was once the "
+               "points per face, now written shadow-map:RESOLUTION:samples=N)");
   }
   return method;
 }
@@ -161,7 +188,12 @@ const ViewSpec& view_named(const Scene& scene, const std::string& id, const std:
 
 void run_compare(const CompareArgs& args) {
   std::vector<Method> methods;
-  for (const std::string& text : args.methods) methods.push_back(parse_method(text));
+  const std::function<void(const std::string&)> warn =
+      args.reading.quiet ? std::function<void(const std::string&)>()
+                         : [](const std::string& warning) {
+                             std::cerr << "shadowgen: warning: " << warning << '\n';
+                           };
+  for (const std::string& text : args.methods) methods.push_back(parse_method(text, warn));
   std::vector<PixelShadowOptions> view_methods;
   if (!args.view.empty()) {
     for (const std::string& text : args.view_methods) {
@@ -171,12 +203,16 @@ void run_compare(const CompareArgs& args) {
   RunFiles files{{args.input}, {}};
   if (!args.output.empty()) files.writes.push_back({"-o", args.output});
   if (!args.plot.empty()) files.writes.push_back({"--plot", args.plot});
-  const Scene scene =
-      load_scene(args.input, load_options(args.reading, Accept::kSceneOrDatabase, files));
+  LoadOptions load = load_options(args.reading, Accept::kSceneOrDatabase, files);
+  RunProgress progress(args.input, progress_stream(args.reading.quiet));
+  progress.watch(load);  // its warnings; load_scene generates nothing
+  const Scene scene = load_scene(args.input, load);
   // A view the scene does not have is refused before any work.
   const ViewSpec* view = args.view.empty() ? nullptr : &view_named(scene, args.view, args.input);
   GenerateOptions options;
   options.threads = args.reading.threads;
+  // The exact trial's lights; the sampled trials after it count none.
+  options.on_light_done = progress.lights(scene.lights.size());
   MethodComparison comparison;
   ShadowedScene exact;
   try {
@@ -193,10 +229,12 @@ void run_compare(const CompareArgs& args) {
         std::count_if(scene.lights.begin(), scene.lights.end(), in_sun_path));
     ShadowedScene with_instants;
     std::vector<std::string> instants;
+    progress.stage("view " + one_line(view->id) + ": the view methods");
     if (path_instants > 0) {
       Scene drawn = scene;
       instants = keep_spread_instants(drawn, args.view_instants);
       GenerateOptions instant_options = options;
+      instant_options.on_light_done = nullptr;
       instant_options.keep_instant_polygons = true;
       instant_options.sun_hours_regions = false;
       try {
@@ -215,6 +253,7 @@ void run_compare(const CompareArgs& args) {
     view_comparison->path_instants = path_instants;
     view_comparison->instants = std::move(instants);
   }
+  progress.finish();
   const ViewComparison* shown = view_comparison ? &*view_comparison : nullptr;
   const std::string text =
       args.format == "csv"
@@ -239,10 +278,14 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
   command
       .add_option("--methods", args.methods,
                   "the methods to run, comma-separated: exact, rays[:SAMPLES], "
-                  "shadow-map[:SAMPLES[:RESOLUTION]] (samples per face; texels a side of each "
-                  "depth map); the exact method always runs first, as the reference (default: "
-                  "rays:16,rays:64,rays:256,shadow-map:16:512,shadow-map:64:1024,"
-                  "shadow-map:256:2048)")
+                  "shadow-map[:RESOLUTION][:samples=N] (SAMPLES, N: points per face, default " +
+                      std::to_string(kDefaultSamples) +
+                      "; RESOLUTION: texels a side of each depth map, as in --view-methods, "
+                      "default " +
+                      std::to_string(kDefaultResolution) +
+                      "); the exact method always runs first, as the reference (default: "
+                      "rays:16,rays:64,rays:256,shadow-map:512:samples=16,"
+                      "shadow-map:1024:samples=64,shadow-map:2048:samples=256)")
       ->delimiter(',');
   command.add_option("--format", args.format, "table (default, for reading) or csv")
       ->check(CLI::IsMember({"table", "csv"}));

@@ -5,8 +5,11 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/command.h"
+#include "cli/output_by_extension.h"
+#include "cli/run_progress.h"
 #include "cli/sun_hours_options.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
@@ -35,28 +38,36 @@ constexpr CommandText kExportText{
 // split by the set of lights reaching it, one material per set
 // (shadowgen/output/obj_export.h).
 struct ExportArgs {
-  std::string input;  // a scene (generated first) or a shadowed database
-  std::string obj;    // OBJ file to write
+  std::string input;                 // a scene (generated first) or a shadowed database
+  std::vector<std::string> outputs;  // -o: the OBJ file, told by its extension
+  std::string obj;                   // --obj: the OBJ file
   ReadingArgs reading;
   SunHoursArgs sun_hours;  // --sun-hours: that path's regions by band instead
   bool by_light = false;   // --by-light: a layer per light instead of light sets
 };
 
 void run_export(const ExportArgs& args) {
-  const std::filesystem::path obj_path = args.obj;
+  for (const std::string& output : args.outputs) {
+    if (output == "-") throw UsageError("-o -: an OBJ and its MTL are two files, not one stream");
+  }
+  std::vector<FormatOutput> formats{{"OBJ file", ".obj", "--obj", args.obj, ""}};
+  assign_outputs(args.outputs, formats);
+  const std::string& obj = formats[0].path;
+  const std::string& named_by = formats[0].named_by;
+  if (obj.empty()) throw UsageError("-o FILE.obj is required (--obj FILE names it too)");
+  const std::filesystem::path obj_path = obj;
   const std::filesystem::path mtl_path =
       obj_path.parent_path() / (obj_name(obj_path.stem().string()) + ".mtl");
   if (mtl_path == obj_path || obj_path.filename().empty()) {
-    throw InputError(args.obj, "",
+    throw InputError(obj, "",
                      "not a usable OBJ file name: the MTL file goes next to it, named with "
                      "the same stem and \".mtl\"");
   }
 
-  if (args.obj == "-")
-    throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
+  if (obj == "-") throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
   LoadOptions load = load_options(
       args.reading, Accept::kSceneOrDatabase,
-      {{args.input}, {{"--obj", obj_path.string()}, {"--obj's MTL", mtl_path.string()}}});
+      {{args.input}, {{named_by, obj_path.string()}, {named_by + "'s MTL", mtl_path.string()}}});
   // A sun-hours export writes a path's sums, not its instants' lit polygons; a scene
   // without that path is refused before its shadows are computed.
   load.instant_polygons = args.sun_hours.path.empty();
@@ -67,9 +78,14 @@ void run_export(const ExportArgs& args) {
       require_sun_path(scene, args.sun_hours.path, args.input);
     };
   }
+  RunProgress progress(args.input, progress_stream(args.reading.quiet));
+  progress.watch(load);
   const ShadowedScene shadowed = load_shadowed(args.input, load);
   std::optional<SunHoursMap> map;
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.input);
+  progress.stage(map             ? "splitting faces by bands of sun hours"
+                 : args.by_light ? "laying out each light's lit polygons"
+                                 : "splitting faces by light sets");
   ObjFiles files;
   try {
     files =
@@ -81,14 +97,16 @@ void run_export(const ExportArgs& args) {
   }
   // Both texts are complete before either file is touched, and written as one set: the
   // MTL first, the OBJ that names it last, so a failed run leaves both as they were.
+  progress.stage("writing " + obj);
   write_files_atomically({{mtl_path, files.mtl}, {obj_path, files.obj}});
+  progress.finish();
 }
 
 void add_export_options(CLI::App& command, ExportArgs& args) {
   add_input_option(command, args.input);
-  command
-      .add_option("--obj", args.obj, "OBJ file to write (replaced whole); the MTL goes next to it")
-      ->required();
+  add_outputs_option(command, args.outputs,
+                     "FILE.obj: the OBJ file to write (replaced whole); the MTL goes next to it");
+  command.add_option("--obj", args.obj, "OBJ file to write, as -o FILE.obj does");
   add_reading_options(command, args.reading);
   // A sun-hours export writes one path whole: there is nothing for --lights to choose.
   CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "write");

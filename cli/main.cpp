@@ -12,7 +12,9 @@
 #include <functional>
 #include <iostream>
 #include <new>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/command.h"
 #include "cli/out_of_memory.h"
@@ -73,6 +75,26 @@ int run(const shadowgen::cli::Command& command) {
   return 0;
 }
 
+// Where parsing failed for want of a subcommand: the word given in its place, or none,
+// said with the subcommands there are (CLI11 says only "A subcommand is required").
+std::optional<std::string> subcommand_problem(const CLI::App& app, const CLI::ParseError& e) {
+  if (dynamic_cast<const CLI::RequiredError*>(&e) == nullptr || app.get_subcommands().size() > 0) {
+    return std::nullopt;
+  }
+  std::string names;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    names += (names.empty() ? "" : ", ") + command->get_name();
+  }
+  const std::vector<std::string> words = app.remaining();
+  if (words.empty()) return "a subcommand is required: " + names;
+  if (words.front().rfind('-', 0) == 0) {
+    return shadowgen::one_line(words.front()) +
+           ": not an option of shadowgen; a subcommand comes first: " + names;
+  }
+  return shadowgen::one_line(words.front()) +
+         ": not a subcommand of shadowgen (its subcommands: " + names + ")";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,9 +115,17 @@ int main(int argc, char** argv) {
       shadowgen::cli::add_sun_command(app),      shadowgen::cli::add_merge_command(app),
       shadowgen::cli::add_compare_command(app)};
 
+  // Parse errors read as the other errors do: "shadowgen: " and one line, then the hint.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "shadowgen: " + std::string(e.what()) + "\nRun with --help for more information.\n";
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    if (const std::optional<std::string> problem = subcommand_problem(app, e)) {
+      std::cerr << "shadowgen: " << *problem << "\nRun with --help for more information.\n";
+      return kExitUsage;
+    }
     const int code = app.exit(e);  // prints the help, the version or the error
     return code == 0 ? 0 : kExitUsage;
   }

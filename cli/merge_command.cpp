@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/command.h"
+#include "cli/run_progress.h"
 #include "shadowgen/output/database.h"
 #include "shadowgen/pipeline/merge_shards.h"
 
@@ -28,19 +29,26 @@ struct MergeArgs {
 };
 
 void run_merge(const MergeArgs& args) {
-  const LoadOptions options =
+  LoadOptions options =
       load_options(args.reading, Accept::kShard, {args.inputs, {{"-o", args.output}}});
+  RunProgress progress(args.output, progress_stream(args.reading.quiet));
+  progress.watch(options);
   const int threads = args.reading.threads ? static_cast<int>(args.reading.threads)
                                            : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);
   ShadowedScene merged = arena.execute([&] {
     std::vector<ShardFile> shards;
     for (const std::string& input : args.inputs) {
+      progress.stage("reading shard " + std::to_string(shards.size() + 1) + "/" +
+                     std::to_string(args.inputs.size()) + " (" + input + ")");
       shards.push_back({input, load_shadowed(input, options)});
     }
+    progress.stage("joining " + std::to_string(shards.size()) + " shards");
     return merge_shards(std::move(shards));
   });
+  progress.stage("writing");
   write_database(merged, args.output);
+  progress.finish();
 }
 
 void add_merge_options(CLI::App& command, MergeArgs& args) {

@@ -16,9 +16,13 @@ std::string format_progress(const ProgressLine& line) {
     text +=
         '[' + std::to_string(line.scene_index + 1) + '/' + std::to_string(line.scene_count) + "] ";
   }
-  text += line.scene + ": lights " + std::to_string(line.lights_done) + '/' +
-          std::to_string(line.lights_total);
-  if (line.any_light_done) text += ", last light " + std::to_string(line.faces) + " faces";
+  if (!line.stage.empty()) {
+    text += line.scene + ": " + line.stage;
+  } else {
+    text += line.scene + ": lights " + std::to_string(line.lights_done) + '/' +
+            std::to_string(line.lights_total);
+    if (line.any_light_done) text += ", last light " + std::to_string(line.faces) + " faces";
+  }
   const double shown = std::isfinite(line.seconds) && line.seconds >= 0.0 ? line.seconds : 0.0;
   text += ", " + number_text(shown, std::chars_format::fixed, 1) + " s";
   return text;
@@ -40,6 +44,29 @@ void ProgressDisplay::light_done(const LightStats& stats) {
   line_.faces = stats.faces_considered;
   line_.any_light_done = true;
   draw();
+}
+
+void ProgressDisplay::count_lights(std::size_t total) {
+  const std::lock_guard lock(mutex_);
+  line_.stage.clear();
+  line_.lights_total = total;
+  line_.lights_done = 0;
+  line_.any_light_done = false;
+  draw();
+}
+
+void ProgressDisplay::stage(std::string what) {
+  const std::lock_guard lock(mutex_);
+  line_.stage = std::move(what);
+  draw();
+}
+
+void ProgressDisplay::interrupt() {
+  const std::lock_guard lock(mutex_);
+  if (!open_) return;
+  *out_ << '\n' << std::flush;
+  open_ = false;
+  drawn_width_ = 0;
 }
 
 void ProgressDisplay::finish() {

@@ -1,7 +1,8 @@
 #pragma once
 
-// Progress of `shadowgen generate` on a terminal: one line on stderr, rewritten in place
-// ("\r") as each light is done, ended with a newline when the scene is done. Nothing is
+// Progress of a long run on a terminal (generate, and report, compare, export, render and
+// merge): one line on stderr, rewritten in place ("\r") as each light is generated or the
+// run goes on to its next stage, ended with a newline when the run is done. Nothing is
 // shown when stderr is not a terminal (a file, a pipe, CI logs) or with --quiet, so
 // scripted runs see only warnings and errors.
 
@@ -24,11 +25,15 @@ struct ProgressLine {
   std::size_t lights_total = 0;
   std::size_t faces = 0;  // faces considered for the last light done (within its range)
   bool any_light_done = false;
-  double seconds = 0.0;  // since the scene's generation started
+  // What the run does now where it counts no lights ("splitting faces by light sets");
+  // empty while lights are generated.
+  std::string stage;
+  double seconds = 0.0;  // since the scene's generation (or the run's first stage) started
 };
 
 // The text of the line, without "\r" or "\n":
 //   "[2/3] courtyard.json: lights 3/8, last light 1204 faces, 2.4 s"
+//   "db.json: splitting faces by light sets, 2.4 s"   (a stage)
 // Seconds with one decimal, independent of the C locale.
 std::string format_progress(const ProgressLine& line);
 
@@ -48,6 +53,13 @@ class ProgressDisplay {
   ProgressDisplay& operator=(const ProgressDisplay&) = delete;
 
   void light_done(const LightStats& stats);
+  // Lights from now on: `total` of them, none done yet (a scene read, its generation begun).
+  void count_lights(std::size_t total);
+  // A stage of the run from now on, redrawn at once.
+  void stage(std::string what);
+  // Ends the line with a newline, so that a warning printed next has a line of its own;
+  // the next redraw starts a new line.
+  void interrupt();
   // Ends the line with a newline; later calls and the destructor do nothing.
   void finish();
 

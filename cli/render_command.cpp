@@ -11,6 +11,8 @@
 
 #include "cli/command.h"
 #include "cli/number_options.h"
+#include "cli/output_by_extension.h"
+#include "cli/run_progress.h"
 #include "cli/sun_hours_options.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/view_limits.h"
@@ -28,14 +30,16 @@ namespace {
 
 constexpr CommandText kRenderText{
     "render",
-    "Draw the shadowed database from a viewpoint as SVG: hidden surfaces removed from the "
+    "Draw the shadowed database from a viewpoint as SVG (-o FILE.svg): hidden surfaces removed "
+    "from the "
     "eye, each visible face split by the lights reaching it, flat shaded; or, with "
     "--by-light, each visible face in shadow with one layer per light over it, what that "
     "light reaches in its share of the shading, which a browser adds up (it grows linearly "
     "with the lights where light sets do not); or, with --sun-hours, split by a sun path's "
     "sun hours, coloured by band, with a legend. Reads "
-    "only the database; no shadows are recomputed. --png draws the lit picture pixel by pixel "
-    "instead or as well, its shadows found by --shadows: the database's (exact), shadow maps "
+    "only the database; no shadows are recomputed. A PNG picture (-o FILE.png) is the lit picture "
+    "drawn pixel by pixel, instead or as well, its shadows found by --shadows: the database's "
+    "(exact), shadow maps "
     "or shadow volumes."};
 
 // A picture of a shadowed database (never a scene: no shadow pass runs) from the
@@ -46,17 +50,22 @@ struct RenderArgs {
   std::string eye, target, up;  // X,Y,Z (point(), point(), triple()), or empty
   double fov_deg = 45.0;
   bool ortho = false;
-  double scale = 0.0;  // orthographic pixels per scene unit; 0 fits the scene
-  std::string svg;
-  std::string png;
+  double scale = 0.0;                // orthographic pixels per scene unit; 0 fits the scene
+  std::vector<std::string> outputs;  // -o: an SVG or a PNG file each, by extension
+  std::string svg;                   // --svg, or the -o file ending in .svg
+  std::string png;                   // --png, or the -o file ending in .png
+  std::string svg_option = "--svg";  // the option that named each, for messages
+  std::string png_option = "--png";
   std::string shadows = "exact";  // --png: how the pixels' shadows are found
   int resolution = kDefaultResolution;
   const CLI::Option* resolution_option = nullptr;
   int width = 800;
   int height = 600;
-  std::vector<std::string> lights;  // --lights: only these are drawn
-  SunHoursArgs sun_hours;           // --sun-hours: a sun-hours map of that path instead
-  bool by_light = false;            // --by-light: the SVG in layers by light
+  std::vector<std::string> lights;   // --lights: only these are drawn
+  SunHoursArgs sun_hours;            // --sun-hours: a sun-hours map of that path instead
+  bool by_light = false;             // --by-light: the SVG in layers by light
+  bool quiet = false;                // --quiet: no reading warnings, no progress line
+  const CLI::App* parser = nullptr;  // the subcommand, whose options say what was given
 };
 
 // A triple the parser has checked (triple(), point()), or `fallback` when not given.
@@ -136,10 +145,42 @@ std::string png_picture(const RenderArgs& args, const ShadowedScene& shadowed, c
   }
 }
 
-void run_render(const RenderArgs& args) {
+// `given` with its -o files taken as the SVG or PNG file by their extension; the usage
+// errors of options that need one of the two pictures.
+RenderArgs with_outputs(const RenderArgs& given) {
+  RenderArgs args = given;
+  std::vector<FormatOutput> formats{{"SVG picture", ".svg", "--svg", args.svg, ""},
+                                    {"PNG picture", ".png", "--png", args.png, ""}};
+  assign_outputs(args.outputs, formats);
+  args.svg = formats[0].path;
+  args.svg_option = formats[0].named_by;
+  args.png = formats[1].path;
+  args.png_option = formats[1].named_by;
   if (args.svg.empty() && args.png.empty()) {
-    throw UsageError("--svg or --png is required (or both)");
+    throw UsageError(
+        "-o FILE.svg or -o FILE.png is required (or both; --svg and --png name them too)");
   }
+  if (args.png.empty()) {
+    for (const char* option : {"--shadows", "--resolution"}) {
+      if (args.parser->get_option(option)->count() > 0) {
+        throw UsageError(std::string(option) +
+                         " applies only to the PNG picture (-o FILE.png or --png)");
+      }
+    }
+  }
+  if (args.by_light && args.svg.empty()) {
+    throw UsageError("--by-light draws the SVG picture in layers: it needs -o FILE.svg (or --svg)");
+  }
+  // A sun-hours map is drawn as SVG only.
+  if (!args.sun_hours.path.empty() && !args.png.empty()) {
+    throw UsageError("--sun-hours draws an SVG map only, not the PNG picture " + args.png_option +
+                     " " + args.png);
+  }
+  return args;
+}
+
+void run_render(const RenderArgs& given) {
+  const RenderArgs args = with_outputs(given);
   if (!args.png.empty()) pixel_shadows_of(args);  // its usage errors before any work
   check_up(args);
   LoadOptions load;
@@ -148,13 +189,17 @@ void run_render(const RenderArgs& args) {
   // A sun-hours map draws a path's sums, not its instants' lit polygons.
   load.instant_polygons = args.sun_hours.path.empty();
   load.draws = true;
-  load.on_warning = [](const std::string& warning) {
-    std::cerr << "shadowgen: warning: " << warning << '\n';
-  };
+  if (!args.quiet) {
+    load.on_warning = [](const std::string& warning) {
+      std::cerr << "shadowgen: warning: " << warning << '\n';
+    };
+  }
   RunFiles run_files{{args.database}, {}};
-  if (!args.svg.empty()) run_files.writes.push_back({"--svg", args.svg});
-  if (!args.png.empty()) run_files.writes.push_back({"--png", args.png});
+  if (!args.svg.empty()) run_files.writes.push_back({args.svg_option, args.svg});
+  if (!args.png.empty()) run_files.writes.push_back({args.png_option, args.png});
   guard_outputs(load, run_files);
+  RunProgress progress(args.database, progress_stream(args.quiet));
+  progress.watch(load);
   const ShadowedScene shadowed = load_shadowed(args.database, load);
   std::optional<SunHoursMap> map;
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.database);
@@ -165,13 +210,17 @@ void run_render(const RenderArgs& args) {
   std::string svg, png;
   try {
     if (!args.svg.empty()) {
+      progress.stage("drawing " + args.svg);
       const Picture picture =
           map             ? render_sun_hours(shadowed, *map->path, map->bands, camera, options)
           : args.by_light ? render_by_light(shadowed, camera, options)
                           : render(shadowed, camera, options);
       svg = svg_document(picture);
     }
-    if (!args.png.empty()) png = png_picture(args, shadowed, camera, options);
+    if (!args.png.empty()) {
+      progress.stage("drawing " + args.png);
+      png = png_picture(args, shadowed, camera, options);
+    }
   } catch (const std::invalid_argument& e) {
     // A camera the database's view or the arguments describe badly (eye == target): the
     // camera does not know which of them it came from.
@@ -182,7 +231,9 @@ void run_render(const RenderArgs& args) {
   std::vector<OutputText> files;
   if (!args.svg.empty()) files.push_back({args.svg, svg});
   if (!args.png.empty()) files.push_back({args.png, png});
+  progress.stage("writing");
   write_files_atomically(files);
+  progress.finish();
 }
 
 void add_camera_options(CLI::App& command, RenderArgs& args) {
@@ -225,15 +276,17 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
   command.add_option("database", args.database, "shadowed database (shadowgen-shadowed/1)")
       ->required();
   add_camera_options(command, args);
-  CLI::Option* png = command.add_option(
-      "--png", args.png,
-      "PNG file to write: the lit picture pixel by pixel, each pixel sampled at its centre "
-      "(--svg, --png or both)");
-  command.add_option("--svg", args.svg, "SVG file to write (--svg, --png or both)");
+  args.parser = &command;
+  add_outputs_option(command, args.outputs,
+                     "picture to write, by its extension: FILE.svg (the SVG picture) or FILE.png "
+                     "(the lit picture pixel by pixel, each pixel sampled at its centre); once "
+                     "for each, or twice for both");
+  command.add_option("--png", args.png, "PNG file to write, as -o FILE.png does");
+  command.add_option("--svg", args.svg, "SVG file to write, as -o FILE.svg does");
   // The view methods --png takes (shadowgen/view/pixel_shadows.h).
   command
       .add_option("--shadows", args.shadows,
-                  "with --png: how each pixel's shadows are found: exact (default; the "
+                  "with a PNG picture: how each pixel's shadows are found: exact (default; the "
                   "database's lit polygons), shadow-map (depth maps from each light), volumes "
                   "(Bergeron's shadow volumes counted along each eye ray), stencil "
                   "(Heidmann's shadow volumes in the stencil buffer of OpenGL, run on the CPU "
@@ -243,33 +296,30 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
                   "(Thakur, Cheng and Miura's ridge-edge loops and angular span table; closed "
                   "objects)")
       ->check(CLI::IsMember(
-          {"exact", "shadow-map", "volumes", "stencil", "stencil-silhouettes", "angular"}))
-      ->needs(png);
+          {"exact", "shadow-map", "volumes", "stencil", "stencil-silhouettes", "angular"}));
   args.resolution_option =
       command
-          .add_option("--resolution", args.resolution,
-                      "with --png --shadows shadow-map: texels along each side of a depth map; "
-                      "with --shadows angular: rows of the angular span table (default " +
-                          std::to_string(kDefaultResolution) + ")")
-          ->check(whole_number_in(1, kMaxResolution))
-          ->needs(png);
+          .add_option(
+              "--resolution", args.resolution,
+              "with a PNG picture and --shadows shadow-map: texels along each side of a depth map; "
+              "with --shadows angular: rows of the angular span table (default " +
+                  std::to_string(kDefaultResolution) + ")")
+          ->check(whole_number_in(1, kMaxResolution));
   // As large as libpng writes, for --svg too: one range for both pictures.
   command.add_option("--width", args.width, "picture width in pixels (default 800)")
       ->check(whole_number_in(1, kLargestPictureSide));
   command.add_option("--height", args.height, "picture height in pixels (default 600)")
       ->check(whole_number_in(1, kLargestPictureSide));
-  add_lights_option(command, args.lights);
+  add_lights_option(command, args.lights, "the database's other lights are not drawn");
+  command.add_flag("-q,--quiet", args.quiet, "do not print reading warnings or the progress line");
   // A sun-hours map draws one path whole: there is nothing for --lights to choose.
   CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "draw");
   sun_hours->excludes(command.get_option("--lights"));
-  // A sun-hours map is drawn as SVG only.
-  sun_hours->excludes(png);
   command
       .add_flag("--by-light", args.by_light,
-                "with --svg: each visible face in shadow, then one layer per light over it "
-                "(what the light reaches, in its share of the shading), instead of the faces "
+                "with an SVG picture: each visible face in shadow, then one layer per light over "
+                "it (what the light reaches, in its share of the shading), instead of the faces "
                 "split by light sets")
-      ->needs(command.get_option("--svg"))
       ->excludes(sun_hours);
 }
 

@@ -10,6 +10,7 @@
 
 #include "cli/command.h"
 #include "cli/number_options.h"
+#include "cli/run_progress.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/energyplus_shading.h"
@@ -90,7 +91,10 @@ void run_report(const ReportArgs& args) {
         "method does not make (its lit areas give --format energyplus and "
         "irradiation)");
   }
+  RunProgress progress(args.input, progress_stream(args.reading.quiet));
+  progress.watch(options);
   const ShadowedScene shadowed = load_shadowed(args.input, options);
+  progress.finish();  // before the report's warnings, and the report on the terminal
   const std::string report = report_text(shadowed, args);
   if (args.output.empty()) {
     std::cout << report << std::flush;

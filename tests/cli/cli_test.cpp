@@ -350,6 +350,37 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(files(), std::vector<std::string>{"scene.json"});
 }
 
+// A word where the subcommand goes is named, with the subcommands there are (CLI11 said
+// "A subcommand is required" of `shadowgen frobnicate`); every parse error begins with
+// "shadowgen: " as the other errors do, then the hint.
+TEST_F(Cli, AnUnknownSubcommandIsNamedWithTheSubcommandsThereAre) {
+  const std::string names = "generate, report, export, render, sun, merge, compare";
+  const std::string hint = "\nRun with --help for more information.\n";
+  const Outcome unknown = run({"frobnicate", "x.json"});
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_EQ(unknown.out, "");
+  EXPECT_EQ(unknown.err, "shadowgen: frobnicate: not a subcommand of shadowgen (its subcommands: " +
+                             names + ")" + hint);
+  const Outcome none = run({});
+  EXPECT_EQ(none.code, 2);
+  EXPECT_EQ(none.err, "shadowgen: a subcommand is required: " + names + hint);
+  const Outcome option = run({"--bogus"});
+  EXPECT_EQ(option.code, 2);
+  EXPECT_EQ(
+      option.err,
+      "shadowgen: --bogus: not an option of shadowgen; a subcommand comes first: " + names + hint);
+  const Outcome extra = run({"report", "a.json", "--bogus"});
+  EXPECT_EQ(extra.code, 2);
+  EXPECT_EQ(extra.err, "shadowgen: The following argument was not expected: --bogus" + hint);
+  const Outcome missing = run({"generate", "a.json"});
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_EQ(missing.err, "shadowgen: --output is required" + hint);
+  const Outcome format = run({"report", "a.json", "--format", "xml"});
+  EXPECT_EQ(format.code, 2);
+  EXPECT_EQ(format.err.rfind("shadowgen: --format: xml not in {", 0), 0u) << format.err;
+  EXPECT_EQ(files(), std::vector<std::string>{});
+}
+
 // Every numeric option refuses NaN, an infinity out of its range and a number out of its
 // range while the arguments are parsed: exit 2 before any work, whatever the input (here
 // one that does not exist, which would be exit 1 had anything been read), with its bounds
@@ -390,7 +421,7 @@ TEST_F(Cli, NumericOptionsRefuseNanAndInfinityAtParseTime) {
   for (const Case& c : cases) {
     const Outcome outcome = run(c.args);
     EXPECT_EQ(outcome.code, 2) << c.message << "\n" << outcome.err;
-    EXPECT_EQ(outcome.err.rfind(c.message + "\n", 0), 0u) << outcome.err;
+    EXPECT_EQ(outcome.err.rfind("shadowgen: " + c.message + "\n", 0), 0u) << outcome.err;
     EXPECT_EQ(outcome.err.find("179769313486231570000"), std::string::npos) << outcome.err;
   }
   EXPECT_EQ(files(), std::vector<std::string>{});
@@ -413,6 +444,21 @@ TEST_F(Cli, HelpForEachSubcommand) {
   for (const char* option : {"--format", "--output", "--strict", "table", "--top"}) {
     EXPECT_NE(report.out.find(option), std::string::npos) << option << "\n" << report.out;
   }
+}
+
+// The help of a subcommand that computes no shadow speaks of what it does with the lights
+// it is not given (render's --lights once said a scene's other lights are not generated).
+TEST_F(Cli, HelpOfSubcommandsThatGenerateNothingSpeaksOfNoGenerating) {
+  const Outcome render = run({"render", "--help"});
+  EXPECT_EQ(render.code, 0);
+  EXPECT_EQ(render.out.find("generated"), std::string::npos) << render.out;
+  EXPECT_NE(render.out.find("the database's other lights are not drawn"), std::string::npos)
+      << render.out;
+  const Outcome sun = run({"sun", "--help"});
+  EXPECT_EQ(sun.code, 0);
+  EXPECT_EQ(sun.out.find("generated"), std::string::npos) << sun.out;
+  EXPECT_NE(sun.out.find("the other lights' instants are not listed"), std::string::npos)
+      << sun.out;
 }
 
 TEST_F(Cli, SeveralScenesGiveTheDatabasesOfEachAlone) {

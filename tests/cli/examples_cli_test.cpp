@@ -429,8 +429,9 @@ TEST_P(ExampleCli, CompareFinishesWithAnExactRowWithoutError) {
   const fs::path scene = kExamples / "scenes" / (GetParam() + ".json");
   const nlohmann::json json = nlohmann::json::parse(contents(scene));
   const nlohmann::json views = json.value("views", nlohmann::json::array());
-  std::vector<std::string> args{"compare",  scene.string(), "--methods", "rays:4,shadow-map:4:128",
-                                "--format", "csv",          "--quiet"};
+  std::vector<std::string> args{
+      "compare",  scene.string(), "--methods", "rays:4,shadow-map:128:samples=4",
+      "--format", "csv",          "--quiet"};
   if (!views.empty()) {
     args.insert(args.end(), {"--view", views[0].at("id").get<std::string>(), "--width", "64",
                              "--height", "48", "--view-methods", "volumes,shadow-map:512"});

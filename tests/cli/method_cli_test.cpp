@@ -131,11 +131,64 @@ TEST_F(MethodCli, OptionsThatDoNotFitAreUsageErrors) {
   }
 }
 
+// shadow-map:N means texels, in --methods as in --view-methods and --resolution; points per
+// face are samples=N. --methods shadow-map:2048 once meant 2048 samples: the spelling of
+// two numbers is refused saying the new one, and a number alone, which means texels now,
+// says so on stderr (but under --quiet).
+TEST_F(MethodCli, ShadowMapNMeansTexelsInEveryMethodList) {
+  const fs::path scene = write("roof.json", kRoof);
+  auto rows_of = [](const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line;
+    std::vector<std::vector<std::string>> rows;
+    std::getline(in, line);  // the header
+    while (std::getline(in, line)) rows.push_back(csv_fields(line));
+    return rows;
+  };
+  const Outcome texels = run({"compare", scene.string(), "--methods",
+                              "shadow-map:128,shadow-map:64:samples=8,rays:samples=8", "--format",
+                              "csv", "--threads", "1"});
+  ASSERT_EQ(texels.code, 0) << texels.err;
+  EXPECT_EQ(texels.err,
+            "shadowgen: warning: --methods shadow-map:128: 128 is the depth maps' resolution in "
+            "texels, as in --view-methods (it was once the points per face, now written "
+            "shadow-map:RESOLUTION:samples=N)\n");
+  const std::vector<std::vector<std::string>> rows = rows_of(texels.out);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[1][0] + ":" + rows[1][1] + ":" + rows[1][2], "shadow-map:256:128");
+  EXPECT_EQ(rows[2][0] + ":" + rows[2][1] + ":" + rows[2][2], "shadow-map:8:64");
+  EXPECT_EQ(rows[3][0] + ":" + rows[3][1], "rays:8");
+  const Outcome quiet = run({"compare", scene.string(), "--methods", "shadow-map:128", "--format",
+                             "csv", "--threads", "1", "--quiet"});
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+
+  const Outcome old = run({"compare", scene.string(), "--methods", "rays:16,shadow-map:64:1024"});
+  EXPECT_EQ(old.code, 2);
+  EXPECT_EQ(old.err,
+            "shadowgen: --methods shadow-map:64:1024: shadow-map:SAMPLES:RESOLUTION is written "
+            "shadow-map:1024:samples=64 (the number after shadow-map is the depth maps' "
+            "resolution in texels, as in --view-methods)\nRun with --help for more "
+            "information.\n");
+  for (const char* bad : {"shadow-map:samples=4:samples=4", "rays:4:samples=4",
+                          "shadow-map:64:samples=0", "shadow-map:samples=x", "exact:samples=4"}) {
+    const Outcome refused = run({"compare", scene.string(), "--methods", bad});
+    EXPECT_EQ(refused.code, 2) << bad;
+    EXPECT_EQ(refused.err.rfind(std::string("shadowgen: --methods ") + bad +
+                                    ": expected exact, rays[:SAMPLES] or "
+                                    "shadow-map[:RESOLUTION][:samples=N], ",
+                                0),
+              0u)
+        << refused.err;
+  }
+  EXPECT_EQ(files(), std::vector<std::string>{"roof.json"});
+}
+
 TEST_F(MethodCli, CompareMeasuresEveryMethodAgainstExact) {
   const fs::path scene = write("roof.json", kRoof);
   const fs::path plot = dir_ / "plot.svg";
   const Outcome outcome =
-      run({"compare", scene.string(), "--methods", "rays:16,rays:1024,shadow-map:64:256",
+      run({"compare", scene.string(), "--methods", "rays:16,rays:1024,shadow-map:256:samples=64",
            "--format", "csv", "--plot", plot.string(), "--threads", "1"});
   ASSERT_EQ(outcome.code, 0) << outcome.err;
   std::istringstream in(outcome.out);

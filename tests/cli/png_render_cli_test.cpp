@@ -171,7 +171,7 @@ TEST_F(PngRenderCli, UsageErrors) {
                "--resolution applies only");
   expect_usage({"--png", png, "--shadows", "stencil-silhouettes", "--resolution", "64"},
                "--resolution applies only");
-  expect_usage({}, "--svg or --png is required");
+  expect_usage({}, "-o FILE.svg or -o FILE.png is required");
   expect_usage({"--png", db_.string()}, "is the input");
   expect_usage({"--png", png, "--svg", png}, "name the same file");
   EXPECT_FALSE(fs::exists(png));
@@ -188,7 +188,7 @@ TEST_F(PngRenderCli, ASideBeyondWhatLibpngWritesIsAUsageError) {
         run({"render", db_.string(), "--view", "main", side, "1000001", "--png", png});
     EXPECT_EQ(out.code, 2) << out.err;
     EXPECT_EQ(out.err.substr(0, out.err.find('\n')),
-              std::string(side) + ": 1000001 must lie between 1 and 1000000");
+              "shadowgen: " + std::string(side) + ": 1000001 must lie between 1 and 1000000");
   }
   EXPECT_FALSE(fs::exists(png));
 }

@@ -265,12 +265,22 @@ TEST_F(RenderCli, ACameraThatCanShowNothingIsAUsageErrorNamingTheOption) {
   };
   const Outcome narrow = run(with({"--fov", "1e-200"}));
   EXPECT_EQ(narrow.code, 2);
-  EXPECT_EQ(narrow.err.rfind("--fov: 1e-200 must be at least 1e-06 and below 180 degrees\n", 0), 0u)
+  EXPECT_EQ(narrow.err.rfind(
+                "shadowgen: --fov: 1e-200 must be at least 1e-06 and below 180 degrees\n", 0),
+            0u)
       << narrow.err;
+  // No field of view at all is the same usage error, naming --fov (not the camera).
+  const Outcome none = run(with({"--fov", "0"}));
+  EXPECT_EQ(none.code, 2);
+  EXPECT_EQ(none.err.rfind("shadowgen: --fov: 0 must be at least 1e-06 and below 180 degrees\n", 0),
+            0u)
+      << none.err;
   const Outcome fine = run(with({"--ortho", "--scale", "1e200"}));
   EXPECT_EQ(fine.code, 2);
   EXPECT_EQ(
-      fine.err.rfind("--scale: 1e200 must lie between 1e-100 and 1e+100 pixels per unit\n", 0), 0u)
+      fine.err.rfind(
+          "shadowgen: --scale: 1e200 must lie between 1e-100 and 1e+100 pixels per unit\n", 0),
+      0u)
       << fine.err;
   const Outcome coarse = run(with({"--ortho", "--scale", "1e-200"}));
   EXPECT_EQ(coarse.code, 2);
