@@ -211,12 +211,20 @@ void run_compare(const CompareArgs& args) {
   const ViewSpec* view = args.view.empty() ? nullptr : &view_named(scene, args.view, args.input);
   GenerateOptions options;
   options.threads = args.reading.threads;
-  // The exact trial's lights; the sampled trials after it count none.
+  // The exact trial's lights, then each sampled trial by name.
   options.on_light_done = progress.lights(scene.lights.size());
+  std::size_t trials = 1;
+  for (const Method& method : methods) trials += method.exact() ? 0 : 1;
+  std::size_t trial = 0;
+  const auto on_trial = [&](const Method& method) {
+    if (++trial == 1) return;  // the exact one: its lights are counted
+    progress.stage("trial " + std::to_string(trial) + "/" + std::to_string(trials) + ", " +
+                   method_label(method));
+  };
   MethodComparison comparison;
   ShadowedScene exact;
   try {
-    comparison = compare_methods(scene, methods, options, view ? &exact : nullptr);
+    comparison = compare_methods(scene, methods, options, view ? &exact : nullptr, on_trial);
   } catch (const GenerationError& e) {
     throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
   }

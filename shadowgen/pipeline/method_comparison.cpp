@@ -33,7 +33,8 @@ std::vector<double> face_areas(const Scene& scene) {
 }  // namespace
 
 MethodComparison compare_methods(const Scene& scene, std::span<const Method> methods,
-                                 GenerateOptions options, ShadowedScene* exact_shadowed) {
+                                 GenerateOptions options, ShadowedScene* exact_shadowed,
+                                 const std::function<void(const Method&)>& on_trial) {
   options.sun_hours_regions = false;
   options.keep_instant_polygons = false;
   MethodComparison comparison;
@@ -42,6 +43,7 @@ MethodComparison compare_methods(const Scene& scene, std::span<const Method> met
   const std::size_t lights = scene.lights.size();
   for (const double a : areas) comparison.pairs += a > 0.0 ? lights : 0;
 
+  if (on_trial) on_trial(Method{});
   Timed exact = timed_run(scene, Method{}, options);
   const LitAreas exact_areas(exact.shadowed);
   // Exact fractions once: every trial is compared with them.
@@ -55,6 +57,7 @@ MethodComparison compare_methods(const Scene& scene, std::span<const Method> met
   comparison.trials.push_back({Method{}, exact.seconds});
   for (const Method& method : methods) {
     if (method.exact()) continue;
+    if (on_trial) on_trial(method);
     const Timed run = timed_run(scene, method, options);
     const LitAreas estimated(run.shadowed);
     MethodTrial trial{method, run.seconds};

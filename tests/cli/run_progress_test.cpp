@@ -135,9 +135,11 @@ TEST_F(ProgressCli, ReportOnASceneShowsItsGeneration) {
                  {scene_ + ": lights 0/4, ", scene_ + ": lights 4/4, last light "});
 }
 
-TEST_F(ProgressCli, CompareOnASceneShowsItsExactGeneration) {
-  ExpectProgress({"compare", scene_, "--methods", "rays:4", "-o", (dir_ / "c.txt").string()},
-                 {scene_ + ": lights 0/4, ", scene_ + ": lights 4/4, last light "});
+TEST_F(ProgressCli, CompareOnASceneShowsItsExactGenerationThenEachTrial) {
+  ExpectProgress({"compare", scene_, "--methods", "rays:4,shadow-map:64:samples=4", "-o",
+                  (dir_ / "c.txt").string()},
+                 {scene_ + ": lights 0/4, ", scene_ + ": lights 4/4, last light ",
+                  scene_ + ": trial 2/3, rays 4, ", scene_ + ": trial 3/3, shadow-map 4 @ 64, "});
 }
 
 TEST_F(ProgressCli, ExportShowsItsStages) {

@@ -328,6 +328,32 @@ TEST_F(SunCli, ReportsOnADatabaseNameTheDatabaseNotItsScene) {
   EXPECT_EQ(hours.err, no_path + "to report sun hours of\n");
 }
 
+// What an --areas-only database cannot give (sun-hours regions) is said of that database,
+// as the user named it, never of the scene it was generated from.
+TEST_F(SunCli, WhatAnAreasOnlyDatabaseCannotGiveNamesThatDatabase) {
+  const fs::path scene = write("yard.json", kYard);
+  fs::create_directories(dir_ / "out");
+  const fs::path db = dir_ / "out" / "areas.json";
+  ASSERT_EQ(run({"generate", scene.string(), "-o", db.string(), "--areas-only"}).code, 0);
+  const std::string summed = "shadowgen: " + db.string() +
+                             ": sun path 'march21' was summed into lit areas alone (generate "
+                             "--areas-only), without the sun-hours regions ";
+  const Outcome report = run({"report", db.string(), "--format", "sun-hours"});
+  EXPECT_EQ(report.code, 1);
+  EXPECT_EQ(report.err, summed + "a sun-hours report needs: generate without --areas-only\n");
+  const Outcome exported =
+      run({"export", db.string(), "--sun-hours", "march21", "-o", (dir_ / "m.obj").string()});
+  EXPECT_EQ(exported.code, 1);
+  EXPECT_EQ(exported.err,
+            summed + "an export by hour bands needs: generate without --areas-only\n");
+  fs::remove(scene);  // a map reads the database alone
+  const Outcome map = run({"render", db.string(), "--sun-hours", "march21", "--eye", "5,-20,20",
+                           "--target", "5,5,0", "-o", (dir_ / "m.svg").string()});
+  EXPECT_EQ(map.code, 1);
+  EXPECT_EQ(map.err, summed + "a sun-hours map needs: generate without --areas-only\n");
+  EXPECT_EQ(files(), std::vector<std::string>{"out"});
+}
+
 TEST_F(SunCli, EnergyPlusShadingScheduleFromTheSceneOrItsDatabase) {
   const fs::path scene = write("yard.json", kYard);
   const fs::path db = dir_ / "yard.shadowed.json";

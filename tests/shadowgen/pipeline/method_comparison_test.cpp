@@ -66,7 +66,10 @@ TEST(MethodComparison, ExactComesFirstWithoutErrorAndTheFrontIsMarked) {
   const Scene scene = scene_of(test::kTwoLights);
   const std::vector<Method> methods = {
       {MethodKind::kRays, 4}, {MethodKind::kExact}, {MethodKind::kShadowMap, 4096, 1024}};
-  const MethodComparison comparison = compare_methods(scene, methods, {});
+  std::vector<Method> run;  // in the order they are told, before each runs
+  const MethodComparison comparison =
+      compare_methods(scene, methods, {}, nullptr, [&run](const Method& m) { run.push_back(m); });
+  EXPECT_EQ(run, (std::vector<Method>{Method{}, methods[0], methods[2]}));
   EXPECT_EQ(comparison.pairs, 4u);
   ASSERT_EQ(comparison.trials.size(), 3u);  // the exact one given is the first, not run again
   EXPECT_TRUE(comparison.trials[0].method.exact());
