@@ -336,7 +336,7 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
       ->needs(view);
   add_output_option(command, args.output,
                     "file to write the table to (replaced whole); default: standard output");
-  add_reading_options(command, args.reading);
+  add_reading_options(command, args.reading, /*progress=*/true);
 }
 
 }  // namespace

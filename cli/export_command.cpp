@@ -107,7 +107,7 @@ void add_export_options(CLI::App& command, ExportArgs& args) {
   add_outputs_option(command, args.outputs,
                      "FILE.obj: the OBJ file to write (replaced whole); the MTL goes next to it");
   command.add_option("--obj", args.obj, "OBJ file to write, as -o FILE.obj does");
-  add_reading_options(command, args.reading);
+  add_reading_options(command, args.reading, /*progress=*/true);
   // A sun-hours export writes one path whole: there is nothing for --lights to choose.
   CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "write");
   sun_hours->excludes(command.get_option("--lights"));

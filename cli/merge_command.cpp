@@ -59,7 +59,8 @@ void add_merge_options(CLI::App& command, MergeArgs& args) {
   command.add_option("--threads", args.reading.threads,
                      "worker threads joining the faces' sums (0: one per hardware thread); the "
                      "result does not depend on them");
-  command.add_flag("-q,--quiet", args.reading.quiet, "do not print reading warnings");
+  command.add_flag("-q,--quiet", args.reading.quiet,
+                   "do not print reading warnings or the progress line");
 }
 
 }  // namespace

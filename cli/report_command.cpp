@@ -143,7 +143,7 @@ Command add_report_command(CLI::App& app) {
                         "a scene made elsewhere could carry one)");
   add_output_option(*command, args->output,
                     "file to write (replaced whole); default: standard output");
-  add_reading_options(*command, args->reading);
+  add_reading_options(*command, args->reading, /*progress=*/true);
   add_method_options(*command, args->method);
   // Run at the end of parsing, so that the error is reported as a parse error is.
   command->callback([args, top, csv_safe, threshold, weather] {

@@ -454,6 +454,14 @@ TEST_F(Cli, HelpOfSubcommandsThatGenerateNothingSpeaksOfNoGenerating) {
   EXPECT_EQ(render.out.find("generated"), std::string::npos) << render.out;
   EXPECT_NE(render.out.find("the database's other lights are not drawn"), std::string::npos)
       << render.out;
+  // The subcommands that show progress say that --quiet silences it.
+  for (const char* command : {"report", "compare", "export", "render", "merge"}) {
+    const Outcome help = run({command, "--help"});
+    EXPECT_NE(help.out.find("do not print reading warnings or the progress line"),
+              std::string::npos)
+        << command << "\n"
+        << help.out;
+  }
   const Outcome sun = run({"sun", "--help"});
   EXPECT_EQ(sun.code, 0);
   EXPECT_EQ(sun.out.find("generated"), std::string::npos) << sun.out;
