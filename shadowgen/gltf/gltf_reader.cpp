@@ -1,0 +1,223 @@
+#include "shadowgen/gltf/gltf_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <optional>
+#include <sstream>
+
+#include "detail/accessor_data.h"
+#include "detail/gltf_file.h"
+#include "detail/node_labels.h"
+#include "detail/node_walk.h"
+#include "detail/primitive_triangles.h"
+#include "shadowgen/model/input_error.h"
+
+namespace shadowgen::gltf {
+namespace {
+
+using detail::AccessorData;
+using detail::Place;
+
+// glTF's +y up turned to the scene's +z up: (x, y, z) -> (x, -z, y), a rotation by 90
+// degrees about x (determinant +1), so it turns no face over.
+glm::dvec3 z_up(const glm::dvec3& p) { return {p.x, -p.z, p.y}; }
+
+std::string text_of(const glm::dvec3& p) {
+  std::ostringstream out;
+  out.precision(17);
+  out << '(' << p.x << ", " << p.y << ", " << p.z << ')';
+  return out.str();
+}
+
+bool finite(const glm::dvec3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// What a node's world matrix does to its mesh: the matrix, whether it mirrors (its
+// linear part's determinant is negative), and how much it may stretch a vector (the
+// Frobenius norm of its linear part, at least its spectral norm).
+struct Placement {
+  glm::dmat4 world;
+  bool mirrored = false;
+  double stretch = 0.0;
+
+  explicit Placement(const glm::dmat4& m) : world(m) {
+    const glm::dmat3 linear(m);
+    mirrored = glm::determinant(linear) < 0.0;
+    double sum = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      for (int r = 0; r < 3; ++r) sum += linear[c][r] * linear[c][r];
+    }
+    stretch = std::sqrt(sum);
+  }
+};
+
+// The positions of a primitive: a VEC3 accessor of floats, or, where the file uses
+// KHR_mesh_quantization, of the integer types that extension allows.
+void check_positions(const AccessorData& positions, bool quantized, const Place& place) {
+  if (positions.type() != TINYGLTF_TYPE_VEC3) place.fail(positions.label() + " is not VEC3");
+  const int type = positions.component_type();
+  if (type == TINYGLTF_COMPONENT_TYPE_FLOAT) return;
+  const bool integer =
+      type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+      type == TINYGLTF_COMPONENT_TYPE_SHORT || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  if (integer && quantized) return;
+  place.fail(positions.label() + " has components of type " + detail::component_type_name(type) +
+             (integer ? ": glTF 2.0 positions are FLOAT, integers only with "
+                        "KHR_mesh_quantization, which the file does not use"
+                      : ": glTF 2.0 positions are FLOAT"));
+}
+
+void check_indices(const AccessorData& indices, const Place& place) {
+  const int type = indices.component_type();
+  if (indices.type() != TINYGLTF_TYPE_SCALAR || (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                                 type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                                 type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
+    place.fail(indices.label() +
+               " is not a SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+  }
+}
+
+// A vertex of a primitive placed in the scene, with how far the source's precision may
+// have moved it.
+struct PlacedVertex {
+  glm::dvec3 point;
+  double rounding = 0.0;
+};
+
+PlacedVertex place_vertex(const AccessorData& positions, std::size_t vertex,
+                          const Placement& placement, const Place& place) {
+  glm::dvec3 local;
+  double rounding2 = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    local[c] = positions.value(vertex, c);
+    const double r = positions.rounding(local[c]);
+    rounding2 += r * r;
+  }
+  if (!finite(local)) {
+    place.fail(positions.label() + " element " + std::to_string(vertex) +
+               " is not finite: " + text_of(local));
+  }
+  const glm::dvec3 point = z_up(glm::dvec3(placement.world * glm::dvec4(local, 1.0)));
+  if (!finite(point)) {
+    place.fail(positions.label() + " element " + std::to_string(vertex) + ", " + text_of(local) +
+               ", placed by its node's matrix, is beyond a double's range");
+  }
+  return {point, placement.stretch * std::sqrt(rounding2)};
+}
+
+// Appends the faces of primitive `p` of `mesh` placed by node `node`, numbering them from
+// `k` on.
+void read_primitive(const detail::GltfFile& file, const tinygltf::Primitive& primitive,
+                    const Placement& placement, const Place& place, const std::string& label,
+                    const FaceOrigin& origin, const std::string& node_subject, std::size_t& k,
+                    SourceModel& out) {
+  const tinygltf::Model& model = file.model;
+  const std::optional<detail::Topology> topology = detail::triangle_topology(primitive.mode);
+  if (!topology) {
+    place.fail("mode " + std::to_string(primitive.mode) + " (" + detail::mode_name(primitive.mode) +
+               ") draws no faces: shadowgen reads TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN");
+  }
+  const auto position = primitive.attributes.find("POSITION");
+  if (position == primitive.attributes.end()) {
+    out.warnings.push_back(place.file + ": " + place.subject +
+                           ": no POSITION attribute: the primitive draws nothing and is skipped");
+    return;
+  }
+  if (!primitive.targets.empty()) {
+    out.warnings.push_back(place.file + ": " + place.subject +
+                           ": morph targets are not applied: the base positions are read");
+  }
+  const AccessorData positions(model, position->second, "POSITION", place);
+  check_positions(positions, file.quantized_positions, place);
+  if (primitive.extensions.contains("KHR_draco_mesh_compression") &&
+      model.accessors[static_cast<std::size_t>(position->second)].bufferView < 0) {
+    place.fail(
+        "its positions are Draco-compressed (KHR_draco_mesh_compression), which "
+        "shadowgen does not read");
+  }
+  std::optional<AccessorData> indices;
+  if (primitive.indices >= 0) {
+    indices.emplace(model, primitive.indices, "indices", place);
+    check_indices(*indices, place);
+  }
+  const std::size_t sequence = indices ? indices->count() : positions.count();
+  if (*topology == detail::Topology::kTriangles && sequence % 3 != 0) {
+    place.fail(std::string(indices ? "its " + indices->label() + " has " : "it has ") +
+               std::to_string(sequence) + (indices ? " indices" : " vertices") +
+               ", not a multiple of 3 (TRIANGLES)");
+  }
+  auto vertex_at = [&](std::size_t position_in_sequence) {
+    if (!indices) return position_in_sequence;
+    const std::uint64_t vertex = indices->unsigned_value(position_in_sequence);
+    if (vertex >= positions.count()) {
+      place.fail(indices->label() + " element " + std::to_string(position_in_sequence) + " is " +
+                 std::to_string(vertex) + ", beyond the " + std::to_string(positions.count()) +
+                 " vertices of " + positions.label());
+    }
+    return static_cast<std::size_t>(vertex);
+  };
+  const std::size_t triangles = detail::triangle_count(*topology, sequence);
+  for (std::size_t i = 0; i < triangles; ++i) {
+    const std::array<std::size_t, 3> corners = detail::triangle_corners(*topology, i);
+    std::array<PlacedVertex, 3> v;
+    for (int c = 0; c < 3; ++c) {
+      v[static_cast<std::size_t>(c)] = place_vertex(
+          positions, vertex_at(corners[static_cast<std::size_t>(c)]), placement, place);
+    }
+    if (placement.mirrored) std::swap(v[1], v[2]);  // keeps the front side
+    SourceFace face;
+    face.id = label + "/" + std::to_string(k);
+    face.polygon.outer = {v[0].point, v[1].point, v[2].point};
+    face.origin = origin;
+    face.vertex_rounding = std::max({v[0].rounding, v[1].rounding, v[2].rounding});
+    face.described = node_subject + " triangle " + std::to_string(k);
+    out.faces.push_back(std::move(face));
+    ++k;
+  }
+}
+
+}  // namespace
+
+SourceModel read_gltf(const std::filesystem::path& file, const SourceOptions&) {
+  SourceModel out;
+  const std::string name = file.string();
+  const detail::GltfFile loaded = detail::load_gltf_file(file, out.warnings);
+  const tinygltf::Model& model = loaded.model;
+  detail::NodeLabels labels;
+  for (const detail::PlacedNode& placed : detail::walk_scene(model, name)) {
+    const tinygltf::Node& node = model.nodes[placed.node];
+    if (node.mesh < 0) continue;
+    const std::string subject = detail::node_subject(model, placed.node);
+    if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
+      throw InputError(name, "",
+                       subject + " names mesh " + std::to_string(node.mesh) + ", of " +
+                           std::to_string(model.meshes.size()));
+    }
+    const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
+    const std::string label = labels.take(model, placed.node, name);
+    if (node.skin >= 0) {
+      out.warnings.push_back(name + ": " + subject +
+                             ": its skin is not applied: the mesh is read unskinned, at the "
+                             "node's transform");
+    }
+    const std::string mesh_subject =
+        mesh.name.empty() ? "mesh " + std::to_string(node.mesh)
+                          : "mesh '" + mesh.name + "' (" + std::to_string(node.mesh) + ")";
+    const FaceOrigin origin{"gltf", detail::node_name(model, placed.node), mesh.name, ""};
+    const Placement placement(placed.world);
+    std::size_t k = 0;
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const Place place{name, subject + ", " + mesh_subject + ", primitive " + std::to_string(p)};
+      read_primitive(loaded, mesh.primitives[p], placement, place, label, origin, subject, k, out);
+    }
+  }
+  if (out.faces.empty()) {
+    throw InputError(name, "", "places no triangle: no node of its scene has a mesh with one");
+  }
+  return out;
+}
+
+}  // namespace shadowgen::gltf
