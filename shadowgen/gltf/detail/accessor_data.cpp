@@ -154,6 +154,18 @@ AccessorData::AccessorData(const tinygltf::Model& model, int index, std::string_
     base_ = view_bytes(model, view_index, accessor.byteOffset, span, label_, place);
   }
 
+  if (accessor.bufferView < 0) {
+    // Zeros but for sparse values: bounded by the bytes of the buffers, so that what is
+    // made of the file grows with the file, never beyond it.
+    std::size_t buffer_bytes = 0;
+    for (const tinygltf::Buffer& buffer : model.buffers) buffer_bytes += buffer.data.size();
+    if (count_ > buffer_bytes) {
+      place.fail(label_ + " has no buffer view and " + std::to_string(count_) +
+                 " elements, more than the " + std::to_string(buffer_bytes) +
+                 " bytes of the file's buffers: they would be zeros made up");
+    }
+  }
+
   if (accessor.sparse.isSparse) {
     const std::string sparse_label = label_ + "'s sparse";
     const int sparse_count = accessor.sparse.count;

@@ -5,10 +5,10 @@
 // inside its buffer, the accessor's elements inside its buffer view (byteStride
 // included), sparse indices and values inside theirs, sparse indices increasing and
 // below the accessor's count. An accessor without a buffer view is zeros but for its
-// sparse values. Components convert as the specification says (3.11 "Animations",
-// normalized integers): a float as it is, a normalized integer to [-1, 1] or [0, 1], any
-// other integer to its value. Nothing is copied: elements are read where they are, so an
-// accessor of zeros costs nothing whatever its count.
+// sparse values, and holds no more elements than the file's buffers hold bytes (its
+// faces would be zeros made up, without end). Components convert as the specification says (3.11
+// "Animations", normalized integers): a float as it is, a normalized integer to [-1, 1] or [0, 1],
+// any other integer to its value. Nothing is copied: elements are read where they are.
 
 #include <tiny_gltf.h>
 

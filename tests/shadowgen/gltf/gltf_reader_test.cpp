@@ -299,6 +299,21 @@ TEST(GltfReader, MorphTargetsAndSkinsAreIgnoredWithAWarning) {
                                    "applied: the base positions are read");
 }
 
+// Images serve materials only: a missing image file, a folder or a device named as one,
+// and an image in a buffer view that is no picture are not read, and draw no word.
+TEST(GltfReader, ImagesAreNeverRead) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  const int junk = b.view("not a picture");
+  const SourceModel model =
+      read("images.gltf",
+           b.gltf_embedded(one_node("", positions) + R"(, "images": [{"uri": "missing.png"},
+        {"uri": "/dev/zero"}, {"uri": "."}, {"bufferView": )" +
+                           std::to_string(junk) + R"(, "mimeType": "image/png"}])"));
+  ASSERT_EQ(model.faces.size(), 1u);
+  EXPECT_TRUE(model.warnings.empty());
+}
+
 // ---- Bad input ---------------------------------------------------------------------------
 
 TEST(GltfReaderErrors, MissingBufferFile) {
@@ -434,6 +449,54 @@ TEST(GltfReaderErrors, NotGltfTwoJson) {
               "\"uri\": \"data:application/octet-stream;base64," + test::base64(b.buffer()) +
                   "\"")),
       "<dir>/noscene.gltf: has no scene: a glTF file without scenes places no node");
+}
+
+TEST(GltfReaderErrors, ZerosWithoutEnd) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  const int zeros = b.accessor(-1, R"("componentType": 5126, "count": 3000000000, "type": "VEC3")");
+  EXPECT_EQ(
+      refusal("zeros.gltf",
+              b.gltf_embedded(R"("scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+                      "meshes": [{"primitives": [{"attributes": {"POSITION": )" +
+                              std::to_string(positions) + R"(}}, {"attributes": {"POSITION": )" +
+                              std::to_string(zeros) + "}}]}]")),
+      "<dir>/zeros.gltf: node 0, mesh 0, primitive 1: POSITION accessor 1 has no buffer "
+      "view and 3000000000 elements, more than the 36 bytes of the file's buffers: they "
+      "would be zeros made up");
+}
+
+// Nothing crashes on a damaged file: a .glb cut at every length, and with every byte
+// changed in turn, is read or refused with an InputError, never anything else.
+TEST(GltfReaderErrors, DamagedGlbIsReadOrRefused) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  const int indices = b.indices({0, 1, 2});
+  const std::string whole = b.glb(
+      R"("scenes": [{"nodes": [0]}], "nodes": [{"children": [1]}, {"mesh": 0, "scale": [1, 2, 3]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": )" +
+      std::to_string(positions) + R"(}, "indices": )" + std::to_string(indices) + "}]}]");
+  const fs::path path = folder().path() / "damaged.glb";
+  std::size_t read = 0, refused = 0;
+  auto attempt = [&](const std::string& bytes) {
+    folder().write("damaged.glb", bytes);
+    try {
+      gltf::read_gltf(path, {});
+      ++read;
+    } catch (const InputError&) {
+      ++refused;
+    }
+  };
+  for (std::size_t length = 0; length < whole.size(); ++length) attempt(whole.substr(0, length));
+  for (std::size_t at = 0; at < whole.size(); ++at) {
+    for (const int value : {0x00, 0x7f, 0xff, int{'9'}, int{'"'}, int{']'}}) {
+      std::string bytes = whole;
+      bytes[at] = static_cast<char>(value);
+      attempt(bytes);
+    }
+  }
+  EXPECT_EQ(read + refused, whole.size() * 7);
+  EXPECT_GT(refused, whole.size());  // every cut one at least
 }
 
 }  // namespace
