@@ -39,8 +39,13 @@ std::string refused_extension(std::string_view extension) {
 // (repeated keys, numbers beyond a double), the extensions required, and how many
 // buffers tinygltf will read from files (so that the file reads after theirs, images,
 // are refused).
+struct BufferFile {
+  std::size_t index = 0;        // in the file's buffers
+  std::size_t byte_length = 0;  // its byteLength
+};
+
 struct JsonFacts {
-  std::size_t buffer_files = 0;
+  std::vector<BufferFile> buffer_files;  // the buffers read from files, in order
   bool quantized_positions = false;
 };
 
@@ -85,7 +90,9 @@ JsonFacts check_json(std::string_view json, const std::string& file,
     for (std::size_t i = 0; i < list.size(); ++i) {
       JsonObject buffer = list.at(i).object();
       if (std::optional<JsonValue> uri = buffer.find("uri")) {
-        if (!uri->string().starts_with("data:")) ++facts.buffer_files;
+        if (!uri->string().starts_with("data:")) {
+          facts.buffer_files.push_back({i, buffer.get("byteLength").index()});
+        }
       }
     }
   }
@@ -98,7 +105,8 @@ JsonFacts check_json(std::string_view json, const std::string& file,
 // be reported whole instead of tinygltf's wording.
 struct FileAccess {
   std::string folder_prefix;  // the glTF file's folder, ending in '/'
-  std::size_t buffer_files_left = 0;
+  std::vector<BufferFile> buffer_files;
+  std::size_t buffer_files_read = 0;
   std::optional<std::string> problem;
 };
 
@@ -115,18 +123,26 @@ std::string expand_file_path(const std::string& path, void*) { return path; }
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                      void* user) {
   auto* access = static_cast<FileAccess*>(user);
-  if (access->buffer_files_left == 0) {
+  if (access->buffer_files_read == access->buffer_files.size()) {
     if (err) *err += "not read: shadowgen reads no images";
     return false;
   }
-  --access->buffer_files_left;
+  const BufferFile& buffer = access->buffer_files[access->buffer_files_read++];
+  const std::string label = "buffers[" + std::to_string(buffer.index) + "]: file " + path;
   try {
     const std::string bytes = read_text_file(path, "glTF buffer file");
-    out->assign(bytes.begin(), bytes.end());
+    // The specification's rule: the file holds at least byteLength bytes; those are the
+    // buffer (tinygltf would want exactly as many).
+    if (bytes.size() < buffer.byte_length) {
+      access->problem = label + " has " + std::to_string(bytes.size()) +
+                        " bytes, fewer than the buffer's byteLength of " +
+                        std::to_string(buffer.byte_length);
+      return false;
+    }
+    out->assign(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(buffer.byte_length));
     return true;
   } catch (const InputError& e) {
-    access->problem = "buffer file " + e.file() + ": " + e.problem();
-    if (err) *err += e.problem();
+    access->problem = label + ": " + e.problem();
     return false;
   }
 }
@@ -166,7 +182,7 @@ GltfFile load_gltf_file(const std::filesystem::path& file, std::vector<std::stri
   const std::string folder = parent.empty() ? std::string(".") : parent.string();
   access.folder_prefix = folder;
   if (!folder.ends_with('/')) access.folder_prefix.push_back('/');
-  access.buffer_files_left = facts.buffer_files;
+  access.buffer_files = facts.buffer_files;
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks(
       {&file_exists, &expand_file_path, &read_whole_file, &write_whole_file, &access});

@@ -320,7 +320,7 @@ TEST(GltfReaderErrors, MissingBufferFile) {
   GltfBuilder b;
   const int positions = b.positions(kTriangle);
   EXPECT_EQ(refusal("lost.gltf", b.gltf_external(one_node("", positions), "lost.bin")),
-            "<dir>/lost.gltf: buffer file <dir>/lost.bin: no such file");
+            "<dir>/lost.gltf: buffers[0]: file <dir>/lost.bin: no such file");
 }
 
 TEST(GltfReaderErrors, BufferFileOfAnotherSize) {
@@ -328,8 +328,12 @@ TEST(GltfReaderErrors, BufferFileOfAnotherSize) {
   const int positions = b.positions(kTriangle);
   folder().write("short.bin", b.buffer().substr(0, 30));
   EXPECT_EQ(refusal("short.gltf", b.gltf_external(one_node("", positions), "short.bin")),
-            "<dir>/short.gltf: not a readable glTF file: File size mismatch : "
-            "<dir>/short.bin, requestedBytes 36, but got 30");
+            "<dir>/short.gltf: buffers[0]: file <dir>/short.bin has 30 bytes, fewer than the "
+            "buffer's byteLength of 36");
+  // More bytes than byteLength: the specification allows it, the buffer is the first ones.
+  folder().write("long.bin", b.buffer() + "more");
+  EXPECT_EQ(read("long.gltf", b.gltf_external(one_node("", positions), "long.bin")).faces.size(),
+            1u);
 }
 
 TEST(GltfReaderErrors, TruncatedGlb) {
