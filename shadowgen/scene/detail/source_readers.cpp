@@ -4,6 +4,7 @@
 
 #include "shadowgen/cityjson/cityjson_reader.h"
 #include "shadowgen/energyplus/energyplus_reader.h"
+#include "shadowgen/gltf/gltf_reader.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen::detail {
@@ -13,13 +14,12 @@ SourceModel read_source(SourceFormat format, const std::filesystem::path& file,
   switch (format) {
     case SourceFormat::kMesh:
       break;
+    case SourceFormat::kGltf:
+      return gltf::read_gltf(file, options);
     case SourceFormat::kEnergyPlus:
       return energyplus::read_energyplus(file, options);
     case SourceFormat::kCityJson:
       return cityjson::read_cityjson(file, options);
-    case SourceFormat::kGltf:
-      throw InputError(file.string(), "",
-                       "is " + std::string(format_name(format)) + ", which this build cannot read");
   }
   throw InputError(file.string(), "", "is not a model file of another tool");
 }
