@@ -13,7 +13,8 @@ This script writes the seeds it can make on its own, named <kind>-<what>:
     under the clip and a sun straight above, shadows asked for;
   - small meshes of every format, well formed or not (ASCII and binary STL and PLY);
   - model files of other tools through a scene: an EnergyPlus IDF and epJSON, CityJSON
-    and CityJSONSeq, glTF and binary glTF;
+    and CityJSONSeq, glTF and binary glTF, and more of glTF (strips, fans, sparse and
+    strided accessors, quantized positions, a mirrored node, a cut .glb, a node cycle);
   - databases: a few written here (sun paths among them: instants at one time, out of
     order or off the path's steps, a path with no instant, members after "faces"), a
     polar night's scene, and, with --shadowgen BIN, the database BIN generates
@@ -363,6 +364,97 @@ end_header
     return out
 
 
+def gltf_buffer(*pieces):
+    """One buffer of `pieces` (bytes), each 4-byte aligned; their (offset, length)."""
+    data, spans = b"", []
+    for piece in pieces:
+        data += b"\0" * (-len(data) % 4)
+        spans.append((len(data), len(piece)))
+        data += piece
+    return data, spans
+
+
+def gltf_json(members, data, spans, accessors, uri=None):
+    """A glTF 2.0 document: `members` (scenes, nodes, meshes), one buffer of `data` (with
+    `uri`, or none for a .glb's BIN chunk), a buffer view per span, the accessors."""
+    buffer = {"byteLength": len(data)}
+    if uri is not None:
+        buffer["uri"] = uri
+    document = {"asset": {"version": "2.0"}, **members, "buffers": [buffer],
+                "bufferViews": [{"buffer": 0, "byteOffset": o, "byteLength": n} for o, n in spans],
+                "accessors": accessors}
+    return json.dumps(document)
+
+
+def vec3_accessor(view, count, component=5126, **more):
+    return {"bufferView": view, "componentType": component, "count": count, "type": "VEC3", **more}
+
+
+def gltf_seeds():
+    """glTF models through a scene (docs/gltf.md): a .glb of a ground and a tile placed by a
+    rotated, mirrored node hierarchy; an embedded .gltf of strips, fans, a sparse and a
+    strided accessor; quantized positions; and broken ones (cut short, a node cycle)."""
+    scene = """{"format": "shadowgen-scene/1",
+ "meshes": [{"id": "m", "file": "%s"}],
+ "lights": [{"id": "sun", "type": "directional", "direction": [-0.3, 0.2, -1]},
+            {"id": "lamp", "type": "point", "position": [0.5, 0.5, 3]}]}"""
+    out = {}
+    quad = struct.pack("<6H", 0, 1, 2, 0, 2, 3)
+    ground = struct.pack("<12f", -2, 0, 2, 2, 0, 2, 2, 0, -2, -2, 0, -2)
+    tile = struct.pack("<12f", 0, 0, 0, 1, 0, 0, 1, 0, -1, 0, 0, -1)
+    data, spans = gltf_buffer(ground, tile, quad)
+    accessors = [vec3_accessor(0, 4), vec3_accessor(1, 4),
+                 {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}]
+    house = {"scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
+             "nodes": [{"name": "ground", "mesh": 0},
+                       {"name": "tile", "mesh": 1, "translation": [-1, 1, 1]},
+                       {"name": "frame", "rotation": [0, 0.7071067811865476, 0, 0.7071067811865476],
+                        "children": [3]},
+                       {"name": "tile", "mesh": 1, "translation": [1, 0.5, 0], "scale": [-1, 1, 1]}],
+             "meshes": [{"name": "plane", "primitives": [{"attributes": {"POSITION": 0}, "indices": 2}]},
+                        {"name": "tile", "primitives": [{"attributes": {"POSITION": 1}, "indices": 2}]}]}
+    whole = glb(gltf_json(house, data, spans, accessors), data)
+    out["scene-gltf-glb-house"] = seed(SCENE + GENERATE, scene % "m.glb", ("m.glb", whole))
+    out["scene-gltf-glb-cut-short"] = seed(SCENE, scene % "m.glb", ("m.glb", whole[:len(whole) - 20]))
+
+    strip = struct.pack("<15f", 0, 1, 0, 0, 0, 0, 1, 1, 0, 1, 0, 0, 2, 1, 0)
+    interleaved = struct.pack("<24f", 0, 0, 0, 0, 0, 1, 7, 7, 7, 0, 0, 1, 0, 1, 0, 0, 0, 1,
+                              9, 9, 9, 0, 0, 1)
+    data, spans = gltf_buffer(strip, interleaved, struct.pack("<2H", 1, 0), struct.pack("<3f", 1, 0, 0))
+    spans_json = [{"buffer": 0, "byteOffset": o, "byteLength": n} for o, n in spans]
+    spans_json[1]["byteStride"] = 24
+    accessors = [vec3_accessor(0, 5), vec3_accessor(1, 4, sparse={
+        "count": 1, "indices": {"bufferView": 2, "componentType": 5123}, "values": {"bufferView": 3}})]
+    members = {"scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "matrix": [
+                   0, 0, 2, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0.5, 0.5, 0.5, 1]}],
+               "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 5},
+                                          {"attributes": {"POSITION": 0}, "mode": 6},
+                                          {"attributes": {"POSITION": 1}, "mode": 5}]}]}
+    document = json.loads(gltf_json(members, data, [], accessors,
+                                    "data:application/octet-stream;base64," +
+                                    base64.b64encode(data).decode()))
+    document["bufferViews"] = spans_json
+    out["scene-gltf-embedded-strips"] = seed(SCENE + GENERATE, scene % "m.gltf",
+                                             ("m.gltf", json.dumps(document)))
+
+    data, spans = gltf_buffer(struct.pack("<9H", 0, 0, 0, 65535, 0, 0, 0, 65535, 0))
+    members = {"extensionsUsed": ["KHR_mesh_quantization"],
+               "extensionsRequired": ["KHR_mesh_quantization"],
+               "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "scale": [2, 2, 2]}],
+               "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}]}
+    text = gltf_json(members, data, spans, [vec3_accessor(0, 3, 5123, normalized=True)],
+                     "data:application/gltf-buffer;base64," + base64.b64encode(data).decode())
+    out["scene-gltf-quantized"] = seed(SCENE + GENERATE, scene % "m.gltf", ("m.gltf", text))
+
+    data, spans = gltf_buffer(tile)
+    members = {"scenes": [{"nodes": [0]}], "nodes": [{"children": [1]}, {"children": [0], "mesh": 0}],
+               "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}]}
+    text = gltf_json(members, data, spans, [vec3_accessor(0, 3)],
+                     "data:application/octet-stream;base64," + base64.b64encode(data).decode())
+    out["scene-gltf-node-cycle"] = seed(SCENE, scene % "m.gltf", ("m.gltf", text))
+    return out
+
+
 def sun_path_db(times=("10:00", "11:00", "12:00", "13:00"), order=None, method=False, shard=False):
     """A database of face "g" (4 x 1) and sun path "p" summed into lit areas alone
     (generate --areas-only), its instants p@0, p@1, ... at `times` on 21 March 2026 (none:
@@ -522,14 +614,18 @@ def gltf_text():
     return json.dumps(document)
 
 
-def glb_bytes():
-    document, buffer = gltf_parts()
-    text = json.dumps(document).encode()
-    text += b" " * (-len(text) % 4)
+def glb(text, buffer):
+    """A binary glTF file of JSON `text` and the BIN chunk `buffer`, each padded."""
+    text = text.encode() + b" " * (-len(text) % 4)
     buffer += b"\0" * (-len(buffer) % 4)
     chunks = (struct.pack("<II", len(text), 0x4E4F534A) + text +
               struct.pack("<II", len(buffer), 0x004E4942) + buffer)
     return struct.pack("<III", 0x46546C67, 2, 12 + len(chunks)) + chunks
+
+
+def glb_bytes():
+    document, buffer = gltf_parts()
+    return glb(json.dumps(document), buffer)
 
 
 def model_scene(file, site=""):
@@ -605,6 +701,7 @@ def main():
     wanted = seeds()
     wanted.update(sun_path_seeds())
     wanted.update(model_seeds())
+    wanted.update(gltf_seeds())
     if args.check:
         stale = [n for n, d in wanted.items()
                  if not (CORPUS / n).is_file() or (CORPUS / n).read_bytes() != d]

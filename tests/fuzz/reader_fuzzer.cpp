@@ -1,6 +1,7 @@
 // libFuzzer target for the readers: scene JSON (shadowgen/scene/scene_reader.h), the mesh
-// files a scene references (OBJ, STL, OFF, PLY) and the shadowed database
-// (shadowgen/scene/database_reader.h; written by shadowgen/output/database.h).
+// files a scene references (OBJ, STL, OFF, PLY; glTF models as a scene's attached file)
+// and the shadowed database (shadowgen/scene/database_reader.h; written by
+// shadowgen/output/database.h).
 //
 // Input: byte 0 is a header: kind = header % 6; strict = (header / 6) % 2, the readers'
 // ReadOptions::strict (--strict on the command line); generate = (header / 12) % 2, which
