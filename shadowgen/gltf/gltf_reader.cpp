@@ -147,7 +147,7 @@ void read_primitive(const detail::GltfFile& file, const tinygltf::Primitive& pri
         "shadowgen does not read");
   }
   std::optional<AccessorData> indices;
-  if (primitive.indices >= 0) {
+  if (primitive.indices != -1) {  // tinygltf's "none"; another negative fails as an index
     indices.emplace(model, primitive.indices, "indices", place);
     check_indices(*indices, place);
   }
@@ -197,9 +197,9 @@ SourceModel read_gltf(const std::filesystem::path& file, const SourceOptions&) {
   detail::NodeLabels labels;
   for (const detail::PlacedNode& placed : detail::walk_scene(model, name)) {
     const tinygltf::Node& node = model.nodes[placed.node];
-    if (node.mesh < 0) continue;
+    if (node.mesh == -1) continue;  // tinygltf's "none"
     const std::string subject = detail::node_subject(model, placed.node);
-    if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
+    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
       throw InputError(name, "",
                        subject + " names mesh " + std::to_string(node.mesh) + ", of " +
                            std::to_string(model.meshes.size()));

@@ -139,6 +139,9 @@ AccessorData::AccessorData(const tinygltf::Model& model, int index, std::string_
   if (components == 0) place.fail(label_ + " has an unknown type");
   const std::size_t element_bytes = components * component_bytes_;
 
+  if (accessor.bufferView < -1) {  // -1 is tinygltf's "none"
+    place.fail(label_ + " names buffer view " + std::to_string(accessor.bufferView));
+  }
   if (accessor.bufferView >= 0 && count_ > 0) {
     const int view_index = accessor.bufferView;
     const std::size_t view_stride =

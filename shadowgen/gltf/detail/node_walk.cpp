@@ -65,13 +65,14 @@ std::vector<PlacedNode> walk_scene(const tinygltf::Model& model, const std::stri
     throw InputError(file, "", "has no scene: a glTF file without scenes places no node");
   }
   std::size_t scene = 0;
-  if (model.defaultScene >= 0) {
-    scene = static_cast<std::size_t>(model.defaultScene);
-    if (scene >= model.scenes.size()) {
+  if (model.defaultScene != -1) {  // tinygltf's "none"
+    if (model.defaultScene < 0 ||
+        static_cast<std::size_t>(model.defaultScene) >= model.scenes.size()) {
       throw InputError(file, "",
-                       "'scene' is " + std::to_string(scene) + ", of " +
+                       "'scene' is " + std::to_string(model.defaultScene) + ", of " +
                            std::to_string(model.scenes.size()) + " scenes");
     }
+    scene = static_cast<std::size_t>(model.defaultScene);
   }
   const std::string scene_subject = "scene " + std::to_string(scene);
   std::vector<PlacedNode> placed;

@@ -425,6 +425,25 @@ TEST(GltfReaderErrors, PointsAndLines) {
       "faces: shadowgen reads TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN");
 }
 
+// tinygltf reads an absent index as -1; any other negative one is an index out of range.
+TEST(GltfReaderErrors, NegativeIndices) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  const std::string mesh = R"("meshes": [{"primitives": [{"attributes": {"POSITION": )" +
+                           std::to_string(positions) + "}, \"indices\": -2}]}]";
+  EXPECT_EQ(
+      refusal("negative.gltf",
+              b.gltf_embedded(R"("scenes": [{"nodes": [0]}], "nodes": [{"mesh": -2}], )" + mesh)),
+      "<dir>/negative.gltf: node 0 names mesh -2, of 1");
+  EXPECT_EQ(
+      refusal("negative.gltf",
+              b.gltf_embedded(R"("scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}], )" + mesh)),
+      "<dir>/negative.gltf: node 0, mesh 0, primitive 0: indices names accessor -2, of 1");
+  EXPECT_EQ(refusal("negative.gltf",
+                    b.gltf_embedded(R"("scene": -3, "scenes": [{"nodes": [0]}], "nodes": [{}])")),
+            "<dir>/negative.gltf: 'scene' is -3, of 1 scenes");
+}
+
 TEST(GltfReaderErrors, NodeCycle) {
   GltfBuilder b;
   const int positions = b.positions(kTriangle);
