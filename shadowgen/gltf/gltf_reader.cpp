@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "detail/accessor_data.h"
+#include "detail/feature_warnings.h"
 #include "detail/gltf_file.h"
 #include "detail/node_labels.h"
 #include "detail/node_walk.h"
@@ -119,9 +120,22 @@ struct MeshNode {
   std::size_t faces = 0;  // made so far: the next face's k
 };
 
+// What the reader warns of, a kind at a time.
+struct Warnings {
+  explicit Warnings(const std::string& file)
+      : skins(file, "nodes",
+              "its skin is not applied: the mesh is read unskinned, at the node's transform"),
+        morph_targets(file, "primitives",
+                      "morph targets are not applied: the base positions are read"),
+        no_positions(file, "primitives",
+                     "no POSITION attribute: the primitive draws nothing and is skipped") {}
+
+  detail::FeatureWarnings skins, morph_targets, no_positions;
+};
+
 // Appends the faces of `primitive` as `node` places them.
 void read_primitive(const detail::GltfFile& file, const tinygltf::Primitive& primitive,
-                    const Place& place, MeshNode& node, SourceModel& out) {
+                    const Place& place, MeshNode& node, Warnings& warnings, SourceModel& out) {
   const tinygltf::Model& model = file.model;
   const std::optional<detail::Topology> topology = detail::triangle_topology(primitive.mode);
   if (!topology) {
@@ -130,14 +144,10 @@ void read_primitive(const detail::GltfFile& file, const tinygltf::Primitive& pri
   }
   const auto position = primitive.attributes.find("POSITION");
   if (position == primitive.attributes.end()) {
-    out.warnings.push_back(place.file + ": " + place.subject +
-                           ": no POSITION attribute: the primitive draws nothing and is skipped");
+    warnings.no_positions.add(place.subject);
     return;
   }
-  if (!primitive.targets.empty()) {
-    out.warnings.push_back(place.file + ": " + place.subject +
-                           ": morph targets are not applied: the base positions are read");
-  }
+  if (!primitive.targets.empty()) warnings.morph_targets.add(place.subject);
   const AccessorData positions(model, position->second, "POSITION", place);
   check_positions(positions, file.quantized_positions, place);
   if (primitive.extensions.contains("KHR_draco_mesh_compression") &&
@@ -195,6 +205,7 @@ SourceModel read_gltf(const std::filesystem::path& file, const SourceOptions&) {
   const detail::GltfFile loaded = detail::load_gltf_file(file, out.warnings);
   const tinygltf::Model& model = loaded.model;
   detail::NodeLabels labels;
+  Warnings warnings(name);
   for (const detail::PlacedNode& placed : detail::walk_scene(model, name)) {
     const tinygltf::Node& node = model.nodes[placed.node];
     if (node.mesh == -1) continue;  // tinygltf's "none"
@@ -207,21 +218,21 @@ SourceModel read_gltf(const std::filesystem::path& file, const SourceOptions&) {
     const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
     MeshNode mesh_node{Placement(placed.world), labels.take(model, placed.node, name), subject,
                        FaceOrigin{"gltf", detail::node_name(model, placed.node), mesh.name, ""}};
-    if (node.skin >= 0) {
-      out.warnings.push_back(name + ": " + subject +
-                             ": its skin is not applied: the mesh is read unskinned, at the "
-                             "node's transform");
-    }
+    if (node.skin >= 0) warnings.skins.add(subject);
     const std::string mesh_subject =
         mesh.name.empty() ? "mesh " + std::to_string(node.mesh)
                           : "mesh '" + mesh.name + "' (" + std::to_string(node.mesh) + ")";
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
       const Place place{name, subject + ", " + mesh_subject + ", primitive " + std::to_string(p)};
-      read_primitive(loaded, mesh.primitives[p], place, mesh_node, out);
+      read_primitive(loaded, mesh.primitives[p], place, mesh_node, warnings, out);
     }
   }
   if (out.faces.empty()) {
     throw InputError(name, "", "places no triangle: no node of its scene has a mesh with one");
+  }
+  for (const detail::FeatureWarnings* kind :
+       {&warnings.skins, &warnings.morph_targets, &warnings.no_positions}) {
+    kind->append_to(out.warnings);
   }
   return out;
 }

@@ -299,6 +299,24 @@ TEST(GltfReader, MorphTargetsAndSkinsAreIgnoredWithAWarning) {
                                    "applied: the base positions are read");
 }
 
+// More than three primitives without positions: one line, how many and the first three.
+TEST(GltfReader, AKindOfWarningOfManyIsOneLine) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  const std::string empty = R"({"attributes": {"NORMAL": )" + std::to_string(positions) + "}}";
+  const SourceModel model =
+      read("many.gltf", b.gltf_embedded(R"("scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": )" +
+                                        std::to_string(positions) + "}}, " + empty + ", " + empty +
+                                        ", " + empty + ", " + empty + "]}]"));
+  ASSERT_EQ(model.faces.size(), 1u);
+  ASSERT_EQ(model.warnings.size(), 1u);
+  EXPECT_EQ(model.warnings[0], (folder().path() / "many.gltf").string() +
+                                   ": 4 primitives: no POSITION attribute: the primitive draws "
+                                   "nothing and is skipped: node 0, mesh 0, primitive 1; node 0, "
+                                   "mesh 0, primitive 2; node 0, mesh 0, primitive 3; ...");
+}
+
 // Images serve materials only: a missing image file, a folder or a device named as one,
 // and an image in a buffer view that is no picture are not read, and draw no word.
 TEST(GltfReader, ImagesAreNeverRead) {
