@@ -341,6 +341,28 @@ TEST(GltfReaderErrors, MissingBufferFile) {
             "<dir>/lost.gltf: buffers[0]: file <dir>/lost.bin: no such file");
 }
 
+// tinygltf looks for a buffer file in the working folder when it is not next to the glTF
+// file; shadowgen looks next to the glTF file only.
+TEST(GltfReaderErrors, BufferFileOnlyNextToTheGltfFile) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  folder().write("stray.bin", b.buffer());
+  fs::create_directories(folder().path() / "sub");
+  const fs::path gltf =
+      folder().write("sub/stray.gltf", b.gltf_external(one_node("", positions), "stray.bin"));
+  const fs::path before = fs::current_path();
+  fs::current_path(folder().path());
+  std::string message;
+  try {
+    gltf::read_gltf(gltf, {});
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  fs::current_path(before);
+  EXPECT_EQ(message, gltf.string() + ": buffers[0]: file " +
+                         (folder().path() / "sub" / "stray.bin").string() + ": no such file");
+}
+
 TEST(GltfReaderErrors, BufferFileOfAnotherSize) {
   GltfBuilder b;
   const int positions = b.positions(kTriangle);
