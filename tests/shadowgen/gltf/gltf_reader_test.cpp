@@ -512,6 +512,13 @@ TEST(GltfReaderErrors, NotGltfTwoJson) {
               "\"uri\": \"data:application/octet-stream;base64," + test::base64(b.buffer()) +
                   "\"")),
       "<dir>/noscene.gltf: has no scene: a glTF file without scenes places no node");
+  // glTF allows an integer written 3.0; tinygltf, and so shadowgen, reads JSON integers only.
+  std::string fraction = b.gltf_embedded(one_node("", positions));
+  const std::string count = "\"count\": 3,";
+  fraction.replace(fraction.find(count), count.size(), "\"count\": 3.0,");
+  EXPECT_EQ(refusal("fraction.gltf", fraction),
+            "<dir>/fraction.gltf: not a readable glTF file: 'count' property is not a positive "
+            "integer.");
 }
 
 TEST(GltfReaderErrors, ZerosWithoutEnd) {
