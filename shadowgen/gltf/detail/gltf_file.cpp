@@ -90,9 +90,15 @@ JsonFacts check_json(std::string_view json, const std::string& file,
     for (std::size_t i = 0; i < list.size(); ++i) {
       JsonObject buffer = list.at(i).object();
       if (std::optional<JsonValue> uri = buffer.find("uri")) {
-        if (!uri->string().starts_with("data:")) {
-          facts.buffer_files.push_back({i, buffer.get("byteLength").index()});
+        const std::string text = uri->string();
+        if (tinygltf::IsDataURI(text)) continue;
+        // tinygltf would take any other data: URI for a file's name.
+        if (text.starts_with("data:")) {
+          uri->fail(
+              "a data: URI of a buffer is base64, of media type application/octet-stream or "
+              "application/gltf-buffer (the specification's), which this one is not");
         }
+        facts.buffer_files.push_back({i, buffer.get("byteLength").index()});
       }
     }
   }

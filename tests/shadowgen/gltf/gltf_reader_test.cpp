@@ -363,6 +363,16 @@ TEST(GltfReaderErrors, BufferFileOnlyNextToTheGltfFile) {
                          (folder().path() / "sub" / "stray.bin").string() + ": no such file");
 }
 
+TEST(GltfReaderErrors, DataUriOfAnotherKind) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  EXPECT_EQ(refusal("datauri.gltf",
+                    b.json(one_node("", positions), R"("uri": "data:model/unknown,AAAA")")),
+            "<dir>/datauri.gltf: buffers[0].uri: a data: URI of a buffer is base64, of media type "
+            "application/octet-stream or application/gltf-buffer (the specification's), which "
+            "this one is not");
+}
+
 TEST(GltfReaderErrors, BufferFileOfAnotherSize) {
   GltfBuilder b;
   const int positions = b.positions(kTriangle);
