@@ -452,6 +452,35 @@ def gltf_seeds():
     text = gltf_json(members, data, spans, [vec3_accessor(0, 3)],
                      "data:application/octet-stream;base64," + base64.b64encode(data).decode())
     out["scene-gltf-node-cycle"] = seed(SCENE, scene % "m.gltf", ("m.gltf", text))
+
+    # What the reader passes over: a skin, an animation, morph targets, a camera, a light,
+    # a material with a texture whose image lies in a buffer view (not a picture).
+    data, spans = gltf_buffer(struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0), b"\x89PNG junk",
+                              struct.pack("<2f", 0, 1), struct.pack("<8f", 0, 0, 0, 1, 0, 0.7071, 0, 0.7071),
+                              struct.pack("<16f", 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1))
+    members = {
+        "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_unlit"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point"}]}},
+        "scene": 0, "scenes": [{"nodes": [0, 2]}],
+        "nodes": [{"name": "body", "mesh": 0, "skin": 0, "children": [1]},
+                  {"name": "joint", "rotation": [0, 0, 0, 1]},
+                  {"name": "eye", "camera": 0, "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}],
+        "skins": [{"joints": [1], "inverseBindMatrices": 3}],
+        "animations": [{"channels": [{"sampler": 0, "target": {"node": 1, "path": "rotation"}}],
+                        "samplers": [{"input": 1, "output": 2}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}},
+                       "extensions": {"KHR_materials_unlit": {}}}],
+        "textures": [{"source": 0}],
+        "images": [{"bufferView": 1, "mimeType": "image/png"}, {"uri": "missing.png"}],
+        "meshes": [{"name": "m", "weights": [0.5], "primitives": [
+            {"attributes": {"POSITION": 0}, "material": 0, "targets": [{"POSITION": 0}]}]}]}
+    accessors = [vec3_accessor(0, 3),
+                 {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR"},
+                 {"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC4"},
+                 {"bufferView": 4, "componentType": 5126, "count": 1, "type": "MAT4"}]
+    out["scene-gltf-glb-passed-over"] = seed(
+        SCENE + GENERATE, scene % "m.glb", ("m.glb", glb(gltf_json(members, data, spans, accessors), data)))
     return out
 
 
