@@ -148,14 +148,17 @@ void read_primitive(const detail::GltfFile& file, const tinygltf::Primitive& pri
     return;
   }
   if (!primitive.targets.empty()) warnings.morph_targets.add(place.subject);
-  const AccessorData positions(model, position->second, "POSITION", place);
-  check_positions(positions, file.quantized_positions, place);
+  // A Draco primitive's accessors have no buffer view but where the file gives an
+  // uncompressed fallback (KHR_draco_mesh_compression).
+  const auto position_index = static_cast<std::size_t>(position->second);
   if (primitive.extensions.contains("KHR_draco_mesh_compression") &&
-      model.accessors[static_cast<std::size_t>(position->second)].bufferView < 0) {
+      position_index < model.accessors.size() && model.accessors[position_index].bufferView < 0) {
     place.fail(
         "its positions are Draco-compressed (KHR_draco_mesh_compression), which "
         "shadowgen does not read");
   }
+  const AccessorData positions(model, position->second, "POSITION", place);
+  check_positions(positions, file.quantized_positions, place);
   std::optional<AccessorData> indices;
   if (primitive.indices != -1) {  // tinygltf's "none"; another negative fails as an index
     indices.emplace(model, primitive.indices, "indices", place);

@@ -463,6 +463,26 @@ TEST(GltfReaderErrors, RequiredCompression) {
       "not read");
 }
 
+// Draco used but not required: a primitive with an uncompressed fallback is read from it;
+// one without (its positions' accessor has no buffer view) is refused.
+TEST(GltfReaderErrors, DracoPrimitiveWithoutFallback) {
+  GltfBuilder b;
+  const int positions = b.positions(kTriangle);
+  const int compressed = b.accessor(-1, R"("componentType": 5126, "count": 3, "type": "VEC3")");
+  const std::string draco =
+      R"("extensions": {"KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}})";
+  auto file = [&](int accessor) {
+    return b.gltf_embedded(R"("extensionsUsed": ["KHR_draco_mesh_compression"],
+      "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": )" +
+                           std::to_string(accessor) + "}, " + draco + "}]}]");
+  };
+  EXPECT_EQ(read("fallback.gltf", file(positions)).faces.size(), 1u);
+  EXPECT_EQ(refusal("draco.gltf", file(compressed)),
+            "<dir>/draco.gltf: node 0, mesh 0, primitive 0: its positions are Draco-compressed "
+            "(KHR_draco_mesh_compression), which shadowgen does not read");
+}
+
 TEST(GltfReaderErrors, PointsAndLines) {
   GltfBuilder b;
   const int positions = b.positions(kTriangle);
