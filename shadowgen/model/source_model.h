@@ -50,6 +50,9 @@ struct FaceOrigin {
 // One face of a source model.
 struct SourceFace {
   // The face's id inside its scene entry: the scene's face id is "<entry id>/<id>".
+  // Unique within the model: each room's rules make ids unique, and it refuses, naming
+  // both, a model whose faces those rules would give one id (the scene reader does not
+  // look again: a model may hold millions of faces).
   std::string id;
   // The face's loops in scene coordinates as the source places them; holes as the
   // source (or its openings) gives them. The scene reader validates and orients them.

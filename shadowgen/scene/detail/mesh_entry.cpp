@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 #include <utility>
 
 #include "detail/face_builder.h"
@@ -149,16 +148,10 @@ void add_source_faces(SourceModel& model, const std::string& id,
     throw InputError(file, "", "model '" + id + "' has no faces");
   }
   const std::optional<double> stretch = stretch_of(transform);
-  std::unordered_map<std::string, const SourceFace*> seen;
   WarningSummary summary(file, "faces of model '" + id + "'");
   std::vector<std::string> face_warnings;
   for (SourceFace& source : model.faces) {
     const std::string face_id = id + "/" + source.id;
-    if (const auto [at, fresh] = seen.emplace(source.id, &source); !fresh) {
-      throw InputError(file, face_id,
-                       source.described + " has the id of " + at->second->described +
-                           ": face ids must be unique");
-    }
     hsr::Polygon3 polygon = std::move(source.polygon);
     if (transform) {
       polygon.outer = placed_loop(polygon.outer, *transform, file, face_id);
