@@ -18,6 +18,7 @@
 #include "shadowgen/model/view_limits.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/view/camera.h"
+#include "shadowgen/view/picture_raster.h"
 #include "shadowgen/view/pixel_shadows.h"
 #include "shadowgen/view/png_writer.h"
 #include "shadowgen/view/raster_render.h"
@@ -36,7 +37,9 @@ constexpr CommandText kRenderText{
     "--by-light, each visible face in shadow with one layer per light over it, what that "
     "light reaches in its share of the shading, which a browser adds up (it grows linearly "
     "with the lights where light sets do not); or, with --sun-hours, split by a sun path's "
-    "sun hours, coloured by band, with a legend. Reads "
+    "sun hours, coloured by band, with a legend (as SVG, PNG or both). Pieces of one colour are "
+    "one path where they touch; faces or model objects are outlined; a north arrow (where the "
+    "database has a site) and, in orthographic views, a scale bar mark the map. Reads "
     "only the database; no shadows are recomputed. A PNG picture (-o FILE.png) is the lit picture "
     "drawn pixel by pixel, instead or as well, its shadows found by --shadows: the database's "
     "(exact), shadow maps "
@@ -64,6 +67,7 @@ struct RenderArgs {
   std::vector<std::string> lights;   // --lights: only these are drawn
   SunHoursArgs sun_hours;            // --sun-hours: a sun-hours map of that path instead
   bool by_light = false;             // --by-light: the SVG in layers by light
+  bool pieces = false;               // --pieces: one SVG path per piece, not per colour
   bool quiet = false;                // --quiet: no reading warnings, no progress line
   const CLI::App* parser = nullptr;  // the subcommand, whose options say what was given
 };
@@ -171,10 +175,20 @@ RenderArgs with_outputs(const RenderArgs& given) {
   if (args.by_light && args.svg.empty()) {
     throw UsageError("--by-light draws the SVG picture in layers: it needs -o FILE.svg (or --svg)");
   }
-  // A sun-hours map is drawn as SVG only.
-  if (!args.sun_hours.path.empty() && !args.png.empty()) {
-    throw UsageError("--sun-hours draws an SVG map only, not the PNG picture " + args.png_option +
-                     " " + args.png);
+  if (args.pieces && args.svg.empty()) {
+    throw UsageError(
+        "--pieces draws the SVG picture one path per piece: it needs -o FILE.svg (or "
+        "--svg)");
+  }
+  // A sun-hours map's pixels are its pieces' (picture_raster.h): no view method.
+  if (!args.sun_hours.path.empty()) {
+    for (const char* option : {"--shadows", "--resolution"}) {
+      if (args.parser->get_option(option)->count() > 0) {
+        throw UsageError(std::string(option) +
+                         " applies only to the lit picture: a sun-hours map's pixels are its "
+                         "pieces'");
+      }
+    }
   }
   return args;
 }
@@ -209,17 +223,23 @@ void run_render(const RenderArgs& given) {
   options.height = args.height;
   std::string svg, png;
   try {
-    if (!args.svg.empty()) {
-      progress.stage("drawing " + args.svg);
-      const Picture picture =
-          map             ? render_sun_hours(shadowed, *map->path, map->bands, camera, options)
-          : args.by_light ? render_by_light(shadowed, camera, options)
-                          : render(shadowed, camera, options);
-      svg = svg_document(picture);
-    }
-    if (!args.png.empty()) {
-      progress.stage("drawing " + args.png);
-      png = png_picture(args, shadowed, camera, options);
+    if (map) {
+      // One map, as SVG and as its pixels (picture_raster.h).
+      progress.stage("drawing the sun-hours map");
+      const Picture picture = render_sun_hours(shadowed, *map->path, map->bands, camera, options);
+      if (!args.svg.empty()) svg = svg_document(picture, {.pieces = args.pieces});
+      if (!args.png.empty()) png = png_bytes(rasterize_picture(picture));
+    } else {
+      if (!args.svg.empty()) {
+        progress.stage("drawing " + args.svg);
+        const Picture picture = args.by_light ? render_by_light(shadowed, camera, options)
+                                              : render(shadowed, camera, options);
+        svg = svg_document(picture, {.pieces = args.pieces});
+      }
+      if (!args.png.empty()) {
+        progress.stage("drawing " + args.png);
+        png = png_picture(args, shadowed, camera, options);
+      }
     }
   } catch (const std::invalid_argument& e) {
     // A camera the database's view or the arguments describe badly (eye == target): the
@@ -321,6 +341,10 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
                 "it (what the light reaches, in its share of the shading), instead of the faces "
                 "split by light sets")
       ->excludes(sun_hours);
+  command.add_flag("--pieces", args.pieces,
+                   "with an SVG picture: one path per piece, with its face id (data-face) and its "
+                   "light set or hours, instead of one path per colour (the faces then named by "
+                   "the outlines)");
 }
 
 }  // namespace

@@ -230,6 +230,15 @@ void write_view(JsonWriter& out, const ViewSpec& view) {
   out.key("fov_deg").value(view.fov_deg).end_object();
 }
 
+// The scene's site (docs/scene-format.md, "The site"), every key, so that a picture of the
+// database can show north and a model of it where it lies.
+void write_site(JsonWriter& out, const Site& site) {
+  out.key("site").begin_object().key("latitude_deg").value(site.latitude_deg);
+  out.key("longitude_deg").value(site.longitude_deg).key("elevation_m").value(site.elevation_m);
+  out.key("utc_offset_h").value(site.utc_offset_h);
+  out.key("north_axis_deg").value(site.north_axis_deg).end_object();
+}
+
 void write_lit_polygons(JsonWriter& out, std::span<const LitPolygon> lit, bool with_part) {
   out.begin_array(Layout::kLines);
   for (const LitPolygon& p : lit) {
@@ -356,6 +365,7 @@ void write_database_to(const ShadowedScene& shadowed, JsonWriter& out) {
     out.key("count").value(std::uint64_t{shadowed.shard->count}).end_object();
   }
   if (!shadowed.method.exact()) detail::write_method(out, shadowed.method);
+  if (scene.site) write_site(out, *scene.site);
   out.key("lights").begin_array(Layout::kLines);
   for (const Light& light : scene.lights) write_light(out, light);
   out.end_array();

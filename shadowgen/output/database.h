@@ -8,6 +8,9 @@
 //
 //   {
 //     "format": "shadowgen-shadowed/1",
+//     "site": {"latitude_deg":51.48,"longitude_deg":0.0,     only where the scene has a
+//              "elevation_m":45.0,"utc_offset_h":0.0,        site: every key, as the
+//              "north_axis_deg":0.0},                        scene's "site" has them
 //     "lights": [                               scene order, ids unique
 //       {"id":"sun","type":"directional","direction":[x,y,z],"intensity":[r,g,b]},
 //       {"id":"lamp","type":"point","position":[x,y,z],"intensity":[r,g,b],

@@ -17,6 +17,7 @@
 #include "detail/face_builder.h"
 #include "detail/json_entities.h"
 #include "detail/lit_checks.h"
+#include "detail/site_entry.h"
 #include "hsr/area.h"
 #include "hsr/collinearity.h"
 #include "hsr/parallel.h"
@@ -145,8 +146,8 @@ class DatabaseParser {
   }
 
   // The members read before the faces, in this order: which of them the root has.
-  static constexpr const char* kHeader[] = {"format", "shard", "method",
-                                            "lights", "views", "sun_paths"};
+  static constexpr const char* kHeader[] = {"format", "shard",     "method", "lights",
+                                            "views",  "sun_paths", "site"};
   static constexpr std::size_t kFormat = 0, kLights = 3, kViews = 4;  // required ones in it
   static std::vector<bool> header_present(const JsonValue& root) {
     std::vector<bool> present;
@@ -171,6 +172,9 @@ class DatabaseParser {
       if (shadowed.shard && !shadowed.method.exact()) {
         method->fail("a shard is made by the exact method only");
       }
+    }
+    if (const std::optional<JsonValue> site = top.find("site")) {
+      shadowed.scene.site = read_site(*site);
     }
     const JsonArray lights = top.get("lights").array();
     detail::IdRegistry light_ids;
@@ -277,6 +281,19 @@ class DatabaseParser {
     }
     if (seconds[1] < seconds[0]) entry.get("to").fail("must not be before 'from'");
     return {seconds[0], seconds[1]};
+  }
+
+  // "site": the scene's keys in their ranges (detail/site_entry.h), latitude, longitude
+  // and the offset required, elevation and north axis 0 where left out.
+  static Site read_site(const JsonValue& value) {
+    const SourceSite keys = detail::read_site_keys(value);
+    const char* missing = !keys.latitude_deg    ? "latitude_deg"
+                          : !keys.longitude_deg ? "longitude_deg"
+                          : !keys.utc_offset_h  ? "utc_offset_h"
+                                                : nullptr;
+    if (missing != nullptr) value.fail(std::string("missing '") + missing + "'");
+    return {*keys.latitude_deg, *keys.longitude_deg, keys.elevation_m.value_or(0.0),
+            *keys.utc_offset_h, keys.north_axis_deg.value_or(0.0)};
   }
 
   // "sun_paths": each path's instants are the lights whose "sun" names it, in order: each

@@ -103,15 +103,40 @@ struct Piece {
   std::optional<double> sun_hours;
   // Layers by light (render_by_light): 0 the base in shadow, 1 + L the layer of light L.
   std::size_t layer = 0;
+  // Sun-hours maps: the label of the band the hours lie in ("2–4 h"); empty otherwise.
+  std::string band;
 };
 
-// A legend beside the picture, for sun-hours maps: caption lines, then one swatch per
-// entry, from the least hours to the most.
+// The visible outline of one face, or of one object of a model file: the union of the
+// face's (or the object's faces') base pieces, drawn thin and dark over the fills so that
+// buildings can be told apart from gardens (outlines.h).
+struct Outline {
+  std::string face_id;         // the face's id, or empty for an object's outline
+  std::string object;          // the origin's object (FaceOrigin::object), or empty for a face
+  clipper::PolygonSet2 shape;  // pixels
+};
+
+// Where the picture's marks go (map_marks.h): true north as seen in the picture, a scale
+// bar in orthographic views.
+struct NorthArrow {
+  double angle_deg = 0.0;  // clockwise from the picture's up to true north, in [0, 360)
+};
+struct ScaleBar {
+  double length = 0.0;  // scene units: 1, 2 or 5 × 10^k
+  double pixels = 0.0;  // length × pixels_per_unit
+  std::string label;    // "10 m", or "10 units" where the scene gives no unit
+};
+
+// A legend beside the picture: caption lines, then one swatch per entry; a sun-hours map's
+// from the least hours to the most, a light-set picture's light sets in the order of
+// light_set_name's sets (shadow first), each in the colour covering most of the picture
+// among its pieces (shading differs from face to face with each face's angle to the lights).
 struct LegendEntry {
   Rgb colour;
   std::string label;
 };
 struct Legend {
+  std::string kind;  // "sun-hours" or "light-sets": the SVG's data-legend
   std::vector<std::string> caption;
   std::vector<LegendEntry> entries;
 };
@@ -132,8 +157,11 @@ struct Picture {
   Rgb background;
   std::vector<Piece> pieces;
   RenderStats stats;
-  Legend legend;         // no entries but in a sun-hours map
-  bool layered = false;  // layers by light: the base's pieces, then each layer's
+  Legend legend;                      // no entries in layers by light
+  bool layered = false;               // layers by light: the base's pieces, then each layer's
+  std::vector<Outline> outlines;      // each visible face's, or each visible object's
+  std::optional<NorthArrow> north;    // where the database has a site and north shows
+  std::optional<ScaleBar> scale_bar;  // orthographic views
 };
 
 // Throws std::invalid_argument for a bad camera or size (see CameraView) and when `lit`

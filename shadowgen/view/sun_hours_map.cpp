@@ -41,7 +41,9 @@ class SunHoursTiling : public detail::FaceTiling {
     piece.face_id = shadowed_.scene.faces[piece.face].id;
     const double hours = region == detail::kNoRegion ? 0.0 : (*regions_)[region].hours;
     piece.sun_hours = hours;
-    piece.colour = rgb(bands_.bands[bands_.band_of(hours)].colour);
+    const HourBand& band = bands_.bands[bands_.band_of(hours)];
+    piece.colour = rgb(band.colour);
+    piece.band = band.label;
   }
 
  private:
@@ -63,6 +65,7 @@ Picture render_sun_hours(const ShadowedScene& shadowed, const SunPathHours& path
   }
   SunHoursTiling tiling(shadowed, path, bands);
   Picture picture = detail::paint_picture(shadowed.scene, camera, options, tiling);
+  picture.legend.kind = "sun-hours";
   picture.legend.caption = bands.caption();
   for (const HourBand& band : bands.bands) {
     picture.legend.entries.push_back({rgb(band.colour), band.label});

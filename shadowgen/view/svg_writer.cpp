@@ -4,31 +4,28 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <string_view>
+#include <vector>
 
+#include "detail/colour_hex.h"
 #include "detail/xml_text.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/output/atomic_file.h"
+#include "shadowgen/view/colour_paths.h"
 
 namespace shadowgen {
 namespace {
 
-void append_colour(std::string& out, const Rgb& colour) {
-  constexpr std::string_view kHex = "0123456789abcdef";
-  out += '#';
-  for (const double v : {colour.r, colour.g, colour.b}) {
-    const double clamped = std::isfinite(v) ? std::fmin(std::fmax(v, 0.0), 1.0) : 0.0;
-    const auto byte = static_cast<unsigned>(std::lround(255.0 * clamped));
-    out += kHex[byte >> 4];
-    out += kHex[byte & 15];
-  }
-}
+using detail::append_colour;
 
 void append_attribute_value(std::string& out, std::string_view text) {
   out += '"';
   detail::append_xml_text(out, text);
   out += '"';
 }
+
+void append_number(std::string& out, double value) { append_shortest(out, value); }
 
 void append_loop(std::string& out, const clipper::Loop2& loop) {
   for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -49,6 +46,19 @@ constexpr int kSwatchWidth = 28;
 constexpr int kSwatchHeight = 16;
 constexpr int kFontSize = 12;
 
+// The base layer's paths are stroked this wide in their own colour (append_colour_paths).
+constexpr std::string_view kSeamStroke = "1";
+// Outlines: thin and dark.
+constexpr std::string_view kOutlineColour = "#262626";
+constexpr std::string_view kOutlineWidth = "0.75";
+// The marks: a north arrow in the top right corner, a scale bar in the bottom left.
+constexpr int kMarkMargin = 16;
+constexpr double kArrowLength = 28.0;
+constexpr int kBarHeight = 6;
+constexpr std::string_view kMarkText =
+    "font-family=\"sans-serif\" font-size=\"12\" fill=\"#000000\" stroke=\"#ffffff\" "
+    "stroke-width=\"3\" paint-order=\"stroke\"";
+
 int legend_height(const Legend& legend) {
   return 2 * kLegendMargin + static_cast<int>(legend.caption.size()) * kCaptionLine +
          static_cast<int>(legend.entries.size()) * kEntryLine;
@@ -64,7 +74,9 @@ void append_text(std::string& out, int x, int y, std::string_view text) {
 void append_legend(std::string& out, const Legend& legend, int left) {
   const int x = left + kLegendMargin;
   out += "<g font-family=\"sans-serif\" font-size=\"" + std::to_string(kFontSize) +
-         "\" fill=\"#000000\" data-legend=\"sun-hours\">\n";
+         "\" fill=\"#000000\" data-legend=";
+  append_attribute_value(out, legend.kind);
+  out += ">\n";
   int y = kLegendMargin;
   for (const std::string& line : legend.caption) {
     append_text(out, x, y + kFontSize, line);
@@ -82,9 +94,164 @@ void append_legend(std::string& out, const Legend& legend, int left) {
   out += "</g>\n";
 }
 
+void append_path_data(std::string& out, const clipper::PolygonWithHoles2& shape) {
+  append_loop(out, shape.outer);
+  for (const clipper::Loop2& hole : shape.holes) append_loop(out, hole);
+}
+
+// Opens the group of layer `layer` where it differs from the one open, closing that.
+void switch_layer(std::string& out, std::size_t& open_layer, std::size_t layer,
+                  std::string_view light) {
+  if (layer == open_layer) return;
+  if (open_layer != 0) out += "</g>\n";
+  open_layer = layer;
+  if (layer == 0) return;
+  out += "<g style=\"mix-blend-mode:plus-lighter\" data-light=";
+  append_attribute_value(out, light);
+  out += ">\n";
+}
+
+// One path per piece, with its face, its light set or hours, its side.
+void append_pieces(std::string& out, const std::vector<Piece>& pieces) {
+  std::size_t open_layer = 0;
+  for (const Piece& piece : pieces) {
+    switch_layer(out, open_layer, piece.layer, piece.light_set);
+    out += "<path d=\"";
+    append_path_data(out, piece.shape);
+    out += "\" fill=\"";
+    append_colour(out, piece.colour);
+    out += "\" fill-rule=\"evenodd\" data-face=";
+    append_attribute_value(out, piece.face_id);
+    if (piece.sun_hours) {
+      out += " data-hours=\"";
+      append_number(out, *piece.sun_hours);
+      out += '"';
+    } else {
+      out += " data-lights=";
+      append_attribute_value(out, piece.light_set);
+    }
+    if (piece.back_side) out += " data-side=\"back\"";
+    out += "/>\n";
+  }
+  if (open_layer != 0) out += "</g>\n";
+}
+
+// One path per colour. The base layer's paths are stroked in their own colour, a pixel
+// wide (half a pixel beyond their edges), so that where two colours meet each covers
+// the boundary pixels whole and no background shows through their antialiased edges;
+// the layers, which a viewer adds up, are not (a stroke would be added twice).
+void append_colour_paths(std::string& out, const std::vector<ColourPath>& paths) {
+  std::size_t open_layer = 0;
+  for (const ColourPath& path : paths) {
+    switch_layer(out, open_layer, path.layer, path.light_set);
+    out += "<path d=\"";
+    for (const clipper::PolygonWithHoles2& polygon : path.shape) append_path_data(out, polygon);
+    out += "\" fill=\"";
+    append_colour(out, path.colour);
+    out += '"';
+    if (path.layer == 0) {
+      out += " stroke=\"";
+      append_colour(out, path.colour);
+      out += "\" stroke-width=\"" + std::string(kSeamStroke) + "\" stroke-linejoin=\"round\"";
+    }
+    out += " fill-rule=\"evenodd\"";
+    if (!path.band.empty()) {
+      out += " data-band=";
+      append_attribute_value(out, path.band);
+    } else {
+      out += " data-lights=";
+      append_attribute_value(out, path.light_set);
+    }
+    if (path.back_side) out += " data-side=\"back\"";
+    out += "/>\n";
+  }
+  if (open_layer != 0) out += "</g>\n";
+}
+
+void append_outlines(std::string& out, const std::vector<Outline>& outlines) {
+  if (outlines.empty()) return;
+  out += "<g fill=\"none\" stroke=\"" + std::string(kOutlineColour) + "\" stroke-width=\"" +
+         std::string(kOutlineWidth) + "\" stroke-linejoin=\"round\" data-outlines=\"\">\n";
+  for (const Outline& outline : outlines) {
+    if (outline.shape.empty()) continue;
+    out += "<path d=\"";
+    for (const clipper::PolygonWithHoles2& polygon : outline.shape) {
+      append_path_data(out, polygon);
+    }
+    out += '"';
+    if (outline.object.empty()) {
+      out += " data-face=";
+      append_attribute_value(out, outline.face_id);
+    } else {
+      out += " data-object=";
+      append_attribute_value(out, outline.object);
+    }
+    out += "/>\n";
+  }
+  out += "</g>\n";
+}
+
+// An arrow in the picture's top right corner, drawn pointing up and turned by the
+// north's angle about its centre, and an N beyond its tip.
+void append_north_arrow(std::string& out, const NorthArrow& north, int width) {
+  const double cx = width - kMarkMargin - kArrowLength / 2.0;
+  const double cy = kMarkMargin + kArrowLength / 2.0 + kFontSize;
+  const double half = kArrowLength / 2.0;
+  out += "<g data-north-arrow=\"";
+  append_number(out, north.angle_deg);
+  out += "\">\n<path d=\"M";
+  append_number(out, cx);
+  out += ',';
+  append_number(out, cy - half);
+  out += " L";
+  append_number(out, cx + 0.4 * half);
+  out += ',';
+  append_number(out, cy + half);
+  out += " L";
+  append_number(out, cx);
+  out += ',';
+  append_number(out, cy + 0.5 * half);
+  out += " L";
+  append_number(out, cx - 0.4 * half);
+  out += ',';
+  append_number(out, cy + half);
+  out += " Z\" fill=\"#000000\" stroke=\"#ffffff\" stroke-width=\"1\" transform=\"rotate(";
+  append_number(out, north.angle_deg);
+  out += ' ';
+  append_number(out, cx);
+  out += ' ';
+  append_number(out, cy);
+  out += ")\"/>\n";
+  const double turn = north.angle_deg * std::numbers::pi / 180.0;
+  const double reach = half + kFontSize;
+  out += "<text x=\"";
+  append_number(out, std::round(10.0 * (cx + reach * std::sin(turn))) / 10.0);
+  out += "\" y=\"";
+  append_number(out, std::round(10.0 * (cy - reach * std::cos(turn) + kFontSize / 2.5)) / 10.0);
+  out += "\" " + std::string(kMarkText) + " text-anchor=\"middle\">N</text>\n</g>\n";
+}
+
+// A bar in the picture's bottom left corner, its length written above it.
+void append_scale_bar(std::string& out, const ScaleBar& bar, int height) {
+  const int x = kMarkMargin;
+  const int y = height - kMarkMargin - kBarHeight;
+  out += "<g data-scale-bar=\"";
+  append_number(out, bar.length);
+  out += "\" data-pixels=\"";
+  append_number(out, bar.pixels);
+  out += "\">\n<rect x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(y) + "\" width=\"";
+  append_number(out, bar.pixels);
+  out += "\" height=\"" + std::to_string(kBarHeight) +
+         "\" fill=\"#000000\" stroke=\"#ffffff\" stroke-width=\"1\"/>\n";
+  out += "<text x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(y - 4) + "\" " +
+         std::string(kMarkText) + ">";
+  detail::append_xml_text(out, bar.label);
+  out += "</text>\n</g>\n";
+}
+
 }  // namespace
 
-std::string svg_document(const Picture& picture) {
+std::string svg_document(const Picture& picture, const SvgOptions& options) {
   const bool legend = !picture.legend.entries.empty();
   const int width = picture.width + (legend ? kLegendWidth : 0);
   const int height =
@@ -111,41 +278,22 @@ std::string svg_document(const Picture& picture) {
   out += "\" fill=\"";
   append_colour(out, picture.background);
   out += "\"/>\n";
-  std::size_t open_layer = 0;
-  for (const Piece& piece : picture.pieces) {
-    if (piece.layer != open_layer) {
-      if (open_layer != 0) out += "</g>\n";
-      open_layer = piece.layer;
-      out += "<g style=\"mix-blend-mode:plus-lighter\" data-light=";
-      append_attribute_value(out, piece.light_set);
-      out += ">\n";
-    }
-    out += "<path d=\"";
-    append_loop(out, piece.shape.outer);
-    for (const clipper::Loop2& hole : piece.shape.holes) append_loop(out, hole);
-    out += "\" fill=\"";
-    append_colour(out, piece.colour);
-    out += "\" fill-rule=\"evenodd\" data-face=";
-    append_attribute_value(out, piece.face_id);
-    if (piece.sun_hours) {
-      out += " data-hours=\"";
-      append_shortest(out, *piece.sun_hours);
-      out += '"';
-    } else {
-      out += " data-lights=";
-      append_attribute_value(out, piece.light_set);
-    }
-    if (piece.back_side) out += " data-side=\"back\"";
-    out += "/>\n";
+  if (options.pieces) {
+    append_pieces(out, picture.pieces);
+  } else {
+    append_colour_paths(out, colour_paths(picture));
   }
-  if (open_layer != 0) out += "</g>\n";
+  append_outlines(out, picture.outlines);
+  if (picture.north) append_north_arrow(out, *picture.north, picture.width);
+  if (picture.scale_bar) append_scale_bar(out, *picture.scale_bar, picture.height);
   if (legend) append_legend(out, picture.legend, picture.width);
   out += "</svg>\n";
   return out;
 }
 
-void write_svg(const Picture& picture, const std::filesystem::path& path) {
-  write_file_atomically(path, svg_document(picture));
+void write_svg(const Picture& picture, const std::filesystem::path& path,
+               const SvgOptions& options) {
+  write_file_atomically(path, svg_document(picture, options));
 }
 
 }  // namespace shadowgen

@@ -46,10 +46,17 @@
 
 namespace shadowgen {
 
-std::string svg_document(const Picture& picture);
+struct SvgOptions {
+  // One path per piece, with its face (data-face) and its light set or hours, instead of
+  // one path per colour.
+  bool pieces = false;
+};
+
+std::string svg_document(const Picture& picture, const SvgOptions& options = {});
 
 // Writes through a temporary file and a rename (shadowgen/atomic_file.h): never a
 // partial file.
-void write_svg(const Picture& picture, const std::filesystem::path& path);
+void write_svg(const Picture& picture, const std::filesystem::path& path,
+               const SvgOptions& options = {});
 
 }  // namespace shadowgen

@@ -1,5 +1,6 @@
 #include "tests/cli/cli_harness.h"
 
+#include <png.h>
 #include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -156,7 +158,7 @@ std::vector<ReportRow> parse_report(const std::string& csv) {
   return rows;
 }
 
-double svg_path_area(const std::string& d) {
+std::vector<std::vector<std::pair<double, double>>> svg_path_loops(const std::string& d) {
   std::vector<std::vector<std::pair<double, double>>> loops;
   std::vector<double> numbers;
   auto flush = [&] {
@@ -179,23 +181,56 @@ double svg_path_area(const std::string& d) {
     const auto [next, error] = std::from_chars(p, end, v);
     if (error != std::errc()) {
       ADD_FAILURE() << "not a number at: " << std::string(p, std::min<std::size_t>(20, end - p));
-      return NAN;
+      return loops;
     }
     numbers.push_back(v);
     p = next;
   }
   flush();
+  return loops;
+}
+
+namespace {
+
+// Twice the signed area of a loop, from its first point.
+double twice_signed_area(const std::vector<std::pair<double, double>>& loop) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const auto& [x0, y0] = loop[i];
+    const auto& [x1, y1] = loop[(i + 1) % loop.size()];
+    twice +=
+        (x0 - loop[0].first) * (y1 - loop[0].second) - (x1 - loop[0].first) * (y0 - loop[0].second);
+  }
+  return twice;
+}
+
+}  // namespace
+
+double svg_paths_area(const std::string& d) {
+  double area = 0.0;
+  for (const auto& loop : svg_path_loops(d)) area += 0.5 * twice_signed_area(loop);
+  return area;
+}
+
+Png read_png(const fs::path& path) {
+  Png result;
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) return result;
+  png.format = PNG_FORMAT_RGB;
+  result.rgb.resize(PNG_IMAGE_SIZE(png));
+  result.width = static_cast<int>(png.width);
+  result.height = static_cast<int>(png.height);
+  result.ok = png_image_finish_read(&png, nullptr, result.rgb.data(), 0, nullptr) != 0;
+  return result;
+}
+
+double svg_path_area(const std::string& d) {
+  const std::vector<std::vector<std::pair<double, double>>> loops = svg_path_loops(d);
   double area = 0.0;
   for (std::size_t l = 0; l < loops.size(); ++l) {
-    double twice = 0.0;
-    const auto& loop = loops[l];
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      const auto& [x0, y0] = loop[i];
-      const auto& [x1, y1] = loop[(i + 1) % loop.size()];
-      twice += (x0 - loop[0].first) * (y1 - loop[0].second) -
-               (x1 - loop[0].first) * (y0 - loop[0].second);
-    }
-    area += (l == 0 ? 0.5 : -0.5) * std::abs(twice);
+    area += (l == 0 ? 0.5 : -0.5) * std::abs(twice_signed_area(loops[l]));
   }
   return area;
 }

@@ -72,6 +72,23 @@ std::vector<ReportRow> parse_report(const std::string& csv);
 // subpath is the outer loop, the others holes. A number it cannot read fails the test.
 double svg_path_area(const std::string& d);
 
+// The subpaths of an SVG <path>'s data `d`, each a loop of (x, y); a number it cannot read
+// fails the test.
+std::vector<std::vector<std::pair<double, double>>> svg_path_loops(const std::string& d);
+
+// Area of a path of several polygons with holes (a picture's path per colour): the sum of
+// its subpaths' signed areas, outer loops positive in pixel coordinates (y down) and
+// holes negative, as shadowgen writes them.
+double svg_paths_area(const std::string& d);
+
+// A PNG file read back with libpng as 8-bit RGB; `ok` false where it cannot be read.
+struct Png {
+  bool ok = false;
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+Png read_png(const fs::path& path);
+
 // xmllint finds `file` well-formed; its complaints go through `scratch` into the message.
 void ExpectWellFormedXml(const fs::path& file, const fs::path& scratch);
 

@@ -394,7 +394,8 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
 
   // render: the `main` view, a well-formed SVG that names only the scene's faces and lights.
   const fs::path svg = dir_ / (name + ".svg");
-  const Outcome rendered = run({"render", db.string(), "--view", "main", "--svg", svg.string()});
+  const Outcome rendered =
+      run({"render", "--pieces", db.string(), "--view", "main", "--svg", svg.string()});
   ASSERT_EQ(rendered.code, 0) << rendered.err;
   EXPECT_EQ(rendered.out, "");
   EXPECT_EQ(rendered.err, "");

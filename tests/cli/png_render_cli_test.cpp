@@ -15,26 +15,6 @@
 namespace shadowgen::test {
 namespace {
 
-struct Png {
-  bool ok = false;
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;
-};
-
-Png read_png(const fs::path& path) {
-  Png result;
-  png_image png;
-  std::memset(&png, 0, sizeof png);
-  png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) return result;
-  png.format = PNG_FORMAT_RGB;
-  result.rgb.resize(PNG_IMAGE_SIZE(png));
-  result.width = static_cast<int>(png.width);
-  result.height = static_cast<int>(png.height);
-  result.ok = png_image_finish_read(&png, nullptr, result.rgb.data(), 0, nullptr) != 0;
-  return result;
-}
-
 class PngRenderCli : public CliFolderTest<> {
  protected:
   PngRenderCli() : CliFolderTest("shadowgen-png") {}

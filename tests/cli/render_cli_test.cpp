@@ -94,7 +94,7 @@ TEST_F(RenderCli, TwoViewpointsFromTheDatabaseAlone) {
 
   // The database's own view, in perspective.
   const fs::path main_svg = dir_ / "main.svg";
-  const Outcome main_view = run({"render", db_.string(), "--view", "main", "--svg",
+  const Outcome main_view = run({"render", "--pieces", db_.string(), "--view", "main", "--svg",
                                  main_svg.string(), "--width", "640", "--height", "480"});
   ASSERT_EQ(main_view.code, 0) << main_view.err;
   EXPECT_EQ(main_view.out, "");
@@ -105,14 +105,15 @@ TEST_F(RenderCli, TwoViewpointsFromTheDatabaseAlone) {
   for (const char* face : {"ground", "wall-south", "canopy"}) {
     EXPECT_GT(main_areas.by_face.count(face), 0u) << face;
   }
-  EXPECT_NE(contents(main_svg).find("viewBox=\"0 0 640 480\""), std::string::npos);
+  // The 640-pixel picture and the light sets' legend, 220 pixels wide, beside it.
+  EXPECT_NE(contents(main_svg).find("viewBox=\"0 0 860 480\""), std::string::npos);
 
   // Straight down from between the canopy (z = 2.5) and the ground: the orthographic
   // camera's near plane through its eye cuts the canopy away, the wall is edge-on, so the
   // whole ground is seen and its lit pieces must add up to the report's lit areas.
   const fs::path top_svg = dir_ / "top.svg";
-  const Outcome top = run({"render", db_.string(), "--eye", "10,10,2", "--target", "10,10,0",
-                           "--up", "0,1,0", "--ortho", "--scale", "20", "--width", "440",
+  const Outcome top = run({"render", "--pieces", db_.string(), "--eye", "10,10,2", "--target",
+                           "10,10,0", "--up", "0,1,0", "--ortho", "--scale", "20", "--width", "440",
                            "--height", "440", "--svg", top_svg.string()});
   ASSERT_EQ(top.code, 0) << top.err;
   ExpectValidSvg(top_svg);
@@ -143,11 +144,11 @@ TEST_F(RenderCli, LightsDrawsOnlyThoseLights) {
   const fs::path lamp_scene = write("lamp.json", scene.dump(2));
   const fs::path lamp_db = dir_ / "lamp.shadowed.json";
   ASSERT_EQ(run({"generate", lamp_scene.string(), "-o", lamp_db.string()}).code, 0);
-  const Outcome alone =
-      run({"render", lamp_db.string(), "--view", "main", "--svg", (dir_ / "alone.svg").string()});
+  const Outcome alone = run({"render", "--pieces", lamp_db.string(), "--view", "main", "--svg",
+                             (dir_ / "alone.svg").string()});
   ASSERT_EQ(alone.code, 0) << alone.err;
-  const Outcome picked = run({"render", db_.string(), "--view", "main", "--lights", "lamp", "--svg",
-                              (dir_ / "picked.svg").string()});
+  const Outcome picked = run({"render", "--pieces", db_.string(), "--view", "main", "--lights",
+                              "lamp", "--svg", (dir_ / "picked.svg").string()});
   ASSERT_EQ(picked.code, 0) << picked.err;
   EXPECT_EQ(contents(dir_ / "picked.svg"), contents(dir_ / "alone.svg"));
   const SvgAreas areas = measure(contents(dir_ / "picked.svg"));
@@ -170,9 +171,10 @@ TEST_F(RenderCli, LightsDrawsOnlyThoseLights) {
 // light's layer what that picture's pieces lit by the light cover; a valid SVG.
 TEST_F(RenderCli, ByLightLayersCoverWhatTheLightSetsCover) {
   const fs::path sets = dir_ / "sets.svg", layers = dir_ / "layers.svg";
-  ASSERT_EQ(run({"render", db_.string(), "--view", "main", "--svg", sets.string()}).code, 0);
-  const Outcome r =
-      run({"render", db_.string(), "--view", "main", "--svg", layers.string(), "--by-light"});
+  ASSERT_EQ(
+      run({"render", "--pieces", db_.string(), "--view", "main", "--svg", sets.string()}).code, 0);
+  const Outcome r = run({"render", "--pieces", db_.string(), "--view", "main", "--svg",
+                         layers.string(), "--by-light"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   ExpectValidSvg(layers);
@@ -202,8 +204,9 @@ TEST_F(RenderCli, ByLightLayersCoverWhatTheLightSetsCover) {
 TEST_F(RenderCli, PerspectiveFromEyeAndFittedOrthographic) {
   const fs::path inside = dir_ / "inside.svg";
   // From inside the courtyard, under the canopy, looking at the wall's windows.
-  const Outcome perspective = run({"render", db_.string(), "--eye", "10,9,1.5", "--target",
-                                   "10,4,1.5", "--fov", "100", "--svg", inside.string()});
+  const Outcome perspective =
+      run({"render", "--pieces", db_.string(), "--eye", "10,9,1.5", "--target", "10,4,1.5", "--fov",
+           "100", "--svg", inside.string()});
   ASSERT_EQ(perspective.code, 0) << perspective.err;
   ExpectValidSvg(inside);
   const SvgAreas areas = measure(contents(inside));
@@ -211,8 +214,8 @@ TEST_F(RenderCli, PerspectiveFromEyeAndFittedOrthographic) {
   EXPECT_GT(areas.by_face.count("canopy"), 0u);  // overhead, seen from below: its back
 
   const fs::path fitted = dir_ / "fitted.svg";
-  const Outcome ortho = run({"render", db_.string(), "--view", "main", "--ortho", "--svg",
-                             fitted.string(), "--width", "300", "--height", "300"});
+  const Outcome ortho = run({"render", "--pieces", db_.string(), "--view", "main", "--ortho",
+                             "--svg", fitted.string(), "--width", "300", "--height", "300"});
   ASSERT_EQ(ortho.code, 0) << ortho.err;
   ExpectValidSvg(fitted);
   EXPECT_GT(measure(contents(fitted)).pixels_per_unit, 0.0);

@@ -179,8 +179,8 @@ class SunHoursCli : public CliFolderTest<> {
 
 TEST_F(SunHoursCli, RenderFillsEachVisibleRegionPieceWithItsBandsColourAndHasALegend) {
   const fs::path svg = dir_ / "map.svg";
-  const Outcome rendered = run({"render", garden_.string(), "--view", "main", "--sun-hours",
-                                "march21", "--svg", svg.string()});
+  const Outcome rendered = run({"render", "--pieces", garden_.string(), "--view", "main",
+                                "--sun-hours", "march21", "--svg", svg.string()});
   ASSERT_EQ(rendered.code, 0) << rendered.err;
   EXPECT_EQ(rendered.err, "");  // the path's instants were summed: no warning for a map
   ExpectWellFormedXml(svg, dir_ / "run" / "xmllint");
@@ -230,7 +230,10 @@ TEST_F(SunHoursCli, RenderFillsEachVisibleRegionPieceWithItsBandsColourAndHasALe
 
   // The map covers, face by face, what the lit picture of the same view covers.
   const fs::path lit_svg = dir_ / "lit.svg";
-  ASSERT_EQ(run({"render", garden_.string(), "--view", "main", "--svg", lit_svg.string()}).code, 0);
+  ASSERT_EQ(
+      run({"render", "--pieces", garden_.string(), "--view", "main", "--svg", lit_svg.string()})
+          .code,
+      0);
   const std::string lit = contents(lit_svg);
   const std::regex lit_path(
       R"re(<path d="([^"]*)" fill="#[0-9a-f]{6}" fill-rule="evenodd" data-face="([^"]*)")re");

@@ -10,6 +10,8 @@
 #include "clipper/box.h"
 #include "clipper/clip.h"
 #include "hsr/plane_chart.h"
+#include "shadowgen/view/map_marks.h"
+#include "shadowgen/view/outlines.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -339,6 +341,13 @@ Picture paint_picture(const Scene& scene, const Camera& camera, const RenderOpti
   }
   picture.stats.pieces = picture.pieces.size();
   for (const Piece& piece : picture.pieces) picture.stats.back_side_pieces += piece.back_side;
+
+  // The map's outlines and marks (outlines.h, map_marks.h).
+  picture.outlines = picture_outlines(scene, picture.pieces);
+  picture.north = north_arrow(scene, camera, camera_view);
+  if (picture.pixels_per_unit > 0.0) {
+    picture.scale_bar = scale_bar(picture.pixels_per_unit, picture.width, scene.site.has_value());
+  }
   return picture;
 }
 
