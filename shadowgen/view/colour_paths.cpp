@@ -9,20 +9,22 @@
 namespace shadowgen {
 
 std::vector<ColourPath> colour_paths(const Picture& picture) {
-  using Key = std::tuple<std::size_t, std::string, std::string, std::string, bool>;
+  using Key = std::tuple<std::size_t, std::string, std::string, bool, std::string, bool>;
   std::map<Key, std::size_t> group_of;
   std::vector<ColourPath> paths;
   std::vector<std::vector<clipper::PolygonWithHoles2>> shapes;
   for (const Piece& piece : picture.pieces) {
     std::string hex;
     detail::append_colour(hex, piece.colour);
-    const Key key{piece.layer, hex, piece.light_set, piece.band, piece.back_side};
+    const Key key{piece.layer,    hex, piece.light_set, piece.sun_hours.has_value(), piece.band,
+                  piece.back_side};
     const auto [it, added] = group_of.emplace(key, paths.size());
     if (added) {
       ColourPath path;
       path.layer = piece.layer;
       path.colour = piece.colour;
       path.light_set = piece.light_set;
+      path.sun_hours = piece.sun_hours.has_value();
       path.band = piece.band;
       path.back_side = piece.back_side;
       paths.push_back(std::move(path));

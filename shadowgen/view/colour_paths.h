@@ -24,8 +24,9 @@ namespace shadowgen {
 struct ColourPath {
   std::size_t layer = 0;
   Rgb colour;
-  std::string light_set;  // the pieces' light set; empty in a sun-hours map
-  std::string band;       // the pieces' hour band (sun-hours maps); empty otherwise
+  std::string light_set;   // the pieces' light set; empty in a sun-hours map
+  bool sun_hours = false;  // a sun-hours map's pieces (Piece::sun_hours set)
+  std::string band;        // their hour band
   bool back_side = false;
   clipper::PolygonSet2 shape;  // pixels
   std::size_t pieces = 0;      // how many pieces it joins

@@ -9,9 +9,9 @@
 #include <string>
 #include <utility>
 
-#include "detail/colour_hex.h"
 #include "detail/painter.h"
 #include "shadowgen/shadows/light_regions.h"
+#include "shadowgen/view/light_set_legend.h"
 
 namespace shadowgen {
 namespace {
@@ -98,33 +98,6 @@ class LightLayerTiling : public detail::FaceTiling {
   std::vector<std::size_t> lights_;  // the lights with lit polygons on the face
   std::size_t face_ = 0;
 };
-
-// The light sets drawn, in the order of their lights (shadow first: no light), each in
-// the colour that covers the most of the picture among its pieces.
-Legend light_set_legend(const std::vector<Piece>& pieces) {
-  std::map<std::vector<std::size_t>, std::pair<std::string, std::map<std::string, double>>> sets;
-  std::map<std::string, Rgb> colour_of;
-  for (const Piece& piece : pieces) {
-    std::string hex;
-    detail::append_colour(hex, piece.colour);
-    colour_of.emplace(hex, piece.colour);
-    auto& [name, area_by_colour] = sets[piece.lights];
-    name = piece.light_set;
-    area_by_colour[hex] += clipper::area(piece.shape);
-  }
-  Legend legend;
-  if (sets.empty()) return legend;
-  legend.kind = "light-sets";
-  legend.caption = {"Light sets"};
-  for (const auto& [lights, set] : sets) {
-    const auto& [name, area_by_colour] = set;
-    const auto most =
-        std::max_element(area_by_colour.begin(), area_by_colour.end(),
-                         [](const auto& a, const auto& b) { return a.second < b.second; });
-    legend.entries.push_back({colour_of.at(most->first), name});
-  }
-  return legend;
-}
 
 }  // namespace
 

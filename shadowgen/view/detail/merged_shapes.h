@@ -12,7 +12,8 @@ namespace shadowgen::detail {
 // The union of `pieces`, which do not overlap, by clipper::merge_adjacent; where its snap
 // rounding does not settle (clipper::SnapRoundingError), the pieces as they are: the same
 // points covered, only not joined. The joined boundary moves by at most the snapping's
-// hot pixel (clipper/detail/snap.h: six ulps of the coordinates' magnitude).
+// hot pixel (clipper/detail/snap.h: six ulps of the coordinates' magnitude). Vertices
+// where a joined boundary runs straight on are dropped (exactly: the area is unchanged).
 clipper::PolygonSet2 merged_shapes(std::span<const clipper::PolygonWithHoles2> pieces);
 
 }  // namespace shadowgen::detail

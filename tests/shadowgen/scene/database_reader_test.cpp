@@ -204,6 +204,42 @@ TEST(DatabaseReader, WrittenDatabasesReadBack) {
   EXPECT_EQ(database_json(parse_database(written, "again.json")), written);
 }
 
+// The scene's site is kept (every key written) and read back, before or after the faces;
+// one without its latitude, longitude or offset, or with a key out of range, is refused.
+TEST(DatabaseReader, TheSiteIsWrittenAndReadBack) {
+  nlohmann::ordered_json db = nlohmann::ordered_json::parse(database(square(0, 0, 1)));
+  db["site"] = {{"latitude_deg", 51.5}, {"longitude_deg", -0.1}, {"utc_offset_h", 1}};
+  const ShadowedScene read = parse_database(db.dump(), "db.json");
+  ASSERT_TRUE(read.scene.site.has_value());
+  EXPECT_EQ(read.scene.site->latitude_deg, 51.5);
+  EXPECT_EQ(read.scene.site->longitude_deg, -0.1);
+  EXPECT_EQ(read.scene.site->utc_offset_h, 1.0);
+  EXPECT_EQ(read.scene.site->elevation_m, 0.0);
+  EXPECT_EQ(read.scene.site->north_axis_deg, 0.0);
+  const std::string written = database_json(read);
+  EXPECT_NE(written.find("\"site\": {\"latitude_deg\":51.5,\"longitude_deg\":-0.1,"
+                         "\"elevation_m\":0.0,\"utc_offset_h\":1.0,\"north_axis_deg\":0.0},\n"
+                         "  \"lights\""),
+            std::string::npos)
+      << written;
+  EXPECT_EQ(database_json(parse_database(written, "again.json")), written);
+  // After the faces: read in the second pass.
+  nlohmann::ordered_json late = db;
+  late.erase("site");
+  late["site"] = db["site"];
+  late["site"]["north_axis_deg"] = 30;
+  EXPECT_EQ(parse_database(late.dump(), "db.json").scene.site->north_axis_deg, 30.0);
+  // No site: none written.
+  EXPECT_EQ(database_json(parse_database(database(square(0, 0, 1)), "db.json")).find("\"site\""),
+            std::string::npos);
+  db["site"].erase("utc_offset_h");
+  EXPECT_EQ(refusal(db.dump()).problem, "site: missing 'utc_offset_h'");
+  db["site"]["utc_offset_h"] = 0;
+  db["site"]["north_axis_deg"] = 400;
+  EXPECT_EQ(refusal(db.dump()).problem.rfind("site.north_axis_deg: ", 0), 0u)
+      << refusal(db.dump()).problem;
+}
+
 // The members of a database in any order: as written (the faces last, each read as the
 // parser reaches it), the faces first (kept until the rest is read), or a member the faces
 // need after them (the streamed faces read too early: the text is read again whole).

@@ -1,5 +1,6 @@
 // SVG text of a picture (shadowgen/svg_writer.h): the document's frame, one path per
-// piece with its holes, coordinates that read back to the same doubles, escaped ids.
+// piece with its holes (--pieces) or per colour, coordinates that read back to the same
+// doubles, escaped ids, outlines and a map's marks.
 
 #include "shadowgen/view/svg_writer.h"
 
@@ -36,6 +37,9 @@ Picture two_pieces() {
   return picture;
 }
 
+// One path per piece, as the tests before the paths per colour.
+constexpr SvgOptions kPieces{.pieces = true};
+
 std::vector<double> numbers_of(const std::string& path_data) {
   std::vector<double> out;
   const char* p = path_data.data();
@@ -55,8 +59,8 @@ std::vector<double> numbers_of(const std::string& path_data) {
   return out;
 }
 
-TEST(SvgWriter, FrameBackgroundAndOnePathPerPiece) {
-  const std::string svg = svg_document(two_pieces());
+TEST(SvgWriter, FrameBackgroundAndOnePathPerPieceWithPieces) {
+  const std::string svg = svg_document(two_pieces(), kPieces);
   EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg ", 0), 0u) << svg;
   EXPECT_NE(svg.find("width=\"64\" height=\"48\" viewBox=\"0 0 64 48\""), std::string::npos);
   EXPECT_NE(svg.find("<rect x=\"0\" y=\"0\" width=\"64\" height=\"48\" fill=\"#ffffff\"/>"),
@@ -93,7 +97,7 @@ TEST(SvgWriter, LayersByLightAreGroupsBlendedOverTheBase) {
   lamp.light_set = "l\"amp";
   lamp.layer = 2;
   picture.pieces = {base, base, sun, sun_too, lamp};
-  const std::string svg = svg_document(picture);
+  const std::string svg = svg_document(picture, kPieces);
   const std::string sun_group = "<g style=\"mix-blend-mode:plus-lighter\" data-light=\"sun\">\n";
   const std::string lamp_group =
       "<g style=\"mix-blend-mode:plus-lighter\" data-light=\"l&quot;amp\">\n";
@@ -113,12 +117,12 @@ TEST(SvgWriter, LayersByLightAreGroupsBlendedOverTheBase) {
   EXPECT_NE(svg.find("/>\n</g>\n<g style"), std::string::npos);
   EXPECT_NE(svg.find("/>\n</g>\n</svg>\n"), std::string::npos);
   // A picture not in layers has no group.
-  EXPECT_EQ(svg_document(two_pieces()).find("<g"), std::string::npos);
+  EXPECT_EQ(svg_document(two_pieces(), kPieces).find("<g"), std::string::npos);
 }
 
 TEST(SvgWriter, CoordinatesReadBackExactly) {
   const Picture picture = two_pieces();
-  const std::string svg = svg_document(picture);
+  const std::string svg = svg_document(picture, kPieces);
   const std::size_t start = svg.find("<path d=\"") + 9;
   const std::string d = svg.substr(start, svg.find('"', start) - start);
   // Outer loop, then the hole, each a closed subpath.
@@ -136,14 +140,14 @@ TEST(SvgWriter, CoordinatesReadBackExactly) {
 }
 
 TEST(SvgWriter, AttributesAreEscaped) {
-  const std::string svg = svg_document(two_pieces());
+  const std::string svg = svg_document(two_pieces(), kPieces);
   EXPECT_NE(svg.find("data-face=\"a&amp;b&lt;&quot;c&quot;&gt;&apos;d\" data-lights=\"shadow\" "
                      "data-side=\"back\"/>"),
             std::string::npos)
       << svg;
   Picture bad = two_pieces();
   bad.pieces[0].face_id = std::string("x\x01y\xff") + "\xc3\xa9";  // control, bad byte, é
-  const std::string text = svg_document(bad);
+  const std::string text = svg_document(bad, kPieces);
   EXPECT_NE(text.find("data-face=\"x\xEF\xBF\xBDy\xEF\xBF\xBD\xc3\xa9\""), std::string::npos);
 }
 
@@ -155,9 +159,10 @@ TEST(SvgWriter, SunHoursPiecesCarryTheirHoursAndTheLegendWidensThePicture) {
   }
   picture.pieces[0].sun_hours = 1.5;
   picture.pieces[1].sun_hours = 0.0;
+  picture.legend.kind = "sun-hours";
   picture.legend.caption = {"Sun hours: a<b", "4 instants, every 30 min"};
   picture.legend.entries = {{{0, 0, 0}, "0\u20131 h"}, {{1, 1, 1}, "\u2265 1 h"}};
-  const std::string svg = svg_document(picture);
+  const std::string svg = svg_document(picture, kPieces);
   EXPECT_EQ(svg.find("data-lights"), std::string::npos) << svg;
   EXPECT_NE(svg.find("data-face=\"wall\" data-hours=\"1.5\"/>"), std::string::npos) << svg;
   EXPECT_NE(svg.find("data-hours=\"0\" data-side=\"back\"/>"), std::string::npos) << svg;
@@ -199,6 +204,80 @@ TEST(SvgWriter, OrthographicScaleIsRecordedAndFilesAreWholeOrAbsent) {
   EXPECT_THROW(write_svg(picture, dir / "missing" / "p.svg"), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
   std::filesystem::remove_all(dir);
+}
+
+// Three unit squares in a row: the two of one colour and light set that share an edge
+// become one path of area 2 with no inner edge, stroked in its colour against seams; the
+// third, of another colour, its own path.
+Picture three_squares() {
+  Picture picture;
+  picture.width = 64;
+  picture.height = 48;
+  picture.background = {1.0, 1.0, 1.0};
+  const auto square = [](double x, const std::string& face, const std::string& set, Rgb colour) {
+    Piece piece;
+    piece.face_id = face;
+    piece.light_set = set;
+    piece.colour = colour;
+    piece.shape.outer = {{x, 10}, {x + 1, 10}, {x + 1, 11}, {x, 11}};
+    return piece;
+  };
+  picture.pieces = {square(10, "a", "sun", {1, 0, 0}), square(11, "b", "sun", {1, 0, 0}),
+                    square(12, "b", "shadow", {0, 0, 1})};
+  return picture;
+}
+
+TEST(SvgWriter, PiecesOfOneColourThatTouchAreOnePathStrokedInItsColour) {
+  const std::string svg = svg_document(three_squares());
+  EXPECT_NE(svg.find("<path d=\"M10,10 L12,10 12,11 10,11 Z\" fill=\"#ff0000\" "
+                     "stroke=\"#ff0000\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
+                     "fill-rule=\"evenodd\" data-lights=\"sun\"/>\n"),
+            std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("<path d=\"M12,10 L13,10 13,11 12,11 Z\" fill=\"#0000ff\" "
+                     "stroke=\"#0000ff\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
+                     "fill-rule=\"evenodd\" data-lights=\"shadow\"/>\n"),
+            std::string::npos)
+      << svg;
+  // No face on a path of several faces: the outlines name them.
+  EXPECT_EQ(svg.find("data-face"), std::string::npos) << svg;
+  Picture sun_hours = three_squares();
+  for (Piece& piece : sun_hours.pieces) {
+    piece.light_set.clear();
+    piece.sun_hours = 1.0;
+    piece.band = "0\u20132 h";
+  }
+  const std::string map = svg_document(sun_hours);
+  EXPECT_NE(map.find("fill-rule=\"evenodd\" data-band=\"0\u20132 h\"/>"), std::string::npos) << map;
+  EXPECT_EQ(map.find("data-lights"), std::string::npos) << map;
+}
+
+TEST(SvgWriter, OutlinesNorthArrowAndScaleBarAreDrawnOverTheFills) {
+  Picture picture = three_squares();
+  picture.outlines = {{"a", "", {{{{10, 10}, {11, 10}, {11, 11}, {10, 11}}, {}}}},
+                      {"", "block 7", {{{{11, 10}, {13, 10}, {13, 11}, {11, 11}}, {}}}}};
+  picture.north = NorthArrow{330};
+  picture.scale_bar = ScaleBar{20, 140, "20 m"};
+  const std::string svg = svg_document(picture);
+  const std::size_t outlines = svg.find(
+      "<g fill=\"none\" stroke=\"#262626\" stroke-width=\"0.75\" stroke-linejoin=\"round\" "
+      "data-outlines=\"\">\n<path d=\"M10,10 L11,10 11,11 10,11 Z\" data-face=\"a\"/>\n"
+      "<path d=\"M11,10 L13,10 13,11 11,11 Z\" data-object=\"block 7\"/>\n</g>\n");
+  ASSERT_NE(outlines, std::string::npos) << svg;
+  EXPECT_GT(outlines, svg.rfind("data-lights"));
+  // The arrow in the top right corner of the 64 × 48 picture, turned about its centre
+  // (64 − 16 − 14, 16 + 14 + 12) = (34, 42).
+  EXPECT_NE(svg.find("<g data-north-arrow=\"330\">\n<path d=\"M34,28 L39.6,56 L34,49 L28.4,56 Z\" "
+                     "fill=\"#000000\" stroke=\"#ffffff\" stroke-width=\"1\" "
+                     "transform=\"rotate(330 34 42)\"/>\n"),
+            std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("<g data-scale-bar=\"20\" data-pixels=\"140\">\n<rect x=\"16\" y=\"26\" "
+                     "width=\"140\" height=\"6\" fill=\"#000000\" stroke=\"#ffffff\" "
+                     "stroke-width=\"1\"/>\n<text x=\"16\" y=\"22\" "),
+            std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find(">20 m</text>\n</g>\n</svg>\n"), std::string::npos) << svg;
 }
 
 }  // namespace

@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# The sun-hours map of a district, through the command line: the procedural city
+# (bench/scenes/city.h) written as a scene at Greenwich with one `sun` path, generated
+# once (`shadowgen generate`, its wall time and the database's size), then its sun-hours
+# plan drawn from straight above (`render --sun-hours --ortho`, the scene fitted to an
+# 800 × 600 picture) as one path per piece (`--pieces`, as every map was drawn before the
+# pieces of one colour were joined) and as one path per colour, the two in turn, each
+# REPETITIONS times: the SVG's size and path count, and each run's wall time and peak
+# resident memory, with the medians.
+#
+#   bench/run_map_bench.sh [FACES] [FROM] [TO] [STEP_MIN]
+#
+# Defaults: 30000 faces, 21 March 2026 from 00:00 to 23:59 every 30 minutes. BUILD_DIR
+# (default build/release) must hold cli/shadowgen and bench/output_bench
+# (SHADOWGEN_BENCH=ON). Environment: THREADS (default 2) for generate and render;
+# REPETITIONS (default 3).
+set -euo pipefail
+
+faces=${1:-30000}
+from=${2:-2026-03-21T00:00}
+to=${3:-2026-03-21T23:59}
+step=${4:-30}
+build=${BUILD_DIR:-build/release}
+threads=${THREADS:-2}
+repetitions=${REPETITIONS:-3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+"$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
+# The scene, and the middle of its bounding box: where the camera looks down from.
+centre=$(python3 - "$work/city.db.json" "$work/scene.json" "$from" "$to" "$step" <<'PY'
+import json, sys
+db = json.load(open(sys.argv[1]))
+polygons = []
+lo = [float("inf")] * 3
+hi = [float("-inf")] * 3
+for face in db["faces"]:
+    for k, part in enumerate(face["parts"]):
+        suffix = "" if len(face["parts"]) == 1 else "/%d" % k
+        polygons.append({"id": (face["id"] + suffix).replace("/", "."), "outer": part["outer"], "holes": part["holes"]})
+        for p in part["outer"]:
+            lo = [min(a, b) for a, b in zip(lo, p)]
+            hi = [max(a, b) for a, b in zip(hi, p)]
+scene = {"format": "shadowgen-scene/1", "polygons": polygons,
+         "site": {"latitude_deg": 51.4779, "longitude_deg": -0.0015, "utc_offset_h": 0},
+         "lights": [{"id": "path", "type": "sun", "from": sys.argv[3], "to": sys.argv[4],
+                     "step_min": int(sys.argv[5])}]}
+json.dump(scene, open(sys.argv[2], "w"))
+print("%r %r %r" % ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, hi[2] + 1 + (hi[0] - lo[0])))
+PY
+)
+read -r cx cy top <<<"$centre"
+instants=$("$build/cli/shadowgen" sun "$work/scene.json" | tail -n +2 | wc -l)
+polygons=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['polygons']))" "$work/scene.json")
+echo "city of $faces faces ($polygons polygons), sun path $from to $to every $step min: $instants instants with the sun up, $threads threads"
+echo
+
+/usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" generate "$work/scene.json" \
+  -o "$work/db.json" --threads "$threads" --quiet
+read -r wall kb <"$work/time"
+echo "generate: $wall s, $((kb / 1024)) MB at peak, database $(du -m --apparent-size "$work/db.json" | cut -f1) MB"
+echo
+
+# One render: its wall time and peak MB, the SVG's bytes and paths, appended to $work/$1.
+render() {
+  local mode=$1
+  shift
+  /usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" render "$work/db.json" \
+    --eye "$cx,$cy,$top" --target "$cx,$cy,0" --ortho --sun-hours path \
+    --svg "$work/$mode.svg" "$@"
+  read -r wall kb <"$work/time"
+  echo "$wall $((kb / 1024)) $(stat -c %s "$work/$mode.svg") $(grep -c '<path' "$work/$mode.svg")" \
+    >>"$work/$mode.runs"
+}
+for _ in $(seq "$repetitions"); do
+  render pieces --pieces
+  render merged
+done
+echo "| SVG | wall s (runs) | median s | peak MB | SVG bytes | paths |"
+echo "|---|---|---:|---:|---:|---:|"
+for mode in pieces merged; do
+  python3 - "$mode" "$work/$mode.runs" <<'PY'
+import statistics, sys
+rows = [line.split() for line in open(sys.argv[2])]
+walls = [float(r[0]) for r in rows]
+print("| %s | %s | %.2f | %d | %s | %s |" % (
+    "one path per piece (--pieces)" if sys.argv[1] == "pieces" else "one path per colour",
+    ", ".join("%.2f" % w for w in walls), statistics.median(walls),
+    statistics.median(int(r[1]) for r in rows), format(int(rows[-1][2]), ","),
+    format(int(rows[-1][3]), ",")))
+PY
+done
