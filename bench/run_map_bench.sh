@@ -13,7 +13,7 @@
 # Defaults: 30000 faces, 21 March 2026 from 00:00 to 23:59 every 30 minutes. BUILD_DIR
 # (default build/release) must hold cli/shadowgen and bench/output_bench
 # (SHADOWGEN_BENCH=ON). Environment: THREADS (default 2) for generate and render;
-# REPETITIONS (default 3).
+# REPETITIONS (default 3); KEEP=FOLDER keeps the scene, database and pictures there.
 set -euo pipefail
 
 faces=${1:-30000}
@@ -23,8 +23,13 @@ step=${4:-30}
 build=${BUILD_DIR:-build/release}
 threads=${THREADS:-2}
 repetitions=${REPETITIONS:-3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+if [ -n "${KEEP:-}" ]; then
+  work=$KEEP
+  mkdir -p "$work"
+else
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
 
 "$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
 # The scene, and the middle of its bounding box: where the camera looks down from.
@@ -71,6 +76,7 @@ render() {
   read -r wall kb <"$work/time"
   echo "$wall $((kb / 1024)) $(stat -c %s "$work/$mode.svg") $(grep -c '<path' "$work/$mode.svg")" \
     >>"$work/$mode.runs"
+  cp "$work/$mode.svg" "$work/$mode.last.svg"
 }
 for _ in $(seq "$repetitions"); do
   render pieces --pieces
