@@ -13,7 +13,9 @@
 # Defaults: 30000 faces, 21 March 2026 from 00:00 to 23:59 every 30 minutes. BUILD_DIR
 # (default build/release) must hold cli/shadowgen and bench/output_bench
 # (SHADOWGEN_BENCH=ON). Environment: THREADS (default 2) for generate and render;
-# REPETITIONS (default 3); KEEP=FOLDER keeps the scene, database and pictures there.
+# REPETITIONS (default 3); KEEP=FOLDER keeps the scene, database and pictures there, and
+# with REUSE=1 a later run takes the city and database it finds there instead of making
+# them again (the pictures alone measured).
 set -euo pipefail
 
 faces=${1:-30000}
@@ -31,7 +33,8 @@ else
   trap 'rm -rf "$work"' EXIT
 fi
 
-"$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
+[ -f "$work/city.db.json" ] && [ -n "${REUSE:-}" ] ||
+  "$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
 # The scene, and the middle of its bounding box: where the camera looks down from.
 centre=$(python3 - "$work/city.db.json" "$work/scene.json" "$from" "$to" "$step" <<'PY'
 import json, sys
@@ -60,10 +63,14 @@ polygons=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['
 echo "city of $faces faces ($polygons polygons), sun path $from to $to every $step min: $instants instants with the sun up, $threads threads"
 echo
 
-/usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" generate "$work/scene.json" \
-  -o "$work/db.json" --threads "$threads" --quiet
-read -r wall kb <"$work/time"
-echo "generate: $wall s, $((kb / 1024)) MB at peak, database $(du -m --apparent-size "$work/db.json" | cut -f1) MB"
+if [ -f "$work/db.json" ] && [ -n "${REUSE:-}" ]; then
+  echo "generate: the database of an earlier run, $(du -m --apparent-size "$work/db.json" | cut -f1) MB"
+else
+  /usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" generate "$work/scene.json" \
+    -o "$work/db.json" --threads "$threads" --quiet
+  read -r wall kb <"$work/time"
+  echo "generate: $wall s, $((kb / 1024)) MB at peak, database $(du -m --apparent-size "$work/db.json" | cut -f1) MB"
+fi
 echo
 
 # One render: its wall time and peak MB, the SVG's bytes and paths, appended to $work/$1.
@@ -72,7 +79,7 @@ render() {
   shift
   /usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" render "$work/db.json" \
     --eye "$cx,$cy,$top" --target "$cx,$cy,0" --ortho --sun-hours path \
-    --svg "$work/$mode.svg" "$@"
+    --svg "$work/$mode.svg" --quiet "$@"
   read -r wall kb <"$work/time"
   echo "$wall $((kb / 1024)) $(stat -c %s "$work/$mode.svg") $(grep -c '<path' "$work/$mode.svg")" \
     >>"$work/$mode.runs"

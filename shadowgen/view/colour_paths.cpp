@@ -1,18 +1,38 @@
 #include "shadowgen/view/colour_paths.h"
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <map>
 #include <tuple>
+#include <utility>
 
 #include "detail/colour_hex.h"
 #include "detail/merged_shapes.h"
 
 namespace shadowgen {
 
+namespace {
+
+// The tile of a piece: that of its bounding box's least corner.
+std::pair<long, long> tile_of(const clipper::PolygonWithHoles2& shape) {
+  double x = shape.outer.front().x, y = shape.outer.front().y;
+  for (const clipper::Point2& p : shape.outer) {
+    x = std::min(x, p.x);
+    y = std::min(y, p.y);
+  }
+  return {static_cast<long>(std::floor(x / kMergeTile)),
+          static_cast<long>(std::floor(y / kMergeTile))};
+}
+
+}  // namespace
+
 std::vector<ColourPath> colour_paths(const Picture& picture) {
   using Key = std::tuple<std::size_t, std::string, std::string, bool, std::string, bool>;
   std::map<Key, std::size_t> group_of;
   std::vector<ColourPath> paths;
-  std::vector<std::vector<clipper::PolygonWithHoles2>> shapes;
+  // Per path, its pieces by tile.
+  std::vector<std::map<std::pair<long, long>, std::vector<clipper::PolygonWithHoles2>>> shapes;
   for (const Piece& piece : picture.pieces) {
     std::string hex;
     detail::append_colour(hex, piece.colour);
@@ -30,11 +50,17 @@ std::vector<ColourPath> colour_paths(const Picture& picture) {
       paths.push_back(std::move(path));
       shapes.emplace_back();
     }
-    shapes[it->second].push_back(piece.shape);
+    if (!piece.shape.outer.empty()) {
+      shapes[it->second][tile_of(piece.shape)].push_back(piece.shape);
+    }
     ++paths[it->second].pieces;
   }
   for (std::size_t g = 0; g < paths.size(); ++g) {
-    paths[g].shape = detail::merged_shapes(shapes[g]);
+    for (const auto& [tile, pieces] : shapes[g]) {
+      clipper::PolygonSet2 merged = detail::merged_shapes(pieces);
+      paths[g].shape.insert(paths[g].shape.end(), std::make_move_iterator(merged.begin()),
+                            std::make_move_iterator(merged.end()));
+    }
   }
   return paths;
 }

@@ -9,7 +9,13 @@
 // (clipper::merge_adjacent, in the picture's pixel coordinates), so the group covers the
 // same points with fewer polygons and no inner edges; its area is the sum of its pieces'
 // up to the snap rounding of the joined boundary. Groups come in the order of their first
-// piece, so layers stay in order. Which faces a group holds is the outlines' to say
+// piece, so layers stay in order.
+//
+// The joining is done tile by tile, kMergeTile pixels square, each piece in the tile of its
+// bounding box's least corner: the cost of joining grows faster than the pieces joined at
+// once (a district's band holds hundreds of thousands), and tiles keep it in proportion
+// to them. A group's polygons from neighbouring tiles meet along edges they share, drawn
+// as one path all the same. Which faces a group holds is the outlines' to say
 // (Picture::outlines), not the group's.
 
 #include <cstddef>
@@ -20,6 +26,8 @@
 #include "shadowgen/view/render.h"
 
 namespace shadowgen {
+
+inline constexpr double kMergeTile = 64.0;
 
 struct ColourPath {
   std::size_t layer = 0;

@@ -402,5 +402,29 @@ TEST_F(MapCli, NoSeamsWhereColoursMeet) {
   EXPECT_EQ(seams, 0);
 }
 
+// A sun-hours map's pixels are its pieces': no view method finds them; one path per
+// piece is a way to write the SVG, so it needs one.
+TEST_F(MapCli, OptionsAMapCannotTakeAreUsageErrors) {
+  const fs::path db = generate("yard", kDay);
+  const std::string png = (dir_ / "map.png").string(), svg = (dir_ / "map.svg").string();
+  const Outcome shadows = run({"render", db.string(), "--view", "main", "--sun-hours", "day", "-o",
+                               png, "--shadows", "volumes"});
+  EXPECT_EQ(shadows.code, 2);
+  EXPECT_EQ(shadows.err.rfind("shadowgen: --shadows applies only to the lit picture: a sun-hours "
+                              "map's pixels are its pieces'\n",
+                              0),
+            0u)
+      << shadows.err;
+  const Outcome pieces = run({"render", db.string(), "--view", "main", "-o", png, "--pieces"});
+  EXPECT_EQ(pieces.code, 2);
+  EXPECT_EQ(pieces.err.rfind("shadowgen: --pieces draws the SVG picture one path per piece: it "
+                             "needs -o FILE.svg (or --svg)\n",
+                             0),
+            0u)
+      << pieces.err;
+  EXPECT_FALSE(fs::exists(png));
+  EXPECT_FALSE(fs::exists(svg));
+}
+
 }  // namespace
 }  // namespace shadowgen::test
