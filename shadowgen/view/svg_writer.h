@@ -6,14 +6,27 @@
 //   <svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="W" height="H"
 //        viewBox="0 0 W H" data-pixels-per-unit="S">       the last for orthographic views
 //   <rect x="0" y="0" width="W" height="H" fill="#rrggbb"/>  the background
-//   <path d="M x,y L x,y ... Z M ... Z" fill="#rrggbb" fill-rule="evenodd"
-//         data-face="wall" data-lights="sun+lamp"/>         one per piece, in picture order
+//   <path d="M x,y L x,y ... Z M ... Z" fill="#rrggbb" stroke="#rrggbb" stroke-width="1.5"
+//         stroke-linejoin="round" fill-rule="evenodd" data-lights="sun+lamp"/>
+//                                       one per colour (colour_paths.h), in picture order,
+//                                       its pieces joined where they touch, stroked in its
+//                                       own colour so that no seam shows where colours meet
+//   <g fill="none" stroke="#262626" stroke-width="0.75" stroke-linejoin="round"
+//      data-outlines="">
+//   <path d="..." data-face="wall"/>    each face's outline, or data-object="b1" for an
+//   </g>                                 object of a model file (outlines.h)
+//   <g data-north-arrow="330">...</g>    true north, clockwise from up (map_marks.h)
+//   <g data-scale-bar="10" data-pixels="129.5">...</g>   orthographic views
+//   (the legend)
 //   </svg>
 //
-// A sun-hours map's pieces carry data-hours="1.5" (their region's hours) instead of
-// data-lights, and its legend (Picture::legend) is drawn in a strip 220 pixels wide to the
-// right of the picture, which widens the document by that much (and makes it taller where
-// the legend needs it); the background fills both:
+// With SvgOptions::pieces, one path per piece instead, unstroked, as
+//   <path d="..." fill="#rrggbb" fill-rule="evenodd" data-face="wall" data-lights="sun"/>
+// A sun-hours map's paths carry data-band="2–4 h" (with pieces: data-hours="1.5", their
+// region's hours) instead of data-lights. The legend (Picture::legend: a sun-hours map's
+// bands, a lit picture's light sets) is drawn in a strip 220 pixels wide to the right of
+// the picture, which widens the document by that much (and makes it taller where the
+// legend needs it); the background fills both:
 //
 //   <g font-family="sans-serif" font-size="12" fill="#000000" data-legend="sun-hours">
 //   <text x=".." y="..">Sun hours: march21</text>              each caption line
@@ -23,8 +36,8 @@
 //   </g>
 //
 // Layers by light (render.h, render_by_light): the base's paths as above
-// (data-lights="shadow"), then each light's layer in a group whose paths a viewer adds to
-// what lies beneath them, which gives the lit picture's sum of lights:
+// (data-lights="shadow"), then each light's layer in a group whose paths (unstroked) a
+// viewer adds to what lies beneath them, which gives the lit picture's sum of lights:
 //
 //   <g style="mix-blend-mode:plus-lighter" data-light="sun">
 //   <path d="..." fill="#rrggbb" fill-rule="evenodd" data-face="wall" data-lights="sun"/>
