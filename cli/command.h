@@ -4,7 +4,7 @@
 // the reading options (--strict, --threads, --quiet) and -o/--output, and the error for
 // arguments that parse but do not fit together. main.cpp wires the subcommands
 // (generate_command.cpp, report_command.cpp, export_command.cpp, render_command.cpp,
-// sun_command.cpp, merge_command.cpp, compare_command.cpp)
+// sun_command.cpp, merge_command.cpp, compare_command.cpp, view_command.cpp)
 // and turns their errors into exit codes.
 
 #include <CLI/CLI.hpp>
@@ -57,6 +57,7 @@ Command add_render_command(CLI::App& app);
 Command add_sun_command(CLI::App& app);
 Command add_merge_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_view_command(CLI::App& app);
 
 // How an input is read and its shadows generated.
 struct ReadingArgs {

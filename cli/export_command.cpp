@@ -70,14 +70,7 @@ void run_export(const ExportArgs& args) {
       {{args.input}, {{named_by, obj_path.string()}, {named_by + "'s MTL", mtl_path.string()}}});
   // A sun-hours export writes a path's sums, not its instants' lit polygons; a scene
   // without that path is refused before its shadows are computed.
-  load.instant_polygons = args.sun_hours.path.empty();
-  load.draws = true;
-  if (!args.sun_hours.path.empty()) {
-    load.on_scene = [&args, check = load.on_scene](const Scene& scene) {
-      if (check) check(scene);
-      require_sun_path(scene, args.sun_hours.path, args.input);
-    };
-  }
+  load_to_draw(load, args.sun_hours, args.input);
   RunProgress progress(args.input, progress_stream(args.reading.quiet));
   progress.watch(load);
   const ShadowedScene shadowed = load_shadowed(args.input, load);

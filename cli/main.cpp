@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
       shadowgen::cli::add_generate_command(app), shadowgen::cli::add_report_command(app),
       shadowgen::cli::add_export_command(app),   shadowgen::cli::add_render_command(app),
       shadowgen::cli::add_sun_command(app),      shadowgen::cli::add_merge_command(app),
-      shadowgen::cli::add_compare_command(app)};
+      shadowgen::cli::add_compare_command(app),  shadowgen::cli::add_view_command(app)};
 
   // Parse errors read as the other errors do: "shadowgen: " and one line, then the hint.
   app.failure_message([](const CLI::App*, const CLI::Error& e) {

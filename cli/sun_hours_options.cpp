@@ -24,6 +24,17 @@ CLI::Option* add_sun_hours_options(CLI::App& command, SunHoursArgs& args, const 
   return path;
 }
 
+void load_to_draw(LoadOptions& load, const SunHoursArgs& args, const std::string& input) {
+  load.instant_polygons = args.path.empty();
+  load.draws = true;
+  if (!args.path.empty()) {
+    load.on_scene = [path = args.path, input, check = load.on_scene](const Scene& scene) {
+      if (check) check(scene);
+      require_sun_path(scene, path, input);
+    };
+  }
+}
+
 SunHoursMap sun_hours_map(const ShadowedScene& shadowed, const SunHoursArgs& args,
                           const std::string& file) {
   SunHoursMap map;

@@ -10,6 +10,7 @@
 
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/output/hour_bands.h"
+#include "shadowgen/pipeline/load_shadowed.h"
 
 namespace shadowgen::cli {
 
@@ -21,6 +22,12 @@ struct SunHoursArgs {
 // --sun-hours and --bands (which needs it) on `command`, where `what` says what the
 // subcommand makes of the path ("draw", "write"); returns --sun-hours.
 CLI::Option* add_sun_hours_options(CLI::App& command, SunHoursArgs& args, const std::string& what);
+
+// What a subcommand that draws or writes the shadowed scene asks of its load: lit polygons
+// to draw (LoadOptions::draws); with --sun-hours, the path's sums and not its instants'
+// polygons, and a scene without that path refused before its shadows are computed
+// (naming `input`).
+void load_to_draw(LoadOptions& load, const SunHoursArgs& args, const std::string& input);
 
 // The sun path that `args` names and its bands.
 struct SunHoursMap {

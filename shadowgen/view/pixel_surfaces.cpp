@@ -10,6 +10,7 @@
 #include "detail/embree_scene.h"
 #include "hsr/parallel.h"
 #include "hsr/polygon3.h"
+#include "shadowgen/model/scene_centre.h"
 #include "shadowgen/sampled/part_triangles.h"
 
 namespace shadowgen {
@@ -23,19 +24,6 @@ struct PartPlane {
   glm::dvec3 normal{0.0};  // unit; zero without a plane
   glm::dvec3 origin{0.0};  // a vertex of the part
 };
-
-glm::dvec3 centre_of(const Scene& scene) {
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (const Face& face : scene.faces) {
-    for (const hsr::Polygon3& part : face.parts) {
-      for (const glm::dvec3& p : part.outer) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-      }
-    }
-  }
-  return lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
-}
 
 }  // namespace
 
@@ -59,7 +47,7 @@ PixelSurfaces pixel_surfaces(const Scene& scene, const Camera& camera, int width
     }
   }
   const detail::EmbreeDevice device;
-  const detail::TriangleScene hierarchy(device.get(), triangles, centre_of(scene));
+  const detail::TriangleScene hierarchy(device.get(), triangles, scene_centre(scene));
 
   PixelSurfaces surfaces;
   surfaces.camera = camera;
