@@ -57,10 +57,14 @@ std::filesystem::path viewer_assets_folder() {
 void write_viewer_page(const std::filesystem::path& dir, const std::filesystem::path& assets,
                        std::string_view model_script) {
   std::error_code error;
-  std::filesystem::create_directory(dir, error);
-  if (error || !std::filesystem::is_directory(dir)) {
+  if (std::filesystem::exists(dir, error) && !std::filesystem::is_directory(dir, error)) {
     throw std::runtime_error("cannot write the viewer page into '" + dir.string() +
-                             "': " + (error ? error.message() : std::string("not a folder")));
+                             "': not a folder");
+  }
+  std::filesystem::create_directory(dir, error);
+  if (error) {
+    throw std::runtime_error("cannot write the viewer page into '" + dir.string() +
+                             "': " + error.message());
   }
   // Every text is read before any file is written; index.html, which loads the others, is
   // renamed into place last.
