@@ -1,6 +1,7 @@
 #include "shadowgen/viewer/viewer_model.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <glm/common.hpp>
 #include <limits>
 #include <map>
@@ -79,7 +80,7 @@ class ModelBuilder {
       meshes.push_back(std::move(outline_));
     }
     description["origin"] = vec(origin_);
-    description["title"] = scene_.file;
+    description["title"] = std::filesystem::path(scene_.file).filename().string();
     nlohmann::json views = nlohmann::json::array();
     for (const ViewSpec& view : scene_.views) {
       views.push_back({{"id", view.id},
