@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -198,33 +199,33 @@ TEST_F(ViewCli, PixelsWhereTheDatabaseSaysLitOrShadowedShowThoseLightSetsColours
   EXPECT_NE(result["points"][3]["rgb"], nlohmann::json({244, 244, 242}));
 }
 
-// Every example scene's page, and the sun-hours page of those with a sun path, loads
-// cleanly and draws.
+// Every example scene's pages, as the build target example_viewer_pages makes them
+// (examples/view_examples.sh, here into the test's folder): the scene's page and, for a
+// scene with a sun path, its sun-hours page; each loads cleanly and draws.
 class ExampleViewerPage : public CliFolderTest<::testing::TestWithParam<std::string>> {
  protected:
   ExampleViewerPage() : CliFolderTest("view-example") {}
-  std::string at(const std::string& name) const { return (dir_ / name).string(); }
 };
 
 TEST_P(ExampleViewerPage, LoadsWithoutAnErrorAndDraws) {
   SKIP_WITHOUT_BROWSER();
   const std::string name = GetParam();
-  ASSERT_EQ(run({"generate", (kExamples / "scenes" / (name + ".json")).string(), "-o",
-                 at("db.json"), "--quiet"})
-                .code,
-            0);
-  std::vector<std::vector<std::string>> pages = {{"view", at("db.json"), "-o", at("page")}};
-  const std::map<std::string, std::string> paths = {{"garden", "march21"}, {"roof", "dec21"}};
-  if (paths.count(name) != 0) {
-    pages.push_back({"view", at("db.json"), "-o", at("page"), "--sun-hours", paths.at(name)});
-  }
-  for (const std::vector<std::string>& args : pages) {
-    SCOPED_TRACE(args.back());
-    const Outcome outcome = run(args);
-    ASSERT_EQ(outcome.code, 0) << outcome.err;
-    const nlohmann::json result = check_page(dir_ / "page", "", dir_);
+  const fs::path pages = dir_ / "pages";
+  ASSERT_EQ(shell("bash " + quoted((kExamples / "view_examples.sh").string()) + " " +
+                  quoted(SHADOWGEN_EXECUTABLE) + " --out " + quoted(pages.string()) + " " +
+                  quoted(name) + " >" + quoted((dir_ / "script.out").string()) + " 2>&1"),
+            0)
+      << contents(dir_ / "script.out");
+  const std::vector<std::string> made = sorted_names(pages, dir_ / "run");
+  const std::set<std::string> with_path = {"garden", "roof"};
+  std::vector<std::string> expected = {name};
+  if (with_path.count(name) != 0) expected.push_back(name + "-sun-hours");
+  EXPECT_EQ(made, expected);
+  for (const std::string& page : made) {
+    SCOPED_TRACE(page);
+    const nlohmann::json result = check_page(pages / page, "", dir_);
     ExpectCleanPage(result);
-    if (result.is_null()) continue;
+    if (result.is_null() || result["ready"] != true) continue;
     // A band no region falls in is listed but has nothing to draw.
     const auto drawn =
         std::count_if(result["groups"].begin(), result["groups"].end(),
