@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/run_progress.h"
 #include "cli/sun_hours_options.h"
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/viewer/viewer_model.h"
@@ -43,16 +44,21 @@ void run_view(const ViewArgs& args) {
                                     {"-o", (dir / "viewer.js").string()},
                                     {"-o", (dir / "model.js").string()}}});
   load_to_draw(load, args.sun_hours, args.input);
+  RunProgress progress(args.input, progress_stream(args.reading.quiet));
+  progress.watch(load);
   const ShadowedScene shadowed = load_shadowed(args.input, load);
   std::optional<SunHoursMap> map;
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.input);
+  progress.stage(map ? "splitting faces by bands of sun hours" : "splitting faces by light sets");
   ViewerModel model;
   try {
     model = map ? viewer_model(shadowed, *map->path, map->bands) : viewer_model(shadowed);
   } catch (const GenerationError& e) {
     throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
   }
+  progress.stage("writing " + args.dir);
   write_viewer_page(dir, assets, viewer_model_script(model));
+  progress.finish();
 }
 
 void add_view_options(CLI::App& command, ViewArgs& args) {
@@ -61,7 +67,7 @@ void add_view_options(CLI::App& command, ViewArgs& args) {
                     "folder of the page (made if missing; its index.html, viewer.js and "
                     "model.js replaced)")
       ->required();
-  add_reading_options(command, args.reading);
+  add_reading_options(command, args.reading, /*progress=*/true);
   CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "show");
   sun_hours->excludes(command.get_option("--lights"));
 }
