@@ -199,6 +199,39 @@ TEST_F(ViewCli, PixelsWhereTheDatabaseSaysLitOrShadowedShowThoseLightSetsColours
   EXPECT_NE(result["points"][3]["rgb"], nlohmann::json({244, 244, 242}));
 }
 
+TEST_F(ViewCli, ALightSwitchedOffAndTheFaceUnderThePointerShowWhatTheDatabaseSays) {
+  SKIP_WITHOUT_BROWSER();
+  write("scene.json", kBoxScene);
+  ASSERT_EQ(run({"generate", at("scene.json"), "-o", at("db.json"), "--quiet"}).code, 0);
+  ASSERT_EQ(run({"view", at("db.json"), "-o", at("page")}).code, 0);
+  write("points.json", R"([
+    {"name": "shadow", "at": [3.5, 1, 0]},
+    {"name": "diag", "at": [5, -1, 0]},
+    {"name": "east", "at": [4, 4, 0]},
+    {"name": "east+diag", "at": [-6, 6, 0]}
+  ])");
+  const nlohmann::json result =
+      check_page(dir_ / "page",
+                 "--hash " + quoted("camera=top&panels=off") + " --switch-off light:diag" +
+                     " --hover 3.5,1,0 --points " + quoted((dir_ / "points.json").string()),
+                 dir_);
+  ExpectCleanPage(result);
+  if (result.is_null() || result["ready"] != true) return;
+  // With diag off, what it alone lit is in shadow (0.2), and what both lit is east's (0.6).
+  const std::map<std::string, int> expected = {
+      {"shadow", 51}, {"diag", 51}, {"east", 153}, {"east+diag", 153}};
+  ASSERT_EQ(result["points"].size(), 4u);
+  for (const nlohmann::json& point : result["points"]) {
+    SCOPED_TRACE(point.dump());
+    ASSERT_TRUE(point["rgb"].is_array());
+    EXPECT_NEAR(point["rgb"][0].get<int>(), expected.at(point["name"]), 1);
+  }
+  // The ground's id, area and lit areas (368 and 352 of 400), and the light set there.
+  EXPECT_EQ(result["hover"],
+            nlohmann::json({"face ground", "area 400 m²", "lit by east: 368 m² (92.0 %)",
+                            "lit by diag: 352 m² (88.0 %)", "here: shadow (no light)"}));
+}
+
 // Every example scene's pages, as the build target example_viewer_pages makes them
 // (examples/view_examples.sh, here into the test's folder): the scene's page and, for a
 // scene with a sun path, its sun-hours page; each loads cleanly and draws.

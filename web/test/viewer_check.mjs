@@ -2,15 +2,19 @@
 // URL, and reports what a test needs to judge it, as one JSON object on standard output:
 //
 //   node web/test/viewer_check.mjs PAGE_DIR [--hash camera=top] [--points POINTS.json]
+//                                  [--switch-off light:ID|group:NAME ...] [--hover X,Y,Z]
 //                                  [--screenshot OUT.png] [--width W] [--height H]
 //
 //   {"console_errors": [...], "page_errors": [...], "failed_requests": [...],
 //    "ready": true, "groups": [{"name": "sun", "colour": 16777215}, ...],
-//    "points": [{"name": ..., "x": ..., "y": ..., "rgb": [r, g, b]}, ...]}
+//    "points": [{"name": ..., "x": ..., "y": ..., "rgb": [r, g, b]}, ...],
+//    "hover": ["face ground", "area 400 m²", ...]}
 //
 // POINTS.json is a list of {"name", "at": [x, y, z]} in the scene's coordinates; each is
 // projected by the page (window.shadowgenViewer.project) and its pixel read from a
-// screenshot of the page, decoded by the browser. The browser is Debian's chromium
+// screenshot of the page, decoded by the browser. --switch-off unchecks a legend box (a
+// light's, or a light set's or band's) first; --hover moves the pointer onto a point of
+// the scene last and gives the lines of the hover box. The browser is Debian's chromium
 // (/usr/bin/chromium, or $CHROMIUM), driven by playwright-core, WebGL drawn on the CPU
 // (SwiftShader). Exit 0 when the page could be judged, 1 otherwise (the reason on stderr).
 import { chromium } from 'playwright-core';
@@ -19,13 +23,15 @@ import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 function parseArgs(argv) {
-  const args = { hash: '', points: null, screenshot: null, width: 800, height: 600 };
+  const args = { hash: '', points: null, screenshot: null, width: 800, height: 600, off: [], hover: null };
   const rest = [];
   for (let i = 0; i < argv.length; ++i) {
     const option = argv[i];
     if (option === '--hash') args.hash = argv[++i];
     else if (option === '--points') args.points = argv[++i];
     else if (option === '--screenshot') args.screenshot = argv[++i];
+    else if (option === '--switch-off') args.off.push(argv[++i]);
+    else if (option === '--hover') args.hover = argv[++i].split(',').map(Number);
     else if (option === '--width') args.width = Number(argv[++i]);
     else if (option === '--height') args.height = Number(argv[++i]);
     else rest.push(option);
@@ -66,6 +72,18 @@ async function main() {
       result.ready = false;
     }
     if (result.ready) {
+      for (const what of args.off) {
+        const [kind, ...rest] = what.split(':');
+        const found = await page.evaluate(({ kind, name }) => {
+          const box = [...document.querySelectorAll(`input[data-${kind}]`)].find(
+            (b) => b.dataset[kind] === name);
+          if (!box) return false;
+          box.checked = false;
+          box.dispatchEvent(new Event('change'));
+          return true;
+        }, { kind, name: rest.join(':') });
+        if (!found) throw new Error(`no legend box ${what}`);
+      }
       result.groups = await page.evaluate(() => window.shadowgenViewer.groups());
       const shot = await page.screenshot({ type: 'png' });
       if (args.screenshot) writeFileSync(args.screenshot, shot);
@@ -86,6 +104,12 @@ async function main() {
             return { name: point.name, x, y, rgb };
           });
         }, { points, png: shot.toString('base64') });
+      }
+      if (args.hover) {
+        const at = await page.evaluate((p) => window.shadowgenViewer.project(...p), args.hover);
+        await page.mouse.move(at.x, at.y);
+        result.hover = await page.evaluate(
+          () => [...document.getElementById('info').children].map((line) => line.textContent));
       }
     }
   } finally {

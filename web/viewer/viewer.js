@@ -210,8 +210,9 @@ function buildLegend() {
 // The face under the pointer: its id, area and lit area per light (or mean sun hours).
 const info = document.getElementById('info');
 const raycaster = new THREE.Raycaster();
+// Four significant digits, or one decimal from 100 on; no trailing zeros.
 function number(x) {
-  return Math.abs(x) >= 100 ? x.toFixed(1) : x.toPrecision(4).replace(/\.?0+$/, '');
+  return String(Number(Math.abs(x) >= 100 ? x.toFixed(1) : x.toPrecision(4)));
 }
 function describe(g, faceIndex) {
   const face = meta.faces[faceIndex];
