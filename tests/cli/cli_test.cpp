@@ -354,7 +354,7 @@ TEST_F(Cli, UsageErrorsExitTwo) {
 // "A subcommand is required" of `shadowgen frobnicate`); every parse error begins with
 // "shadowgen: " as the other errors do, then the hint.
 TEST_F(Cli, AnUnknownSubcommandIsNamedWithTheSubcommandsThereAre) {
-  const std::string names = "generate, report, export, render, sun, merge, compare";
+  const std::string names = "generate, report, export, render, sun, merge, compare, view";
   const std::string hint = "\nRun with --help for more information.\n";
   const Outcome unknown = run({"frobnicate", "x.json"});
   EXPECT_EQ(unknown.code, 2);
