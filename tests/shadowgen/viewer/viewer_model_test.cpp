@@ -132,7 +132,7 @@ TEST(ViewerModel, EachLightSetsTrianglesAddUpToItsHandComputedArea) {
   // The colour rule of obj_export.h: shadow 0.2, one of two equal lights 0.6, both white.
   EXPECT_EQ(meta["groups"][0]["colour"], nlohmann::json({0.2, 0.2, 0.2}));
   EXPECT_EQ(meta["groups"][3]["colour"], nlohmann::json({1.0, 1.0, 1.0}));
-  EXPECT_EQ(meta["groups"][1]["lights"], nlohmann::json({0}));
+  EXPECT_EQ(meta["groups"][1]["lights"], nlohmann::json::array({0}));
   EXPECT_EQ(meta["groups"][3]["lights"], nlohmann::json({0, 1}));
   // Materials: unlit, double-sided, named as the group, the colour in linear sRGB.
   const nlohmann::json& material = glb.json["materials"][0];
