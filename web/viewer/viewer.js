@@ -170,6 +170,13 @@ function toggle(data, before, text, change) {
   return label;
 }
 
+// Without a site, north is not known: the arrow shows the scene's +y and says so.
+function labelNorth() {
+  if (meta.north_axis_deg !== undefined) return;
+  document.getElementById('north-label').textContent = '+y';
+  document.getElementById('north').title = 'The scene has no site: the arrow shows its +y';
+}
+
 function buildLegend() {
   const legend = document.getElementById('legend');
   const title = document.createElement('h2');
@@ -296,6 +303,7 @@ new GLTFLoader().parse(decodeBase64(model.glb), '', (gltf) => {
   box.setFromObject(root);
   fitCameras();
   buildLegend();
+  labelNorth();
   recolour();
   window.shadowgenViewer.ready = true;
 }, (error) => {
