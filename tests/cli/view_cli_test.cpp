@@ -232,6 +232,27 @@ TEST_F(ViewCli, ALightSwitchedOffAndTheFaceUnderThePointerShowWhatTheDatabaseSay
                             "lit by diag: 352 m² (88.0 %)", "here: shadow (no light)"}));
 }
 
+TEST_F(ViewCli, TheNorthArrowPointsToTrueNorthFromTheSitesNorthAxis) {
+  SKIP_WITHOUT_BROWSER();
+  // The scene's +y is 30° clockwise from true north, so seen from above with +y up the
+  // screen, north is 30° counter-clockwise from up: -30°. Without a site, +y: 0°.
+  std::string scene = kBoxScene;
+  scene.insert(
+      scene.find("\"lights\""),
+      R"("site": {"latitude_deg": 51.5, "longitude_deg": 0, "utc_offset_h": 0, "north_axis_deg": 30}, )");
+  write("scene.json", scene);
+  ASSERT_EQ(run({"view", at("scene.json"), "-o", at("page")}).code, 0);
+  nlohmann::json result = check_page(dir_ / "page", "--hash camera=top", dir_);
+  ExpectCleanPage(result);
+  if (result.is_null() || result["ready"] != true) return;
+  EXPECT_NEAR(result["north"].get<double>(), -30.0, 1e-6);
+  write("scene.json", kBoxScene);
+  ASSERT_EQ(run({"view", at("scene.json"), "-o", at("page")}).code, 0);
+  result = check_page(dir_ / "page", "--hash camera=top", dir_);
+  ASSERT_FALSE(result.is_null());
+  EXPECT_NEAR(result["north"].get<double>(), 0.0, 1e-6);
+}
+
 // Every example scene's pages, as the build target example_viewer_pages makes them
 // (examples/view_examples.sh, here into the test's folder): the scene's page and, for a
 // scene with a sun path, its sun-hours page; each loads cleanly and draws.

@@ -7,6 +7,7 @@
 //
 //   {"console_errors": [...], "page_errors": [...], "failed_requests": [...],
 //    "ready": true, "groups": [{"name": "sun", "colour": 16777215}, ...],
+//    "north": the north arrow's angle, degrees clockwise from the screen's up,
 //    "points": [{"name": ..., "x": ..., "y": ..., "rgb": [r, g, b]}, ...],
 //    "hover": ["face ground", "area 400 m²", ...]}
 //
@@ -85,6 +86,7 @@ async function main() {
         if (!found) throw new Error(`no legend box ${what}`);
       }
       result.groups = await page.evaluate(() => window.shadowgenViewer.groups());
+      result.north = await page.evaluate(() => window.shadowgenViewer.north());
       const shot = await page.screenshot({ type: 'png' });
       if (args.screenshot) writeFileSync(args.screenshot, shot);
       if (args.points) {

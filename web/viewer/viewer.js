@@ -135,6 +135,7 @@ function fitCameras() {
 // The north arrow: where true north points on the screen, from the site's north axis (the
 // angle from true north to the scene's +y, clockwise seen from above).
 const northNeedle = document.getElementById('north-needle');
+let northAngle = 0;  // degrees, clockwise from the screen's up
 function updateNorth() {
   const a = THREE.MathUtils.degToRad(meta.north_axis_deg || 0);
   const north = [-Math.sin(a), Math.cos(a)];
@@ -146,6 +147,7 @@ function updateNorth() {
   const dy = -(q.y - p.y) * container.clientHeight;
   const angle = THREE.MathUtils.radToDeg(Math.atan2(dx, -dy));
   northNeedle.setAttribute('transform', `rotate(${angle.toFixed(2)})`);
+  northAngle = angle;
 }
 
 function render() {
@@ -268,12 +270,16 @@ window.addEventListener('resize', () => {
 });
 
 // For tests: whether the page is drawn, where a point of the scene lands on the screen (CSS
-// pixels from the page's top left), and the colour each group shows (sRGB bytes).
+// pixels from the page's top left), the colour each group shows (sRGB bytes), and where the
+// north arrow points (degrees clockwise from the screen's up).
 window.shadowgenViewer = {
   ready: false,
   project(x, y, z) {
     const p = toWorld([x, y, z]).project(camera);
     return { x: ((p.x + 1) / 2) * container.clientWidth, y: ((1 - p.y) / 2) * container.clientHeight };
+  },
+  north() {
+    return northAngle;
   },
   groups() {
     return meta.groups.map((group, g) => ({
