@@ -21,15 +21,13 @@
 // on its own vertices in its part's plane (shadowgen/sampled/part_triangles.h), written
 // once; the page shows both sides.
 //
-// The page's description (JSON): title (the input's file name), caption (lines above the legend), groups (name,
-// label, colour in sRGB, and for a light set the indices of its lights in `lights`, or
-// for a band its hours from and to), lights (the lights some light set holds: id,
-// intensity), total_intensity (of every light of the scene, over which the colour rule of
-// obj_export.h divides), faces (id, area, and per light in `lights` the lit area; or the
-// area-weighted mean sun hours), origin, the scene's views, and the site's north_axis_deg
-// where the scene has a site.
+// The page's description (JSON): title (the input's file name), caption (lines above the legend),
+// groups (name, label, colour in sRGB, and for a light set the indices of its lights in `lights`,
+// or for a band its hours from and to), lights (the lights some light set holds: id, intensity),
+// total_intensity (of every light of the scene, over which the colour rule of obj_export.h
+// divides), faces (id, area, and per light in `lights` the lit area; or the area-weighted mean sun
+// hours), origin, the scene's views, and the site's north_axis_deg where the scene has a site.
 
-#include <cstdint>
 #include <string>
 
 #include "shadowgen/model/shadowed_scene.h"
