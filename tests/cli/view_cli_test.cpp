@@ -59,13 +59,15 @@ nlohmann::json check_page(const fs::path& page, const std::string& extra, const 
   return nlohmann::json::parse(contents(out));
 }
 
-// A page that loaded cleanly: drawn, nothing logged as an error, nothing failed to load.
+// A page that loaded cleanly: drawn, nothing logged as an error, nothing failed to load,
+// nothing asked of the network.
 void ExpectCleanPage(const nlohmann::json& result) {
   ASSERT_FALSE(result.is_null());
   EXPECT_EQ(result["ready"], true) << result.dump();
   EXPECT_EQ(result["console_errors"], nlohmann::json::array()) << result.dump();
   EXPECT_EQ(result["page_errors"], nlohmann::json::array()) << result.dump();
   EXPECT_EQ(result["failed_requests"], nlohmann::json::array()) << result.dump();
+  EXPECT_EQ(result["network_requests"], nlohmann::json::array()) << result.dump();
 }
 
 // A ground 20 × 20 centred on the origin and a closed box 4 × 4 × 4 on [-2,2]², under two

@@ -6,6 +6,7 @@
 //                                  [--screenshot OUT.png] [--width W] [--height H]
 //
 //   {"console_errors": [...], "page_errors": [...], "failed_requests": [...],
+//    "network_requests": [URLs the page asked for beyond file:, data: and blob:],
 //    "ready": true, "groups": [{"name": "sun", "colour": 16777215}, ...],
 //    "north": the north arrow's angle, degrees clockwise from the screen's up,
 //    "points": [{"name": ..., "x": ..., "y": ..., "rgb": [r, g, b]}, ...],
@@ -51,13 +52,18 @@ async function main() {
     headless: true,
     args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox'],
   });
-  const result = { console_errors: [], page_errors: [], failed_requests: [], ready: false };
+  const result = {
+    console_errors: [], page_errors: [], failed_requests: [], network_requests: [], ready: false,
+  };
   try {
     const page = await browser.newPage({ viewport: { width: args.width, height: args.height } });
     page.on('console', (message) => {
       if (message.type() === 'error') result.console_errors.push(message.text());
     });
     page.on('pageerror', (error) => result.page_errors.push(String(error)));
+    page.on('request', (request) => {
+      if (!/^(file|data|blob):/.test(request.url())) result.network_requests.push(request.url());
+    });
     page.on('requestfailed', (request) =>
       result.failed_requests.push(`${request.url()}: ${request.failure()?.errorText}`));
     page.on('response', (response) => {
