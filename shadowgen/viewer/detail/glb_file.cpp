@@ -98,27 +98,37 @@ std::string glb_file(std::span<const GlbMesh> meshes, const glm::dvec3& translat
     scene_nodes.push_back(nodes.size() - 1);
   }
   gltf["scenes"] = {{{"nodes", scene_nodes}}};
-  gltf["nodes"] = nodes;
-  gltf["meshes"] = gltf_meshes;
-  gltf["materials"] = materials;
-  gltf["accessors"] = accessors;
-  gltf["bufferViews"] = views;
-  gltf["buffers"] = {{{"byteLength", bin.size()}}};
+  // A model without meshes (a scene of faces without area and without outlines) has no
+  // buffer, which glTF wants of at least one byte, and no binary chunk.
+  if (!meshes.empty()) {
+    gltf["nodes"] = nodes;
+    gltf["meshes"] = gltf_meshes;
+    gltf["materials"] = materials;
+    gltf["accessors"] = accessors;
+    gltf["bufferViews"] = views;
+    gltf["buffers"] = {{{"byteLength", bin.size()}}};
+  }
 
   std::string json = gltf.dump();
   json.resize((json.size() + 3) / 4 * 4, ' ');
   bin.resize((bin.size() + 3) / 4 * 4, '\0');
+  const std::size_t length = 12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size());
+  if (length > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::length_error("glb_file: a binary glTF holds at most 4 GiB");
+  }
   std::string out;
-  out.reserve(12 + 8 + json.size() + 8 + bin.size());
+  out.reserve(length);
   append_u32(out, kGlbMagic);
   append_u32(out, kGlbVersion);
-  append_u32(out, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  append_u32(out, static_cast<std::uint32_t>(length));
   append_u32(out, static_cast<std::uint32_t>(json.size()));
   append_u32(out, kChunkJson);
   out += json;
-  append_u32(out, static_cast<std::uint32_t>(bin.size()));
-  append_u32(out, kChunkBin);
-  out += bin;
+  if (!bin.empty()) {
+    append_u32(out, static_cast<std::uint32_t>(bin.size()));
+    append_u32(out, kChunkBin);
+    out += bin;
+  }
   return out;
 }
 

@@ -22,10 +22,11 @@ struct GlbMesh {
   nlohmann::json node_extras;    // the node's extras; null: none
 };
 
-// The file. Every mesh has at least one vertex (whole triangles or lines); every node is
-// translated by `translation`. Materials are unlit (KHR_materials_unlit), double-sided,
-// their baseColorFactor the colour in linear sRGB (as glTF's factors are), named as their
-// mesh.
+// The file. Every mesh has at least one vertex (whole triangles or lines), else
+// std::invalid_argument; no mesh at all gives a file of one empty scene, without a binary
+// chunk. Every node is translated by `translation`. Over 4 GiB, std::length_error. Materials are
+// unlit (KHR_materials_unlit), double-sided, their baseColorFactor the colour in linear sRGB (as
+// glTF's factors are), named as their mesh.
 std::string glb_file(std::span<const GlbMesh> meshes, const glm::dvec3& translation);
 
 // sRGB to linear sRGB, one channel in [0, 1] (IEC 61966-2-1).

@@ -242,6 +242,15 @@ TEST(GlbFile, AMeshWithoutWholeVerticesIsACallersMistake) {
   EXPECT_THROW(detail::glb_file({&mesh, 1}, glm::dvec3(0.0)), std::invalid_argument);
 }
 
+TEST(GlbFile, NoMeshIsOneEmptySceneWithoutABinaryChunk) {
+  const std::string glb = detail::glb_file({}, glm::dvec3(0.0));
+  ASSERT_EQ(u32(glb, 8), glb.size());
+  EXPECT_EQ(glb.size(), 20 + u32(glb, 12));
+  const nlohmann::json json = nlohmann::json::parse(glb.substr(20));
+  EXPECT_EQ(json["scenes"], nlohmann::json::parse(R"([{"nodes": []}])"));
+  EXPECT_FALSE(json.contains("buffers"));
+}
+
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
