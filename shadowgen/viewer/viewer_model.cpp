@@ -1,12 +1,17 @@
 #include "shadowgen/viewer/viewer_model.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <glm/common.hpp>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "detail/base64.h"
@@ -27,6 +32,25 @@ using LightSet = std::vector<std::size_t>;
 glm::dvec3 gltf_axes(const glm::dvec3& p) { return {p.x, p.z, -p.y}; }
 
 nlohmann::json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+// The angle from true north to the scene's +y, clockwise seen from above: the site's, or
+// else, for a database (which keeps its sun's instants but not its site), what a sun
+// instant's azimuth and direction say: the way to the sun is at its azimuth clockwise from
+// north, and at atan2(x, y) clockwise from +y. None where neither is known, or the only
+// suns stand overhead.
+std::optional<double> north_axis_deg(const Scene& scene) {
+  if (scene.site) return scene.site->north_axis_deg;
+  for (const Light& light : scene.lights) {
+    if (!light.sun) continue;
+    const glm::dvec3 to_sun = -light.direction;
+    if (to_sun.x == 0.0 && to_sun.y == 0.0) continue;
+    const double from_y = std::atan2(to_sun.x, to_sun.y) * 180.0 / std::numbers::pi;
+    double north = light.sun->azimuth_deg - from_y;
+    north -= 360.0 * std::round(north / 360.0);  // in [-180, 180]
+    return north;
+  }
+  return std::nullopt;
+}
 
 // The model in the making: one triangle mesh per group, the outlines, the description.
 class ModelBuilder {
@@ -53,10 +77,18 @@ class ModelBuilder {
         throw GenerationError("", scene_.faces[face].id, "",
                               "a region could not be split into triangles for the viewer");
       }
+      // A vertex is shared by the piece's triangles (the ear clipping's corners are the
+      // piece's own vertices, so equal points are one vertex).
+      std::map<std::tuple<double, double, double>, std::uint32_t> index;
       for (const sampled::Triangle3& t : triangles.triangles) {
         for (const glm::dvec3& p : {t.a, t.b, t.c}) {
-          add_position(mesh.positions, p);
-          mesh.faces.push_back(static_cast<float>(face));
+          const auto [at, added] =
+              index.try_emplace({p.x, p.y, p.z}, static_cast<std::uint32_t>(mesh.faces.size()));
+          if (added) {
+            add_position(mesh.positions, p);
+            mesh.faces.push_back(static_cast<float>(face));
+          }
+          mesh.indices.push_back(at->second);
         }
       }
     }
@@ -90,7 +122,9 @@ class ModelBuilder {
                        {"fov_deg", view.fov_deg}});
     }
     description["views"] = views;
-    if (scene_.site) description["north_axis_deg"] = scene_.site->north_axis_deg;
+    if (const std::optional<double> north = north_axis_deg(scene_)) {
+      description["north_axis_deg"] = *north;
+    }
     ViewerModel model;
     model.glb = detail::glb_file(meshes, gltf_axes(origin_));
     model.description = description.dump();

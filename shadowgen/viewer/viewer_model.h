@@ -26,7 +26,8 @@
 // or for a band its hours from and to), lights (the lights some light set holds: id, intensity),
 // total_intensity (of every light of the scene, over which the colour rule of obj_export.h
 // divides), faces (id, area, and per light in `lights` the lit area; or the area-weighted mean sun
-// hours), origin, the scene's views, and the site's north_axis_deg where the scene has a site.
+// hours), origin, the scene's views, and north_axis_deg: the site's, or else what a sun
+// light's azimuth and direction give (a database keeps no site), where either is known.
 
 #include <string>
 

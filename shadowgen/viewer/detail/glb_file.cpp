@@ -15,7 +15,9 @@ constexpr std::uint32_t kGlbVersion = 2;
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 constexpr int kFloat = 5126;                      // componentType FLOAT
+constexpr int kUnsignedInt = 5125;                // componentType UNSIGNED_INT
 constexpr int kArrayBuffer = 34962;               // bufferView target ARRAY_BUFFER
+constexpr int kElementArrayBuffer = 34963;        // bufferView target ELEMENT_ARRAY_BUFFER
 constexpr int kModeLines = 1;
 constexpr int kModeTriangles = 4;
 
@@ -23,14 +25,18 @@ void append_u32(std::string& out, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) out += static_cast<char>(v >> (8 * i) & 0xff);
 }
 
-// Appends `values` to the binary chunk as one buffer view; returns its index.
-std::size_t add_view(std::string& bin, nlohmann::json& views, const std::vector<float>& values) {
+// Appends `values` (4-byte numbers, so every view stays aligned) to the binary chunk as one
+// buffer view for `target`; returns its index.
+template <class T>
+std::size_t add_view(std::string& bin, nlohmann::json& views, const std::vector<T>& values,
+                     int target) {
+  static_assert(sizeof(T) == 4);
   const std::size_t offset = bin.size();
-  const std::size_t bytes = values.size() * sizeof(float);
+  const std::size_t bytes = values.size() * sizeof(T);
   bin.resize(offset + bytes);
   std::memcpy(bin.data() + offset, values.data(), bytes);  // glTF is little-endian, as x86
   views.push_back(
-      {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", kArrayBuffer}});
+      {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}});
   return views.size() - 1;
 }
 
@@ -63,7 +69,7 @@ std::string glb_file(std::span<const GlbMesh> meshes, const glm::dvec3& translat
       hi[i % 3] = std::max(hi[i % 3], mesh.positions[i]);
     }
     nlohmann::json attributes;
-    accessors.push_back({{"bufferView", add_view(bin, views, mesh.positions)},
+    accessors.push_back({{"bufferView", add_view(bin, views, mesh.positions, kArrayBuffer)},
                          {"componentType", kFloat},
                          {"count", vertices},
                          {"type", "VEC3"},
@@ -71,7 +77,7 @@ std::string glb_file(std::span<const GlbMesh> meshes, const glm::dvec3& translat
                          {"max", hi}});
     attributes["POSITION"] = accessors.size() - 1;
     if (!mesh.faces.empty()) {
-      accessors.push_back({{"bufferView", add_view(bin, views, mesh.faces)},
+      accessors.push_back({{"bufferView", add_view(bin, views, mesh.faces, kArrayBuffer)},
                            {"componentType", kFloat},
                            {"count", vertices},
                            {"type", "SCALAR"}});
@@ -85,11 +91,21 @@ std::string glb_file(std::span<const GlbMesh> meshes, const glm::dvec3& translat
                            {"metallicFactor", 0.0}}},
                          {"doubleSided", true},
                          {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
-    gltf_meshes.push_back({{"name", mesh.name},
-                           {"primitives",
-                            {{{"attributes", attributes},
-                              {"material", materials.size() - 1},
-                              {"mode", mesh.lines ? kModeLines : kModeTriangles}}}}});
+    nlohmann::json primitive = {{"attributes", attributes},
+                                {"material", materials.size() - 1},
+                                {"mode", mesh.lines ? kModeLines : kModeTriangles}};
+    if (!mesh.indices.empty()) {
+      if (*std::max_element(mesh.indices.begin(), mesh.indices.end()) >= vertices) {
+        throw std::invalid_argument("glb_file: mesh '" + mesh.name + "' indexes no vertex");
+      }
+      accessors.push_back({{"bufferView", add_view(bin, views, mesh.indices, kElementArrayBuffer)},
+                           {"componentType", kUnsignedInt},
+                           {"count", mesh.indices.size()},
+                           {"type", "SCALAR"}});
+      primitive["indices"] = accessors.size() - 1;
+    }
+    gltf_meshes.push_back(
+        {{"name", mesh.name}, {"primitives", nlohmann::json::array({primitive})}});
     nlohmann::json node = {{"name", mesh.name},
                            {"mesh", gltf_meshes.size() - 1},
                            {"translation", {translation.x, translation.y, translation.z}}};

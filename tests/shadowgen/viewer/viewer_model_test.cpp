@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -75,6 +76,17 @@ std::vector<float> floats(const Glb& glb, std::size_t a) {
   return out;
 }
 
+// The unsigned integers of accessor `a`.
+std::vector<std::uint32_t> uints(const Glb& glb, std::size_t a) {
+  const nlohmann::json& accessor = glb.json["accessors"][a];
+  const nlohmann::json& view = glb.json["bufferViews"][accessor["bufferView"].get<std::size_t>()];
+  EXPECT_EQ(accessor["componentType"], 5125);
+  std::vector<std::uint32_t> out(view["byteLength"].get<std::size_t>() / sizeof(std::uint32_t));
+  std::memcpy(out.data(), glb.bin.data() + view["byteOffset"].get<std::size_t>(),
+              out.size() * sizeof(std::uint32_t));
+  return out;
+}
+
 // Per group of the page: the area of its triangles, and the faces they belong to.
 struct GroupTriangles {
   double area = 0.0;
@@ -90,18 +102,22 @@ std::map<std::size_t, GroupTriangles> group_triangles(const Glb& glb) {
     EXPECT_EQ(primitive["mode"], 4);
     const std::vector<float> p = floats(glb, primitive["attributes"]["POSITION"]);
     const std::vector<float> f = floats(glb, primitive["attributes"]["_FACE"]);
+    const std::vector<std::uint32_t> index = uints(glb, primitive["indices"]);
     EXPECT_EQ(p.size(), 3 * f.size());
-    EXPECT_EQ(f.size() % 3, 0u);
+    EXPECT_EQ(index.size() % 3, 0u);
     GroupTriangles& group = groups[node["extras"]["group"].get<std::size_t>()];
-    for (std::size_t t = 0; t + 2 < f.size(); t += 3) {
-      const glm::dvec3 a(p[3 * t], p[3 * t + 1], p[3 * t + 2]);
-      const glm::dvec3 b(p[3 * t + 3], p[3 * t + 4], p[3 * t + 5]);
-      const glm::dvec3 c(p[3 * t + 6], p[3 * t + 7], p[3 * t + 8]);
-      const glm::dvec3 n = glm::cross(b - a, c - a);
+    const auto vertex = [&](std::uint32_t i) {
+      return glm::dvec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+    };
+    for (std::size_t t = 0; t + 2 < index.size(); t += 3) {
+      const std::uint32_t i = index[t], j = index[t + 1], k = index[t + 2];
+      EXPECT_LT(std::max({i, j, k}), f.size());
+      if (std::max({i, j, k}) >= f.size()) return groups;
+      const glm::dvec3 n = glm::cross(vertex(j) - vertex(i), vertex(k) - vertex(i));
       group.area += 0.5 * std::sqrt(glm::dot(n, n));
-      EXPECT_EQ(f[t], f[t + 1]);
-      EXPECT_EQ(f[t], f[t + 2]);
-      group.faces.insert(static_cast<std::size_t>(f[t]));
+      EXPECT_EQ(f[i], f[j]);
+      EXPECT_EQ(f[i], f[k]);
+      group.faces.insert(static_cast<std::size_t>(f[i]));
     }
   }
   return groups;
@@ -180,6 +196,24 @@ TEST(ViewerModel, PositionsAreRelativeToTheSceneCentreInGltfAxes) {
   ASSERT_EQ(p.size(), 2u * 3u * 8u);  // two faces of four edges
   EXPECT_EQ(std::vector<float>(p.begin(), p.begin() + 6),
             (std::vector<float>{-5.0f, -0.5f, 5.0f, 5.0f, -0.5f, 5.0f}));
+}
+
+TEST(ViewerModel, TheNorthAxisIsTheSitesOrElseWhatASunInstantSays) {
+  // A site whose +y is 30° clockwise from north, and a sun at 10:00, at some azimuth A: its
+  // light comes from A clockwise of north, A − 30 clockwise of +y. A database keeps the sun
+  // but not the site: the north axis comes back from the two.
+  ShadowedScene shadowed = test::generated(R"({"format": "shadowgen-scene/1",
+    "polygons": [{"id": "g", "outer": [[0,0,0],[4,0,0],[4,4,0],[0,4,0]]}],
+    "site": {"latitude_deg": 51.5, "longitude_deg": 0, "utc_offset_h": 0, "north_axis_deg": 30},
+    "lights": [{"id": "sun", "type": "sun", "time": "2026-03-21T10:00"}]})");
+  EXPECT_EQ(nlohmann::json::parse(viewer_model(shadowed).description)["north_axis_deg"], 30.0);
+  shadowed.scene.site.reset();
+  EXPECT_NEAR(
+      nlohmann::json::parse(viewer_model(shadowed).description)["north_axis_deg"].get<double>(),
+      30.0, 1e-9);
+  shadowed.scene.lights[0].sun.reset();  // a plain directional light says nothing of north
+  EXPECT_FALSE(
+      nlohmann::json::parse(viewer_model(shadowed).description).contains("north_axis_deg"));
 }
 
 TEST(ViewerModel, SunHoursBandsHoldTheirRegionsAndFacesTheirMeanHours) {
