@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <glm/common.hpp>
-#include <map>
-#include <set>
 #include <stdexcept>
 #include <vector>
 
 #include "detail/obj_text.h"
+#include "detail/scene_regions.h"
 #include "hsr/area.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/shadows/generate.h"
@@ -16,22 +15,8 @@
 namespace shadowgen {
 namespace {
 
-using LightSet = std::vector<std::size_t>;
-
-// Material names, one per light set, unique.
-std::map<LightSet, std::string, LightSetLess> material_names(
-    const Scene& scene, const std::set<LightSet, LightSetLess>& sets) {
-  std::map<LightSet, std::string, LightSetLess> names;
-  std::set<std::string> taken;
-  for (const LightSet& s : sets) {
-    const std::string base = obj_name(light_set_name(scene, s));
-    std::string name = base;
-    for (int k = 2; taken.count(name) != 0; ++k) name = base + "~" + std::to_string(k);
-    taken.insert(name);
-    names.emplace(s, name);
-  }
-  return names;
-}
+using detail::LightSet;
+using detail::LightSetNames;
 
 std::string lights_comment(const Scene& scene, const LightSet& set) {
   if (set.empty()) return "# lights: none (shadow)\n";
@@ -43,29 +28,10 @@ std::string lights_comment(const Scene& scene, const LightSet& set) {
   return out + '\n';
 }
 
-// The regions of every face by light set, and the light sets that occur.
-struct SceneRegions {
-  std::vector<std::vector<LightRegion>> of_face;
-  std::set<LightSet, LightSetLess> sets;
-};
-
-SceneRegions scene_regions(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
-  check_lit_shape(shadowed, "obj_export");
-  SceneRegions regions;
-  regions.of_face.resize(scene.faces.size());
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    regions.of_face[f] = light_regions(shadowed, f);
-    for (const LightRegion& r : regions.of_face[f]) regions.sets.insert(r.lights);
-  }
-  return regions;
-}
-
 // One face's group: its "v" and "vn" lines, then a "usemtl" line per region and the
 // region's triangles.
 void append_face(std::string& obj, const Scene& scene, const Face& face,
-                 const std::vector<LightRegion>& regions,
-                 const std::map<LightSet, std::string, LightSetLess>& names,
+                 const std::vector<LightRegion>& regions, const LightSetNames& names,
                  detail::ObjNumbering& numbering) {
   obj += "g ";
   obj += obj_name(face.id);
@@ -85,8 +51,7 @@ void append_face(std::string& obj, const Scene& scene, const Face& face,
 }
 
 // The MTL file: a header saying how the colours are made, then one material per set.
-std::string mtl_text(const Scene& scene, const std::map<LightSet, std::string, LightSetLess>& names,
-                     std::string_view what) {
+std::string mtl_text(const Scene& scene, const LightSetNames& names, std::string_view what) {
   std::string mtl = "# shadowgen MTL: ";
   mtl += what;
   mtl += ".\n# Kd = ";
@@ -121,8 +86,7 @@ std::string face_group_name(std::string_view id) {
 // One face's block of layers by light: the face whole in shadow, then each light's lit
 // polygons on it.
 void append_face_layers(std::string& obj, const ShadowedScene& shadowed, std::size_t f,
-                        const std::map<LightSet, std::string, LightSetLess>& names,
-                        detail::ObjNumbering& numbering) {
+                        const LightSetNames& names, detail::ObjNumbering& numbering) {
   const Scene& scene = shadowed.scene;
   const Face& face = scene.faces[f];
   const std::string group = face_group_name(face.id);
@@ -157,8 +121,8 @@ void append_face_layers(std::string& obj, const ShadowedScene& shadowed, std::si
 // then each face's block as `append_face` writes it; the MTL of the materials `names`.
 template <typename AppendFace>
 ObjFiles export_files(const Scene& scene, std::string_view what, std::string_view mtl_file_name,
-                      const std::map<LightSet, std::string, LightSetLess>& names,
-                      std::string_view materials, AppendFace append_face) {
+                      const LightSetNames& names, std::string_view materials,
+                      AppendFace append_face) {
   ObjFiles files;
   std::string& obj = files.obj;
   obj += "# shadowgen OBJ export: ";
@@ -208,8 +172,8 @@ glm::dvec3 light_set_colour(const Scene& scene, std::span<const std::size_t> lig
 
 ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
   const Scene& scene = shadowed.scene;
-  const SceneRegions regions = scene_regions(shadowed);
-  const std::map<LightSet, std::string, LightSetLess> names = material_names(scene, regions.sets);
+  const detail::SceneRegions regions = detail::scene_regions(shadowed, "obj_export");
+  const LightSetNames names = detail::light_set_names(scene, regions.sets, obj_name);
   return export_files(scene, "faces split by the set of lights reaching them", mtl_file_name, names,
                       "one material per set of lights reaching a region",
                       [&](std::string& obj, std::size_t f, detail::ObjNumbering& numbering) {
@@ -221,13 +185,13 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
 ObjFiles obj_export_by_light(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
   const Scene& scene = shadowed.scene;
   check_lit_shape(shadowed, "obj_export_by_light");
-  std::set<LightSet, LightSetLess> sets = {LightSet{}};
+  detail::LightSets sets = {LightSet{}};
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
       if (!shadowed.lit.at(f, l).empty()) sets.insert(LightSet{l});
     }
   }
-  const std::map<LightSet, std::string, LightSetLess> names = material_names(scene, sets);
+  const LightSetNames names = detail::light_set_names(scene, sets, obj_name);
   return export_files(scene, "each face in shadow, each light's lit polygons over it",
                       mtl_file_name, names,
                       "the shadow, then one material per light reaching a face",

@@ -1,0 +1,38 @@
+#pragma once
+
+// The glTF file of the export (shadowgen/output/gltf_export.h, its layout and axes) from
+// its materials, each with its mesh and extras, written by tinygltf: the one place the
+// output room speaks glTF.
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "detail/gltf_mesh.h"
+#include "shadowgen/output/gltf_export.h"
+
+namespace shadowgen::detail {
+
+struct GltfMaterial {
+  std::string name;
+  glm::dvec3 colour{0.0};  // sRGB, each channel in [0, 1]
+  nlohmann::json extras;   // the material's extras (an object)
+  GltfMesh mesh;           // no mesh is written for an empty one
+};
+
+// The file's bytes: `materials` in order, each with a node and a mesh where it has
+// triangles; the root node at `origin` (scene coordinates); the pieces' columns as the
+// meshes' extras; `scene_extras` (an object) as the scene's. Throws std::length_error for
+// a buffer of 4 GiB or more.
+std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dvec3& origin,
+                      const nlohmann::json& scene_extras, GltfForm form);
+
+// The scene's point p, or direction, in glTF's axes: (x, z, −y).
+glm::dvec3 gltf_axes(const glm::dvec3& p);
+
+// An sRGB channel in [0, 1] as the linear value glTF's colour factors hold (the sRGB
+// transfer function, IEC 61966-2-1).
+double linear_from_srgb(double c);
+
+}  // namespace shadowgen::detail
