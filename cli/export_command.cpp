@@ -1,10 +1,11 @@
-// `shadowgen export`: the shadowed scene as a Wavefront OBJ and its MTL.
+// `shadowgen export`: the shadowed scene as a Wavefront OBJ and its MTL, or as glTF 2.0.
 
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/command.h"
@@ -13,6 +14,7 @@
 #include "cli/sun_hours_options.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/gltf_export.h"
 #include "shadowgen/output/obj_export.h"
 #include "shadowgen/output/sun_hours_export.h"
 #include "shadowgen/shadows/generate.h"
@@ -30,7 +32,11 @@ constexpr CommandText kExportText{
     "one layer per light, its lit polygons (group \"<face>@<light>\", one material per "
     "light), which grows linearly with the lights where light sets do not; or, with "
     "--sun-hours, a sun path's sun-hours regions grouped by face and band of hours, one "
-    "material per band. A scene is generated first; a shadowed database is read as it is."};
+    "material per band. A file ending \".glb\" (binary) or \".gltf\" (JSON, its buffer "
+    "embedded) gets the same regions (light sets, or with --sun-hours bands) as glTF 2.0: "
+    "one material per light set or band, +z up turned to glTF's +y up, face ids and areas "
+    "in extras (docs/scene-format.md, \"glTF export\"); -o may name an OBJ and a glTF "
+    "file at once. A scene is generated first; a shadowed database is read as it is."};
 
 // The MTL goes next to the OBJ, named with the OBJ's stem and ".mtl"; the stem escaped as
 // obj_name() escapes names ("my scene.obj" gets "my%20scene.mtl"), so that the OBJ's
@@ -39,35 +45,65 @@ constexpr CommandText kExportText{
 // (shadowgen/output/obj_export.h).
 struct ExportArgs {
   std::string input;                 // a scene (generated first) or a shadowed database
-  std::vector<std::string> outputs;  // -o: the OBJ file, told by its extension
+  std::vector<std::string> outputs;  // -o: the OBJ and glTF files, told by their extension
   std::string obj;                   // --obj: the OBJ file
+  std::string gltf;                  // --gltf: the glTF file, binary or JSON by extension
   ReadingArgs reading;
   SunHoursArgs sun_hours;  // --sun-hours: that path's regions by band instead
   bool by_light = false;   // --by-light: a layer per light instead of light sets
 };
 
-void run_export(const ExportArgs& args) {
+// The files to write: the OBJ, the binary glTF and the JSON glTF, each where named.
+std::vector<FormatOutput> export_outputs(const ExportArgs& args) {
   for (const std::string& output : args.outputs) {
     if (output == "-") throw UsageError("-o -: an OBJ and its MTL are two files, not one stream");
   }
-  std::vector<FormatOutput> formats{{"OBJ file", ".obj", "--obj", args.obj, ""}};
+  const std::optional<GltfForm> form = gltf_form_of(args.gltf);
+  if (!args.gltf.empty() && !form) {
+    throw UsageError("--gltf " + args.gltf +
+                     ": a glTF file's name ends in \".glb\" (binary) or \".gltf\" (JSON)");
+  }
+  const auto gltf_as = [&](GltfForm f) { return form == f ? args.gltf : std::string(); };
+  std::vector<FormatOutput> formats{
+      {"OBJ file", ".obj", "--obj", args.obj, ""},
+      {"binary glTF file", ".glb", "--gltf", gltf_as(GltfForm::kBinary), ""},
+      {"glTF file", ".gltf", "--gltf", gltf_as(GltfForm::kText), ""}};
   assign_outputs(args.outputs, formats);
+  if (formats[0].path.empty() && formats[1].path.empty() && formats[2].path.empty()) {
+    throw UsageError(
+        "-o FILE.obj, FILE.glb or FILE.gltf is required (--obj FILE and --gltf FILE name them "
+        "too)");
+  }
+  if (args.by_light && !(formats[1].path.empty() && formats[2].path.empty())) {
+    throw UsageError(
+        "--by-light writes OBJ layers; a glTF file takes the light sets or "
+        "--sun-hours");
+  }
+  return formats;
+}
+
+void run_export(const ExportArgs& args) {
+  const std::vector<FormatOutput> formats = export_outputs(args);
   const std::string& obj = formats[0].path;
-  const std::string& named_by = formats[0].named_by;
-  if (obj.empty()) throw UsageError("-o FILE.obj is required (--obj FILE names it too)");
-  const std::filesystem::path obj_path = obj;
-  const std::filesystem::path mtl_path =
-      obj_path.parent_path() / (obj_name(obj_path.stem().string()) + ".mtl");
-  if (mtl_path == obj_path || obj_path.filename().empty()) {
-    throw InputError(obj, "",
-                     "not a usable OBJ file name: the MTL file goes next to it, named with "
-                     "the same stem and \".mtl\"");
+  std::vector<OutputFile> writes;
+  std::filesystem::path mtl_path;
+  if (!obj.empty()) {
+    if (obj == "-") throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
+    const std::filesystem::path obj_path = obj;
+    mtl_path = obj_path.parent_path() / (obj_name(obj_path.stem().string()) + ".mtl");
+    if (mtl_path == obj_path || obj_path.filename().empty()) {
+      throw InputError(obj, "",
+                       "not a usable OBJ file name: the MTL file goes next to it, named with "
+                       "the same stem and \".mtl\"");
+    }
+    writes.push_back({formats[0].named_by, obj});
+    writes.push_back({formats[0].named_by + "'s MTL", mtl_path.string()});
+  }
+  for (std::size_t f = 1; f < formats.size(); ++f) {
+    if (!formats[f].path.empty()) writes.push_back({formats[f].named_by, formats[f].path});
   }
 
-  if (obj == "-") throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
-  LoadOptions load = load_options(
-      args.reading, Accept::kSceneOrDatabase,
-      {{args.input}, {{named_by, obj_path.string()}, {named_by + "'s MTL", mtl_path.string()}}});
+  LoadOptions load = load_options(args.reading, Accept::kSceneOrDatabase, {{args.input}, writes});
   // A sun-hours export writes a path's sums, not its instants' lit polygons; a scene
   // without that path is refused before its shadows are computed.
   load_to_draw(load, args.sun_hours, args.input);
@@ -79,27 +115,41 @@ void run_export(const ExportArgs& args) {
   progress.stage(map             ? "splitting faces by bands of sun hours"
                  : args.by_light ? "laying out each light's lit polygons"
                                  : "splitting faces by light sets");
-  ObjFiles files;
+  // Every file's text is complete before any file is touched, and all are written as one
+  // set: the MTL before the OBJ that names it, so a failed run leaves them as they were.
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
   try {
-    files =
-        map ? sun_hours_obj_export(shadowed, *map->path, map->bands, mtl_path.filename().string())
-        : args.by_light ? obj_export_by_light(shadowed, mtl_path.filename().string())
-                        : obj_export(shadowed, mtl_path.filename().string());
+    if (!obj.empty()) {
+      const std::string mtl_name = mtl_path.filename().string();
+      ObjFiles texts = map ? sun_hours_obj_export(shadowed, *map->path, map->bands, mtl_name)
+                       : args.by_light ? obj_export_by_light(shadowed, mtl_name)
+                                       : obj_export(shadowed, mtl_name);
+      files.emplace_back(mtl_path, std::move(texts.mtl));
+      files.emplace_back(obj, std::move(texts.obj));
+    }
+    for (const GltfForm form : {GltfForm::kBinary, GltfForm::kText}) {
+      const std::string& path = formats[form == GltfForm::kBinary ? 1 : 2].path;
+      if (path.empty()) continue;
+      files.emplace_back(path, map ? sun_hours_gltf_export(shadowed, *map->path, map->bands, form)
+                                   : gltf_export(shadowed, form));
+    }
   } catch (const GenerationError& e) {
     throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
   }
-  // Both texts are complete before either file is touched, and written as one set: the
-  // MTL first, the OBJ that names it last, so a failed run leaves both as they were.
-  progress.stage("writing " + obj);
-  write_files_atomically({{mtl_path, files.mtl}, {obj_path, files.obj}});
+  std::vector<OutputText> texts;
+  for (const auto& [path, text] : files) texts.push_back({path, text});
+  progress.stage("writing " + files.back().first.string());
+  write_files_atomically(texts);
   progress.finish();
 }
 
 void add_export_options(CLI::App& command, ExportArgs& args) {
   add_input_option(command, args.input);
   add_outputs_option(command, args.outputs,
-                     "FILE.obj: the OBJ file to write (replaced whole); the MTL goes next to it");
+                     "FILE.obj: the OBJ file to write (replaced whole), the MTL next to it; "
+                     "FILE.glb or FILE.gltf: a glTF file (binary, or JSON)");
   command.add_option("--obj", args.obj, "OBJ file to write, as -o FILE.obj does");
+  command.add_option("--gltf", args.gltf, "glTF file to write, as -o FILE.glb or FILE.gltf does");
   add_reading_options(command, args.reading, /*progress=*/true);
   // A sun-hours export writes one path whole: there is nothing for --lights to choose.
   CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "write");

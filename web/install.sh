@@ -1,16 +1,34 @@
 #!/usr/bin/env bash
 # Installs the npm packages pinned in web/package-lock.json into web/node_modules: three.js
-# (the viewer page, bundled at build time by esbuild) and playwright-core (which drives
-# Chromium in the viewer's test). `npm ci` installs exactly the lockfile, from the npm
-# registry alone, and runs no package's install scripts (esbuild's binary comes as a
-# package of its own). Idempotent: while web/node_modules is newer than the lockfile,
-# nothing is done. Needs node 20 or later (playwright-core 1.65's engines).
+# (the viewer page, bundled at build time by esbuild), playwright-core (which drives
+# Chromium in the viewer's test) and the Khronos glTF validator (which checks every glTF
+# file the tests export). `npm ci` installs exactly the lockfile, from the npm registry
+# alone, each package's integrity checked, and runs no package's install scripts
+# (esbuild's binary comes as a package of its own). Node.js and npm come from Debian's
+# packages (nodejs, and npm where nodejs does not carry it) when no node is installed;
+# playwright-core 1.65 asks for node 20 or later. Idempotent: while web/node_modules is
+# newer than the lockfile, nothing is done. Run by .ci/install-deps.
 set -euo pipefail
 web=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-if ! command -v npm >/dev/null 2>&1; then
-  echo "web/install.sh: npm is missing (install node 20 or later with npm)" >&2
-  exit 1
-fi
+
+apt_install() {
+  local as_root=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null 2>&1; then
+      echo "web/install.sh: need root or sudo to install $*" >&2
+      exit 1
+    fi
+    as_root=(sudo)
+  fi
+  echo "web/install.sh: installing $*"
+  export DEBIAN_FRONTEND=noninteractive
+  "${as_root[@]}" apt-get update -q
+  "${as_root[@]}" apt-get install -y -q --no-install-recommends "$@"
+}
+
+command -v node >/dev/null 2>&1 || apt_install nodejs
+command -v npm >/dev/null 2>&1 || apt_install npm
+
 stamp=$web/node_modules/.package-lock.json
 # npm writes its record of what it installed last; newer than the lockfile, it is that.
 if [[ $stamp -nt $web/package-lock.json ]]; then
@@ -18,4 +36,5 @@ if [[ $stamp -nt $web/package-lock.json ]]; then
   exit 0
 fi
 cd "$web"
+echo "web/install.sh: npm ci in web/ (node $(node --version))"
 npm ci --ignore-scripts --no-audit --no-fund

@@ -16,6 +16,7 @@
 
 #include "tests/cli/cli_harness.h"
 #include "tests/cli/cli_scenes.h"
+#include "tests/support/gltf_file.h"
 #include "tests/support/obj_text.h"
 
 namespace shadowgen::test {
@@ -342,13 +343,125 @@ TEST_F(ExportCli, WarningsAndStrict) {
   EXPECT_FALSE(fs::exists(dir_ / "c.mtl"));
 }
 
+// Per face, from a glTF export's bytes: the area of its pieces' triangles, all of them
+// ("") and those of the materials whose light sets hold each light.
+std::map<std::string, std::map<std::string, double>> gltf_face_areas(GltfFile& file) {
+  std::map<std::string, std::map<std::string, double>> areas;
+  const nlohmann::json& ids = file.json["scenes"][0]["extras"]["faces"]["id"];
+  for (std::size_t m = 0; m < file.json["meshes"].size(); ++m) {
+    const nlohmann::json& mesh = file.json["meshes"][m];
+    const nlohmann::json& material =
+        file.json["materials"][mesh["primitives"][0]["material"].get<std::size_t>()];
+    const nlohmann::json& pieces = mesh["extras"]["pieces"];
+    const std::vector<GltfTriangle> triangles = mesh_triangles(file, m);
+    for (std::size_t k = 0; k < pieces["face"].size(); ++k) {
+      const std::size_t end = k + 1 < pieces["face"].size()
+                                  ? pieces["first_triangle"][k + 1].get<std::size_t>()
+                                  : triangles.size();
+      double area = 0.0;
+      for (std::size_t t = pieces["first_triangle"][k]; t < end; ++t) {
+        area += triangle_area(triangles[t]);
+      }
+      const std::string face = ids[pieces["face"][k].get<std::size_t>()];
+      areas[face][""] += area;
+      for (const auto& light : material["extras"]["lights"]) areas[face][light] += area;
+    }
+  }
+  return areas;
+}
+
+// --gltf: per face, its pieces' triangles add up to the report's area, those of the light
+// sets holding a light to its lit area, within float32's rounding of positions around the
+// courtyard's centre; the same from the scene and from the database, binary or JSON.
+TEST_F(ExportCli, GltfFacesAndLitAreasMatchTheReport) {
+  const fs::path db = dir_ / "courtyard.shadowed.json";
+  ASSERT_EQ(run({"generate", kCourtyard.string(), "-o", db.string()}).code, 0);
+  const Outcome report = run({"report", db.string()});
+  ASSERT_EQ(report.code, 0) << report.err;
+  const std::vector<ReportRow> rows = parse_report(report.out);
+  ASSERT_EQ(rows.size(), 6u);
+  for (const std::string name : {"db.glb", "db.gltf", "scene.glb"}) {
+    const fs::path input = name.rfind("db", 0) == 0 ? db : kCourtyard;
+    const Outcome exported = run({"export", input.string(), "--gltf", (dir_ / name).string()});
+    ASSERT_EQ(exported.code, 0) << exported.err;
+    EXPECT_EQ(exported.out, "");
+    EXPECT_EQ(exported.err, "");
+    keep_file_for_validator(dir_ / name);
+    GltfFile file = parse_gltf(contents(dir_ / name));
+    ASSERT_TRUE(file.errors.empty()) << file.errors.front();
+    EXPECT_EQ(file.json["scenes"][0]["extras"]["faces"]["id"],
+              nlohmann::json({"ground", "wall-south", "canopy"}));
+    auto areas = gltf_face_areas(file);
+    double worst = 0.0;
+    for (const ReportRow& row : rows) {
+      const double area_error = relative_error(areas[row.face][""], row.area);
+      const double lit_error = std::abs(areas[row.face][row.light] - row.lit_area) / row.area;
+      EXPECT_LE(area_error, 1e-6) << name << ", " << row.face;
+      EXPECT_LE(lit_error, 1e-6) << name << ", " << row.face << ", " << row.light;
+      worst = std::max({worst, area_error, lit_error});
+    }
+    std::printf("courtyard %s: worst relative area error %.3g\n", name.c_str(), worst);
+  }
+  EXPECT_EQ(contents(dir_ / "db.glb"), contents(dir_ / "scene.glb"));
+  EXPECT_EQ(contents(dir_ / "db.glb").substr(0, 4), "glTF");
+  EXPECT_EQ(contents(dir_ / "db.gltf").substr(0, 1), "{");
+}
+
+TEST_F(ExportCli, GltfUsageErrorsAndUnwritableFilesLeaveNothing) {
+  const std::string glb = (dir_ / "out.glb").string();
+  const Outcome txt = run({"export", kCourtyard.string(), "--gltf", (dir_ / "out.txt").string()});
+  EXPECT_EQ(txt.code, 2);
+  EXPECT_EQ(txt.err, "shadowgen: --gltf " + (dir_ / "out.txt").string() +
+                         ": a glTF file's name ends in \".glb\" (binary) or \".gltf\" (JSON)\n"
+                         "Run with --help for more information.\n");
+  const Outcome layers = run({"export", kCourtyard.string(), "-o", glb, "--by-light"});
+  EXPECT_EQ(layers.code, 2);
+  EXPECT_EQ(layers.err.rfind("shadowgen: --by-light writes OBJ layers; a glTF file takes the "
+                             "light sets or --sun-hours\n",
+                             0),
+            0u)
+      << layers.err;
+  const Outcome twice = run({"export", kCourtyard.string(), "-o", glb, "--gltf", glb});
+  EXPECT_EQ(twice.code, 2);
+  EXPECT_EQ(twice.err.rfind("shadowgen: --gltf " + glb + " and -o " + glb +
+                                " both name the binary glTF file; give one\n",
+                            0),
+            0u)
+      << twice.err;
+  const Outcome nowhere =
+      run({"export", kCourtyard.string(), "-o", (dir_ / "no" / "out.glb").string()});
+  EXPECT_EQ(nowhere.code, 1);
+  EXPECT_NE(nowhere.err.find("out.glb"), std::string::npos) << nowhere.err;
+  EXPECT_EQ(files(), std::vector<std::string>{});
+}
+
+// -o names an OBJ, a binary glTF and a JSON glTF at once: one generation, three models of
+// the same regions.
+TEST_F(ExportCli, MinusONamesAnObjAndGltfFilesAtOnce) {
+  const Outcome all = run({"export", kCourtyard.string(), "-o", (dir_ / "a.obj").string(), "-o",
+                           (dir_ / "a.glb").string(), "--gltf", (dir_ / "b.gltf").string()});
+  ASSERT_EQ(all.code, 0) << all.err;
+  EXPECT_EQ(files(), (std::vector<std::string>{"a.glb", "a.mtl", "a.obj", "b.gltf"}));
+  ASSERT_EQ(run({"export", kCourtyard.string(), "-o", (dir_ / "c.glb").string()}).code, 0);
+  EXPECT_EQ(contents(dir_ / "a.glb"), contents(dir_ / "c.glb"));
+  for (const char* name : {"a.glb", "b.gltf"}) {
+    keep_file_for_validator(dir_ / name);
+    GltfFile file = parse_gltf(contents(dir_ / name));
+    ASSERT_TRUE(file.errors.empty()) << file.errors.front();
+    const std::map<std::string, double> areas = material_areas(file);
+    double total = 0.0;
+    for (const auto& [material, area] : areas) total += area;
+    EXPECT_NEAR(total, 400.0 + 36.0 - 4.0 + 16.0 - 1.0, 1e-9) << name;
+  }
+}
+
 TEST_F(ExportCli, HelpAndUsage) {
   const Outcome top = run({"--help"});
   EXPECT_EQ(top.code, 0);
   EXPECT_NE(top.out.find("export"), std::string::npos) << top.out;
   const Outcome help = run({"export", "--help"});
   EXPECT_EQ(help.code, 0);
-  for (const char* option : {"--obj", "--by-light", "--strict", "--threads", "--quiet"}) {
+  for (const char* option : {"--obj", "--gltf", "--by-light", "--strict", "--threads", "--quiet"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option << "\n" << help.out;
   }
   EXPECT_EQ(run({"export", kCourtyard.string()}).code, 2);                 // no --obj

@@ -136,12 +136,16 @@ TEST_F(OutputOptionCli, ExportRefusesAnOutputItCannotTellOrOneNamedTwice) {
     std::string message;
   };
   const std::vector<Case> cases = {
-      {{"-o", (dir_ / "x.glb").string()},
-       "-o " + (dir_ / "x.glb").string() + ": the extension tells what to write: .obj (OBJ file)"},
+      {{"-o", (dir_ / "x.stl").string()},
+       "-o " + (dir_ / "x.stl").string() +
+           ": the extension tells what to write: .obj (OBJ file) or .glb (binary glTF file) or "
+           ".gltf (glTF file)"},
       {{"-o", obj, "--obj", (dir_ / "y.obj").string()},
        "--obj " + (dir_ / "y.obj").string() + " and -o " + obj +
            " both name the OBJ file; give one"},
-      {{}, "-o FILE.obj is required (--obj FILE names it too)"},
+      {{},
+       "-o FILE.obj, FILE.glb or FILE.gltf is required (--obj FILE and --gltf FILE name them "
+       "too)"},
       {{"-o", "-"}, "-o -: an OBJ and its MTL are two files, not one stream"},
   };
   for (const Case& c : cases) {

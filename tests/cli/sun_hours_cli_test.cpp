@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tests/cli/cli_harness.h"
+#include "tests/support/gltf_file.h"
 #include "tests/support/obj_text.h"
 
 namespace shadowgen::test {
@@ -307,6 +308,61 @@ TEST_F(SunHoursCli, ExportGroupsAddUpToTheDatabasesRegionsByBandAndToEachFace) {
     EXPECT_EQ(hex(mtl.kd.at(mtl.order[b])), legend.bands[legend.bands.size() - 1 - b].colour)
         << mtl.order[b];
   }
+}
+
+// export --gltf --sun-hours: one material per band, coloured and named as the OBJ's; each
+// band's triangles add up to the database's regions in it, and the pieces' hours are the
+// regions' (float32 positions around the garden's centre: within 1e-6).
+TEST_F(SunHoursCli, GltfBandsAddUpToTheDatabasesRegions) {
+  const fs::path glb = dir_ / "map.glb";
+  const Outcome exported =
+      run({"export", garden_.string(), "--gltf", glb.string(), "--sun-hours", "march21"});
+  ASSERT_EQ(exported.code, 0) << exported.err;
+  EXPECT_EQ(exported.err, "");
+  keep_file_for_validator(glb);
+  GltfFile file = parse_gltf(contents(glb));
+  ASSERT_TRUE(file.errors.empty()) << file.errors.front();
+  std::vector<std::string> names;
+  for (const auto& material : file.json["materials"]) names.push_back(material["name"]);
+  EXPECT_EQ(names, (std::vector<std::string>{"0-2h", "2-4h", "4-6h", "6-8h", "8-10h", "10h+"}));
+
+  std::map<std::string, double> expected;
+  std::set<double> hours;
+  for (const auto& [face, regions] : database_regions(garden_, "march21").of_face) {
+    for (const Region& region : regions) {
+      const int from = 2 * static_cast<int>(region.hours / 2);
+      expected[from >= 10 ? "10h+" : std::to_string(from) + "-" + std::to_string(from + 2) + "h"] +=
+          region.area;
+      hours.insert(region.hours);
+    }
+  }
+  const std::map<std::string, double> areas = material_areas(file);
+  EXPECT_EQ(areas.size(), expected.size());
+  for (const auto& [band, area] : expected) {
+    EXPECT_LE(relative_error(areas.at(band), area), 1e-6) << band;
+  }
+  for (const auto& mesh : file.json["meshes"]) {
+    for (const auto& h : mesh["extras"]["pieces"]["hours"]) {
+      EXPECT_EQ(hours.count(h.get<double>()), 1u) << h;
+    }
+  }
+  EXPECT_EQ(file.json["scenes"][0]["extras"]["sun_path"]["id"], "march21");
+
+  // The scene's site, from the scene.
+  const fs::path from_scene = dir_ / "scene.gltf";
+  ASSERT_EQ(run({"export", (kScenes / "garden.json").string(), "--gltf", from_scene.string(),
+                 "--sun-hours", "march21"})
+                .code,
+            0);
+  keep_file_for_validator(from_scene);
+  GltfFile scene = parse_gltf(contents(from_scene));
+  ASSERT_TRUE(scene.errors.empty()) << scene.errors.front();
+  EXPECT_EQ(scene.json["scenes"][0]["extras"]["site"], nlohmann::json({{"latitude_deg", 51.4779},
+                                                                       {"longitude_deg", -0.0015},
+                                                                       {"elevation_m", 45.0},
+                                                                       {"utc_offset_h", 0.0},
+                                                                       {"north_axis_deg", 0.0}}));
+  EXPECT_EQ(material_areas(scene), areas);
 }
 
 TEST_F(SunHoursCli, BandsChooseTheEdges) {
