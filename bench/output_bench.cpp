@@ -10,9 +10,12 @@
 //                                        the outputs grow with the number of lights;
 //   BM_SunsExportByLight/suns,           the same export and picture in layers by light.
 //   BM_SunsRenderByLight/suns
+//   BM_CityExportGltf/faces,             the glTF export of the same regions
+//   BM_SunsExportGltf/suns               (shadowgen/output/gltf_export.h), binary.
 //
 // The picture: 800 × 600, perspective, from above a corner of the city looking at its
-// middle. Counters: faces, lights, obj_mb (the OBJ's size), pieces (the picture's).
+// middle. Counters: faces, lights, obj_mb (the OBJ's size), glb_mb (the glTF's), pieces
+// (the picture's).
 //
 // Run with --benchmark_repetitions=3 --benchmark_report_aggregates_only=true and read the
 // medians.
@@ -39,6 +42,7 @@
 #include "bench/scenes/city.h"
 #include "bench/scenes/cube_grid.h"
 #include "shadowgen/output/database.h"
+#include "shadowgen/output/gltf_export.h"
 #include "shadowgen/output/obj_export.h"
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/view/camera.h"
@@ -120,6 +124,20 @@ void time_export(benchmark::State& state, const ShadowedScene& shadowed,
   }
 }
 
+void time_gltf_export(benchmark::State& state, const ShadowedScene& shadowed) {
+  try {
+    std::string glb;
+    for (auto _ : state) {
+      glb = gltf_export(shadowed, GltfForm::kBinary);
+      benchmark::DoNotOptimize(glb.data());
+    }
+    counters(state, shadowed);
+    state.counters["glb_mb"] = static_cast<double>(glb.size()) / 1e6;
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+  }
+}
+
 void time_render(benchmark::State& state, const ShadowedScene& shadowed,
                  Picture (*renderer)(const ShadowedScene&, const Camera&,
                                      const RenderOptions&) = render) {
@@ -140,9 +158,13 @@ void time_render(benchmark::State& state, const ShadowedScene& shadowed,
 std::size_t arg(const benchmark::State& state) { return static_cast<std::size_t>(state.range(0)); }
 
 void BM_CityExport(benchmark::State& state) { time_export(state, city(arg(state))); }
+void BM_CityExportGltf(benchmark::State& state) { time_gltf_export(state, city(arg(state))); }
 void BM_CityRender(benchmark::State& state) { time_render(state, city(arg(state))); }
 void BM_SunsExport(benchmark::State& state) {
   time_export(state, suns(static_cast<int>(arg(state))));
+}
+void BM_SunsExportGltf(benchmark::State& state) {
+  time_gltf_export(state, suns(static_cast<int>(arg(state))));
 }
 void BM_SunsExportByLight(benchmark::State& state) {
   time_export(state, suns(static_cast<int>(arg(state))), obj_export_by_light);
@@ -160,6 +182,12 @@ BENCHMARK(BM_CityExport)
     ->Arg(40000)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
+BENCHMARK(BM_CityExportGltf)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(40000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 BENCHMARK(BM_CityRender)
     ->Arg(1000)
     ->Arg(10000)
@@ -167,6 +195,7 @@ BENCHMARK(BM_CityRender)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 BENCHMARK(BM_SunsExport)->Arg(10)->Arg(30)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_SunsExportGltf)->Arg(10)->Arg(30)->Arg(100)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(BM_SunsExportByLight)
     ->Arg(10)
     ->Arg(30)

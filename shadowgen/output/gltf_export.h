@@ -10,7 +10,8 @@
 //   std::string map = sun_hours_gltf_export(shadowed, path, hour_bands(path), GltfForm::kText);
 //
 // Layout: one buffer; one mesh per material that has triangles, of one primitive
-// (TRIANGLES, uint32 indices, float32 POSITION and NORMAL); one node per such mesh, named
+// (TRIANGLES, uint32 indices, float32 POSITION; no NORMAL, so that viewers take each
+// triangle's flat normal from its winding, as glTF asks); one node per such mesh, named
 // as its material, all children of one root node whose translation is the centre of the
 // scene's bounding box. The root is the scene's only node.
 //
@@ -24,10 +25,10 @@
 //
 // Pieces: each region is written once, triangulated in its part's plane chart by ear
 // clipping (clipper/triangulate.h) on its own vertices (hsr/chart_triangles.h), as the OBJ
-// export triangulates it, triangles without area left out; its normal is its part's
-// plane's. Materials are two-sided (doubleSided) and unlit (KHR_materials_unlit, in
-// extensionsUsed only: a viewer without it shades the same base colour), their
-// baseColorFactor the light set's colour (light_set_colour, obj_export.h) or the band's
+// export triangulates it, triangles without area left out; a vertex is shared by the
+// triangles of one face in one mesh. Materials are two-sided (doubleSided) and unlit
+// (KHR_materials_unlit, in extensionsUsed only: a viewer without it shades the same base colour),
+// their baseColorFactor the light set's colour (light_set_colour, obj_export.h) or the band's
 // (hour_bands.h), both sRGB, taken to glTF's linear values by the sRGB transfer function;
 // names as the MTL's but not escaped: light_set_name() ("sun+lamp", "shadow", with "~2",
 // ... where two sets' names are equal), the band's name ("2-4h"). Light sets are those

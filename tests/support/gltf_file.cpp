@@ -156,10 +156,6 @@ std::vector<GltfTriangle> mesh_triangles(GltfFile& file, std::size_t mesh) {
   return triangles;
 }
 
-std::vector<glm::dvec3> mesh_normals(GltfFile& file, std::size_t mesh) {
-  return vec3s(file, primitive(file, mesh).at("attributes").at("NORMAL"));
-}
-
 glm::dvec3 mesh_translation(GltfFile& file, std::size_t mesh) {
   const nlohmann::json& nodes = file.json.at("nodes");
   // The path from the node holding the mesh up to a root.

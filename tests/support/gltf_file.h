@@ -33,9 +33,6 @@ GltfFile parse_gltf(const std::string& bytes);
 // its node (the float32 positions widened to double).
 std::vector<GltfTriangle> mesh_triangles(GltfFile& file, std::size_t mesh);
 
-// The unit normals of mesh `mesh`'s first primitive, by vertex.
-std::vector<glm::dvec3> mesh_normals(GltfFile& file, std::size_t mesh);
-
 // The translation of the node holding mesh `mesh`, its parents' added: where the mesh's
 // positions are relative to.
 glm::dvec3 mesh_translation(GltfFile& file, std::size_t mesh);

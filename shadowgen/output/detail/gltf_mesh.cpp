@@ -12,39 +12,33 @@ bool GltfMesh::add_piece(const Face& face, std::size_t face_index,
                          std::optional<double> hours) {
   // Triangulated whole before anything is added, so that a failure leaves the mesh as it
   // was.
-  std::vector<std::pair<const LitPolygon*, hsr::ChartTriangles>> splits;
-  std::vector<glm::dvec3> part_normals;
-  for (const hsr::Polygon3& part : face.parts) {
-    part_normals.push_back(hsr::plane_of(part).normal);  // unit
-  }
+  std::vector<hsr::ChartTriangles> splits;
   for (const LitPolygon& lit : polygons) {
     std::optional<hsr::ChartTriangles> split =
-        hsr::chart_triangles(lit.polygon, part_normals.at(lit.part));
+        hsr::chart_triangles(lit.polygon, hsr::plane_of(face.parts.at(lit.part)).normal);
     if (!split) return false;
-    splits.emplace_back(&lit, std::move(*split));
+    splits.push_back(std::move(*split));
   }
 
   const std::size_t first_triangle = indices_.size() / 3;
-  // A vertex is shared within the piece where its point and part are the same.
-  std::map<std::tuple<double, double, double, std::size_t>, std::uint32_t> shared;
-  const auto vertex = [&](const glm::dvec3& p, std::size_t part) {
-    const auto [it, added] =
-        shared.emplace(std::tuple{p.x, p.y, p.z, part}, static_cast<std::uint32_t>(0));
+  if (pieces_.face.empty() || shared_face_ != face_index) shared_.clear();
+  shared_face_ = face_index;
+  const auto vertex = [&](const glm::dvec3& p) {
+    const auto [it, added] = shared_.emplace(std::tuple{p.x, p.y, p.z}, std::uint32_t{0});
     if (added) {
       if (positions_.size() >= std::numeric_limits<std::uint32_t>::max()) {
         throw std::length_error("glTF export: more vertices than uint32 indices can number");
       }
       it->second = static_cast<std::uint32_t>(positions_.size());
       positions_.push_back(p);
-      normals_.push_back(part_normals[part]);
     }
     return it->second;
   };
-  for (const auto& [lit, split] : splits) {
+  for (const hsr::ChartTriangles& split : splits) {
     for (std::size_t k = 0; k < split.triangles.size(); ++k) {
       if (split.flat_triangle(k)) continue;  // no area
       for (const std::size_t corner : split.triangles[k]) {
-        indices_.push_back(vertex(split.corners[corner], lit->part));
+        indices_.push_back(vertex(split.corners[corner]));
       }
     }
   }

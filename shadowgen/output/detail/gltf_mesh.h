@@ -32,22 +32,25 @@ class GltfMesh {
   // Adds `polygons`, on the parts of `face` (face `face_index` of the scene), as one piece
   // of area `area`: each triangulated in the plane chart of its part by ear clipping
   // (hsr/chart_triangles.h) on its own vertices, counter-clockwise seen from the front,
-  // triangles without area left out; each vertex once per part, with the part's plane's
-  // normal. `hours` for a sun-hours piece. False when a polygon could not be split into
-  // triangles (valid regions always are); the mesh is then left as it was.
+  // triangles without area left out. A vertex is shared by the triangles of one face's
+  // pieces added one after the other (several regions of a face in one band), not with
+  // another face's. `hours` for a sun-hours piece. False when a polygon could not be
+  // split into triangles (valid regions always are); the mesh is then left as it was.
   bool add_piece(const Face& face, std::size_t face_index, std::span<const LitPolygon> polygons,
                  double area, std::optional<double> hours = std::nullopt);
 
   bool empty() const { return indices_.empty(); }
   const std::vector<glm::dvec3>& positions() const { return positions_; }
-  const std::vector<glm::dvec3>& normals() const { return normals_; }     // unit, per vertex
   const std::vector<std::uint32_t>& indices() const { return indices_; }  // 3 per triangle
   const GltfPieces& pieces() const { return pieces_; }
 
  private:
-  std::vector<glm::dvec3> positions_, normals_;
+  std::vector<glm::dvec3> positions_;
   std::vector<std::uint32_t> indices_;
   GltfPieces pieces_;
+  // The vertices of the face added last, by point, and that face.
+  std::map<std::tuple<double, double, double>, std::uint32_t> shared_;
+  std::size_t shared_face_ = 0;
 };
 
 }  // namespace shadowgen::detail

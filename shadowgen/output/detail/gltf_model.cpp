@@ -92,10 +92,11 @@ int add_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
   return static_cast<int>(model.bufferViews.size() - 1);
 }
 
-// An accessor of VEC3 floats: `min` and `max` as the validator checks them, on the
-// float32 values themselves.
-int add_vec3(tinygltf::Model& model, const std::vector<glm::dvec3>& points,
-             const glm::dvec3& origin, bool bounds) {
+// The positions' accessor: VEC3 floats relative to `origin` in glTF's axes, `min` and
+// `max` (which glTF requires of POSITION) on the float32 values themselves, as the
+// validator checks them.
+int add_positions(tinygltf::Model& model, const std::vector<glm::dvec3>& points,
+                  const glm::dvec3& origin) {
   std::vector<float> values;
   values.reserve(points.size() * 3);
   std::vector<double> least(3, std::numeric_limits<double>::infinity());
@@ -114,10 +115,8 @@ int add_vec3(tinygltf::Model& model, const std::vector<glm::dvec3>& points,
   accessor.componentType = kFloat;
   accessor.type = TINYGLTF_TYPE_VEC3;
   accessor.count = points.size();
-  if (bounds) {
-    accessor.minValues = least;
-    accessor.maxValues = most;
-  }
+  accessor.minValues = least;
+  accessor.maxValues = most;
   model.accessors.push_back(std::move(accessor));
   return static_cast<int>(model.accessors.size() - 1);
 }
@@ -171,8 +170,7 @@ std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dve
     model.materials.push_back(material_of(m));
     if (m.mesh.empty()) continue;
     tinygltf::Primitive primitive;
-    primitive.attributes["POSITION"] = add_vec3(model, m.mesh.positions(), origin, true);
-    primitive.attributes["NORMAL"] = add_vec3(model, m.mesh.normals(), glm::dvec3(0.0), false);
+    primitive.attributes["POSITION"] = add_positions(model, m.mesh.positions(), origin);
     primitive.indices = add_indices(model, m.mesh.indices());
     primitive.material = static_cast<int>(model.materials.size() - 1);
     primitive.mode = kTriangles;
