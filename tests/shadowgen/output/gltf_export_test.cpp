@@ -335,6 +335,17 @@ TEST(GltfExport, CourtyardSunHoursKeepTheSiteAndTheBandsAreas) {
   }
 }
 
+// A face id that is not UTF-8 (a mesh file's group name may hold any byte) is written
+// with U+FFFD in place of the bad byte: glTF's JSON is UTF-8, and the export goes on.
+TEST(GltfExport, AFaceIdThatIsNotUtf8IsWrittenWithReplacementCharacters) {
+  ShadowedScene s = generated(kTwoLights);
+  s.scene.faces[0].id = "ground\xff";
+  for (const GltfForm form : kForms) {
+    GltfFile file = read_back(gltf_export(s, form), form);
+    EXPECT_EQ(file.json["scenes"][0]["extras"]["faces"]["id"][0], "ground\xef\xbf\xbd");
+  }
+}
+
 TEST(GltfExport, ASceneWithoutFacesIsStillAFile) {
   Scene empty;
   empty.file = "empty.json";
