@@ -9,7 +9,8 @@
 //   std::string glb = gltf_export(shadowed, GltfForm::kBinary);
 //   std::string map = sun_hours_gltf_export(shadowed, path, hour_bands(path), GltfForm::kText);
 //
-// Layout: one buffer; one mesh per material that has triangles, of one primitive
+// Layout: one buffer of two views, every mesh's positions, then every mesh's indices; one
+// unnamed mesh per material that has triangles, of one primitive
 // (TRIANGLES, uint32 indices, float32 POSITION; no NORMAL, so that viewers take each
 // triangle's flat normal from its winding, as glTF asks); one node per such mesh, named
 // as its material, all children of one root node whose translation is the centre of the

@@ -50,11 +50,17 @@ const unsigned char* accessor_bytes(GltfFile& file, int a, int component_type, c
     return nullptr;
   }
   const nlohmann::json& view = file.json.at("bufferViews").at(accessor.at("bufferView").get<int>());
-  const std::size_t offset =
-      view.value("byteOffset", std::size_t{0}) + accessor.value("byteOffset", std::size_t{0});
+  const std::size_t in_view = accessor.value("byteOffset", std::size_t{0});
+  const std::size_t offset = view.value("byteOffset", std::size_t{0}) + in_view;
   count = accessor.at("count").get<std::size_t>();
-  const std::size_t size = count * (std::string(type) == "VEC3" ? 12 : 4);
-  if (offset + size > file.buffer.size() || size > view.at("byteLength").get<std::size_t>()) {
+  const std::size_t element = std::string(type) == "VEC3" ? 12 : 4;
+  if (view.value("byteStride", element) != element) {
+    file.errors.push_back("accessor " + std::to_string(a) + " is not tightly packed");
+    return nullptr;
+  }
+  const std::size_t size = count * element;
+  if (offset + size > file.buffer.size() ||
+      in_view + size > view.at("byteLength").get<std::size_t>()) {
     file.errors.push_back("accessor " + std::to_string(a) + " runs past its buffer");
     return nullptr;
   }

@@ -71,10 +71,43 @@ nlohmann::json pieces_json(const GltfPieces& pieces) {
   return out;
 }
 
-// Appends `values` to the buffer as a buffer view of its own (4-byte aligned, as every
-// component here is 4 bytes) and returns the view's index.
+// Every mesh's positions and indices, each kind in one buffer view: two views for the
+// file, not two per mesh (a scene of many light sets has thousands of meshes).
+struct MeshData {
+  std::vector<float> positions;        // x, y, z relative to the origin, in glTF's axes
+  std::vector<std::uint32_t> indices;  // 3 per triangle, into each mesh's own positions
+  struct Span {
+    std::size_t first_vertex = 0, vertices = 0, first_index = 0, count = 0;
+    std::vector<double> least, most;  // of the float32 positions, as glTF's min and max
+  };
+  std::vector<Span> spans;  // per mesh written
+
+  void add(const GltfMesh& mesh, const glm::dvec3& origin) {
+    Span span;
+    span.first_vertex = positions.size() / 3;
+    span.vertices = mesh.positions().size();
+    span.first_index = indices.size();
+    span.count = mesh.indices().size();
+    span.least.assign(3, std::numeric_limits<double>::infinity());
+    span.most.assign(3, -std::numeric_limits<double>::infinity());
+    for (const glm::dvec3& p : mesh.positions()) {
+      const glm::dvec3 q = gltf_axes(p - origin);
+      for (int c = 0; c < 3; ++c) {
+        const auto v = static_cast<float>(q[c]);
+        positions.push_back(v);
+        span.least[c] = std::min(span.least[c], static_cast<double>(v));
+        span.most[c] = std::max(span.most[c], static_cast<double>(v));
+      }
+    }
+    indices.insert(indices.end(), mesh.indices().begin(), mesh.indices().end());
+    spans.push_back(std::move(span));
+  }
+};
+
+// Appends `values` to the buffer as a buffer view (4-byte aligned, as every component here
+// is 4 bytes) and returns the view's index.
 template <typename T>
-int add_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
+int add_view(tinygltf::Model& model, const std::vector<T>& values, int target, int stride) {
   static_assert(sizeof(T) == 4);
   std::vector<unsigned char>& data = model.buffers.front().data;
   const std::size_t bytes = values.size() * sizeof(T);
@@ -85,6 +118,7 @@ int add_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
   view.buffer = 0;
   view.byteOffset = data.size();
   view.byteLength = bytes;
+  view.byteStride = static_cast<std::size_t>(stride);
   view.target = target;
   data.resize(data.size() + bytes);
   std::memcpy(data.data() + view.byteOffset, values.data(), bytes);
@@ -92,41 +126,14 @@ int add_view(tinygltf::Model& model, const std::vector<T>& values, int target) {
   return static_cast<int>(model.bufferViews.size() - 1);
 }
 
-// The positions' accessor: VEC3 floats relative to `origin` in glTF's axes, `min` and
-// `max` (which glTF requires of POSITION) on the float32 values themselves, as the
-// validator checks them.
-int add_positions(tinygltf::Model& model, const std::vector<glm::dvec3>& points,
-                  const glm::dvec3& origin) {
-  std::vector<float> values;
-  values.reserve(points.size() * 3);
-  std::vector<double> least(3, std::numeric_limits<double>::infinity());
-  std::vector<double> most(3, -std::numeric_limits<double>::infinity());
-  for (const glm::dvec3& p : points) {
-    const glm::dvec3 q = gltf_axes(p - origin);
-    for (int c = 0; c < 3; ++c) {
-      const auto v = static_cast<float>(q[c]);
-      values.push_back(v);
-      least[c] = std::min(least[c], static_cast<double>(v));
-      most[c] = std::max(most[c], static_cast<double>(v));
-    }
-  }
+int add_accessor(tinygltf::Model& model, int view, std::size_t byte_offset, int component, int type,
+                 std::size_t count) {
   tinygltf::Accessor accessor;
-  accessor.bufferView = add_view(model, values, kArrayBuffer);
-  accessor.componentType = kFloat;
-  accessor.type = TINYGLTF_TYPE_VEC3;
-  accessor.count = points.size();
-  accessor.minValues = least;
-  accessor.maxValues = most;
-  model.accessors.push_back(std::move(accessor));
-  return static_cast<int>(model.accessors.size() - 1);
-}
-
-int add_indices(tinygltf::Model& model, const std::vector<std::uint32_t>& indices) {
-  tinygltf::Accessor accessor;
-  accessor.bufferView = add_view(model, indices, kElementArrayBuffer);
-  accessor.componentType = kUnsignedInt;
-  accessor.type = TINYGLTF_TYPE_SCALAR;
-  accessor.count = indices.size();
+  accessor.bufferView = view;
+  accessor.byteOffset = byte_offset;
+  accessor.componentType = component;
+  accessor.type = type;
+  accessor.count = count;
   model.accessors.push_back(std::move(accessor));
   return static_cast<int>(model.accessors.size() - 1);
 }
@@ -166,16 +173,30 @@ std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dve
   root.translation = {translation.x, translation.y, translation.z};
   model.nodes.push_back(std::move(root));
 
+  MeshData data;
+  for (const GltfMaterial& m : materials) {
+    if (!m.mesh.empty()) data.add(m.mesh, origin);
+  }
+  // Vertex views shared by several accessors state their stride ("Buffers and Buffer
+  // Views"); a view of indices has none.
+  const int positions = data.spans.empty() ? -1 : add_view(model, data.positions, kArrayBuffer, 12);
+  const int indices =
+      data.spans.empty() ? -1 : add_view(model, data.indices, kElementArrayBuffer, 0);
+  std::size_t next = 0;
   for (const GltfMaterial& m : materials) {
     model.materials.push_back(material_of(m));
     if (m.mesh.empty()) continue;
+    const MeshData::Span& span = data.spans[next++];
     tinygltf::Primitive primitive;
-    primitive.attributes["POSITION"] = add_positions(model, m.mesh.positions(), origin);
-    primitive.indices = add_indices(model, m.mesh.indices());
+    primitive.attributes["POSITION"] = add_accessor(model, positions, 12 * span.first_vertex,
+                                                    kFloat, TINYGLTF_TYPE_VEC3, span.vertices);
+    model.accessors.back().minValues = span.least;
+    model.accessors.back().maxValues = span.most;
+    primitive.indices = add_accessor(model, indices, 4 * span.first_index, kUnsignedInt,
+                                     TINYGLTF_TYPE_SCALAR, span.count);
     primitive.material = static_cast<int>(model.materials.size() - 1);
     primitive.mode = kTriangles;
     tinygltf::Mesh mesh;
-    mesh.name = m.name;
     mesh.primitives.push_back(std::move(primitive));
     model.meshes.push_back(std::move(mesh));
 

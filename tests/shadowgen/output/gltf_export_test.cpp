@@ -194,7 +194,8 @@ TEST(GltfExport, ExtrasListFacesAndEachMeshsPieces) {
   // Mesh "shadow" holds the ground's region alone; "down+slant" the ground's, then the
   // square's.
   const nlohmann::json& shadow = file.json["meshes"][0];
-  EXPECT_EQ(shadow["name"], "shadow");
+  EXPECT_EQ(file.json["nodes"][1]["name"], "shadow");
+  EXPECT_EQ(file.json["nodes"][1]["mesh"], 0);
   EXPECT_EQ(shadow["extras"]["pieces"]["face"], nlohmann::json({0}));
   EXPECT_EQ(shadow["extras"]["pieces"]["first_triangle"], nlohmann::json({0}));
   EXPECT_NEAR(shadow["extras"]["pieces"]["area"][0].get<double>(), 12.0, 1e-12);
@@ -290,7 +291,8 @@ TEST(GltfExport, SunHoursBandsAreMaterialsWithThePiecesHours) {
     const std::string middle = bands.bands[bands.band_of(1.5)].name;
     const std::string most = bands.bands[bands.band_of(2.0)].name;
     ExpectMaterialAreas(file, {{zero, 1.0}, {middle, 2.0}, {most, 1.0}}, 1e-9);
-    EXPECT_EQ(names_of(file.json["meshes"]), (std::vector<std::string>{zero, middle, most}));
+    EXPECT_EQ(names_of(file.json["nodes"]),
+              (std::vector<std::string>{"shadowgen", zero, middle, most}));
     // The 1.5 h region is one piece of two polygons.
     const nlohmann::json& pieces = file.json["meshes"][1]["extras"]["pieces"];
     EXPECT_EQ(pieces["face"], nlohmann::json({0}));
