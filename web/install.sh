@@ -6,8 +6,9 @@
 # alone, each package's integrity checked, and runs no package's install scripts
 # (esbuild's binary comes as a package of its own). Node.js and npm come from Debian's
 # packages (nodejs, and npm where nodejs does not carry it) when no node is installed;
-# playwright-core 1.65 asks for node 20 or later. Idempotent: while web/node_modules is
-# newer than the lockfile, nothing is done. Run by .ci/install-deps.
+# playwright-core 1.65 asks for node 20 or later. Idempotent: while web/node_modules holds
+# what the lockfile says (a copy of the lockfile npm ci installed is kept there), nothing
+# is done. Run by .ci/install-deps.
 set -euo pipefail
 web=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
@@ -29,12 +30,12 @@ apt_install() {
 command -v node >/dev/null 2>&1 || apt_install nodejs
 command -v npm >/dev/null 2>&1 || apt_install npm
 
-stamp=$web/node_modules/.package-lock.json
-# npm writes its record of what it installed last; newer than the lockfile, it is that.
-if [[ $stamp -nt $web/package-lock.json ]]; then
+stamp=$web/node_modules/.installed-package-lock.json
+if cmp -s "$stamp" "$web/package-lock.json"; then
   echo "web/install.sh: web/node_modules matches web/package-lock.json"
   exit 0
 fi
 cd "$web"
 echo "web/install.sh: npm ci in web/ (node $(node --version))"
 npm ci --ignore-scripts --no-audit --no-fund
+cp package-lock.json "$stamp"

@@ -12,6 +12,7 @@
 #include "detail/scene_regions.h"
 #include "hsr/area.h"
 #include "shadowgen/model/number_text.h"
+#include "shadowgen/model/scene_centre.h"
 #include "shadowgen/output/obj_export.h"
 #include "shadowgen/shadows/generate.h"
 
@@ -20,25 +21,6 @@ namespace {
 
 using detail::GltfMaterial;
 using detail::LightSet;
-
-// The centre of the bounding box of every face's vertices; the origin for a scene
-// without faces. The root node stands there, and positions are relative to it.
-glm::dvec3 scene_centre(const Scene& scene) {
-  glm::dvec3 least(std::numeric_limits<double>::infinity());
-  glm::dvec3 most(-std::numeric_limits<double>::infinity());
-  bool any = false;
-  const auto take = [&](const hsr::Loop3& loop) {
-    for (const glm::dvec3& p : loop) {
-      least = glm::min(least, p);
-      most = glm::max(most, p);
-      any = true;
-    }
-  };
-  for (const Face& face : scene.faces) {
-    for (const hsr::Polygon3& part : face.parts) take(part.outer);  // holes lie inside
-  }
-  return any ? least * 0.5 + most * 0.5 : glm::dvec3(0.0);
-}
 
 // What every export's scene extras hold: what it is, the origin, the site, the faces'
 // ids and areas (the caller adds the rest).

@@ -18,6 +18,7 @@
 #include "detail/glb_file.h"
 #include "hsr/area.h"
 #include "shadowgen/model/scene_centre.h"
+#include "shadowgen/output/gltf_space.h"
 #include "shadowgen/output/obj_export.h"
 #include "shadowgen/sampled/part_triangles.h"
 #include "shadowgen/shadows/generate.h"
@@ -29,7 +30,6 @@ namespace {
 using LightSet = std::vector<std::size_t>;
 
 // The scene's axes (+z up) to glTF's (+y up).
-glm::dvec3 gltf_axes(const glm::dvec3& p) { return {p.x, p.z, -p.y}; }
 
 nlohmann::json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 

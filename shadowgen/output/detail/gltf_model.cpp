@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "shadowgen/output/gltf_space.h"
+
 namespace shadowgen::detail {
 namespace {
 
@@ -152,12 +154,6 @@ tinygltf::Material material_of(const GltfMaterial& m) {
 }
 
 }  // namespace
-
-glm::dvec3 gltf_axes(const glm::dvec3& p) { return {p.x, p.z, -p.y}; }
-
-double linear_from_srgb(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dvec3& origin,
                       const nlohmann::json& scene_extras, GltfForm form) {

@@ -28,11 +28,4 @@ struct GltfMaterial {
 std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dvec3& origin,
                       const nlohmann::json& scene_extras, GltfForm form);
 
-// The scene's point p, or direction, in glTF's axes: (x, z, −y).
-glm::dvec3 gltf_axes(const glm::dvec3& p);
-
-// An sRGB channel in [0, 1] as the linear value glTF's colour factors hold (the sRGB
-// transfer function, IEC 61966-2-1).
-double linear_from_srgb(double c);
-
 }  // namespace shadowgen::detail

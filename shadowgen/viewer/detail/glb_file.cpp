@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "shadowgen/output/gltf_space.h"
+
 namespace shadowgen::detail {
 namespace {
 
@@ -41,10 +43,6 @@ std::size_t add_view(std::string& bin, nlohmann::json& views, const std::vector<
 }
 
 }  // namespace
-
-double linear_from_srgb(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 std::string glb_file(std::span<const GlbMesh> meshes, const glm::dvec3& translation) {
   nlohmann::json gltf = {

@@ -31,7 +31,4 @@ struct GlbMesh {
 // linear sRGB (as glTF's factors are), named as their mesh.
 std::string glb_file(std::span<const GlbMesh> meshes, const glm::dvec3& translation);
 
-// sRGB to linear sRGB, one channel in [0, 1] (IEC 61966-2-1).
-double linear_from_srgb(double channel);
-
 }  // namespace shadowgen::detail
