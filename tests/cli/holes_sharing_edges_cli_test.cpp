@@ -231,7 +231,7 @@ TEST_F(HolesSharingEdgesCli, TheSvgPictureIsThatOfThePlainPolygons) {
     const fs::path svg = dir_ / (with_holes ? "holes.svg" : "plain.svg");
     const Outcome rendered =
         run({"render", db(with_holes).string(), "--lights", "sun", "--eye", "5,-20,1.5", "--target",
-             "5,0,1.5", "--ortho", "--scale", "20", "--svg", svg.string()});
+             "5,0,1.5", "--ortho", "--scale", "20", "--pieces", "--svg", svg.string()});
     ASSERT_EQ(rendered.code, 0) << rendered.err;
   }
   const std::string holes = contents(dir_ / "holes.svg");
