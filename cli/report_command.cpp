@@ -4,19 +4,23 @@
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "cli/command.h"
 #include "cli/number_options.h"
 #include "cli/run_progress.h"
+#include "shadowgen/groups/face_groups.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/energyplus_shading.h"
 #include "shadowgen/output/irradiation_report.h"
 #include "shadowgen/output/report.h"
 #include "shadowgen/output/sun_hours_report.h"
+#include "shadowgen/output/sun_hours_table.h"
 #include "shadowgen/weather/epw_reader.h"
 
 namespace shadowgen::cli {
@@ -38,9 +42,14 @@ struct ReportArgs {
   std::size_t top = 10;                 // table: most shadowed faces listed per light
   std::vector<double> thresholds{2.0};  // sun-hours: hours the areas are counted at
   std::string weather;                  // irradiation: an EPW file, else the scene's
+  std::vector<std::string> group_by;    // groups/face_groups.h rules; none: the scene's groups
   ReadingArgs reading;
   MethodArgs method;  // a scene's (LoadOptions::method)
 };
+
+bool is_sun_hours(const std::string& format) {
+  return format == "sun-hours" || format == "sun-hours-table";
+}
 
 // The weather file irradiation reads: --weather, else the scene's `weather`.
 Weather weather_for(const ShadowedScene& shadowed, const ReportArgs& args) {
@@ -51,8 +60,23 @@ Weather weather_for(const ShadowedScene& shadowed, const ReportArgs& args) {
                    "--weather FILE.epw");
 }
 
+// The formats that sum over groups of faces.
+bool groups_apply(const std::string& format) {
+  return format == "csv" || format == "json" || format == "table" || format == "sun-hours" ||
+         format == "sun-hours-table";
+}
+
+// The groups a report sums over: --group-by's, else the scene's own.
+std::vector<groups::FaceGroup> report_groups(const Scene& scene, const ReportArgs& args) {
+  if (!groups_apply(args.format)) return {};
+  if (!args.group_by.empty()) return groups::groups_by(scene, args.group_by);
+  return groups::scene_groups(scene);
+}
+
 std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
-  if (args.format == "json") return report_json(shadowed);
+  const std::vector<groups::FaceGroup> groups = report_groups(shadowed.scene, args);
+  const CsvIds ids = args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact;
+  if (args.format == "json") return report_json(shadowed, groups);
   if (args.format == "energyplus") {
     EnergyPlusShading shading = energyplus_shading(shadowed);
     for (const std::string& warning : shading.warnings) {
@@ -64,17 +88,19 @@ std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
     return irradiation_csv(shadowed, weather_for(shadowed, args),
                            args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
   }
-  if (args.format == "table") return report_table(shadowed, args.top);
-  if (args.format == "sun-hours") {
+  if (args.format == "table") return report_table(shadowed, args.top, groups);
+  if (is_sun_hours(args.format)) {
     if (!shadowed.method.exact()) {
       throw InputError(args.input, "",
                        "holds the lit areas a sampled method estimated, without the exact "
                        "sun-hours regions a sun-hours report needs");
     }
-    return sun_hours_csv(shadowed, args.thresholds,
-                         args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
+    if (args.format == "sun-hours-table") {
+      return sun_hours_table(shadowed, args.thresholds, groups);
+    }
+    return sun_hours_csv(shadowed, args.thresholds, ids, groups);
   }
-  return report_csv(shadowed, args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
+  return report_csv(shadowed, ids, groups);
 }
 
 void run_report(const ReportArgs& args) {
@@ -83,14 +109,19 @@ void run_report(const ReportArgs& args) {
   if (!args.output.empty()) files.writes.push_back({"-o", args.output});
   LoadOptions options = load_options(args.reading, Accept::kSceneOrDatabase, files);
   // From a scene, a sun path's regions are made only for the report that reads them.
-  options.sun_hours_regions = args.format == "sun-hours";
+  options.sun_hours_regions = is_sun_hours(args.format);
   options.method = args.method.method();
-  if (!options.method.exact() && args.format == "sun-hours") {
-    throw UsageError(
-        "--format sun-hours reports exact sun-hours regions, which a sampled "
-        "method does not make (its lit areas give --format energyplus and "
-        "irradiation)");
+  if (!options.method.exact() && is_sun_hours(args.format)) {
+    throw UsageError("--format " + args.format +
+                     " reports exact sun-hours regions, which a sampled "
+                     "method does not make (its lit areas give --format energyplus and "
+                     "irradiation)");
   }
+  // A group that matches no face is named before any shadow is computed.
+  options.on_scene = [&args, then = std::move(options.on_scene)](const Scene& scene) {
+    if (then) then(scene);
+    (void)report_groups(scene, args);
+  };
   RunProgress progress(args.input, progress_stream(args.reading.quiet));
   progress.watch(options);
   const ShadowedScene shadowed = load_shadowed(args.input, options);
@@ -118,8 +149,21 @@ Command add_report_command(CLI::App& app) {
                    "--threshold) or irradiation (per face and sun path: direct solar energy "
                    "received, from a weather file's direct normal irradiance) or energyplus "
                    "(the sunlit fraction of every face at every time step of one sun path, "
-                   "as EnergyPlus's Schedule:File:Shading reads it)")
-      ->check(CLI::IsMember({"csv", "json", "table", "sun-hours", "irradiation", "energyplus"}));
+                   "as EnergyPlus's Schedule:File:Shading reads it) or sun-hours-table (per "
+                   "sun path and group, or face, the share of its area with at least each "
+                   "--threshold, passing at 50 %: the BRE 209 test)")
+      ->check(CLI::IsMember(
+          {"csv", "json", "table", "sun-hours", "sun-hours-table", "irradiation", "energyplus"}));
+  CLI::Option* group_by =
+      command
+          ->add_option("--group-by", args->group_by,
+                       "sum over groups of faces (comma-separated or repeated), instead of "
+                       "the scene's \"groups\": a face pattern (* any run without /, ** any "
+                       "run, ? one character, \\ quoting the next) whose matches make one "
+                       "group, or origin.object, origin.group, origin.semantic or "
+                       "origin.format, one group per value of the faces' origins; with "
+                       "--format csv, json, table, sun-hours and sun-hours-table")
+          ->delimiter(',');
   CLI::Option* weather =
       command->add_option("--weather", args->weather,
                           "with --format irradiation: EnergyPlus weather file (EPW) whose hourly "
@@ -127,7 +171,8 @@ Command add_report_command(CLI::App& app) {
   CLI::Option* threshold =
       command
           ->add_option("--threshold", args->thresholds,
-                       "with --format sun-hours: hours of sun (comma-separated or repeated) "
+                       "with --format sun-hours or sun-hours-table: hours of sun "
+                       "(comma-separated or repeated) "
                        "each giving a column of the area with at least that many (default 2)")
           ->delimiter(',')
           ->check(number_in(at_least(0.0)));
@@ -146,12 +191,26 @@ Command add_report_command(CLI::App& app) {
   add_reading_options(*command, args->reading, /*progress=*/true);
   add_method_options(*command, args->method);
   // Run at the end of parsing, so that the error is reported as a parse error is.
-  command->callback([args, top, csv_safe, threshold, weather] {
+  command->callback([args, top, csv_safe, threshold, weather, group_by] {
     if (weather->count() > 0 && args->format != "irradiation") {
       throw CLI::ValidationError("--weather", "applies only to --format irradiation");
     }
-    if (threshold->count() > 0 && args->format != "sun-hours") {
-      throw CLI::ValidationError("--threshold", "applies only to --format sun-hours");
+    if (threshold->count() > 0 && !is_sun_hours(args->format)) {
+      throw CLI::ValidationError("--threshold",
+                                 "applies only to --format sun-hours and sun-hours-table");
+    }
+    if (group_by->count() > 0 && !groups_apply(args->format)) {
+      throw CLI::ValidationError(
+          "--group-by", "applies only to --format csv, json, table, sun-hours and sun-hours-table");
+    }
+    std::unordered_set<std::string> rules;
+    for (const std::string& rule : args->group_by) {
+      if (const std::optional<std::string> why = groups::group_rule_problem(rule)) {
+        throw CLI::ValidationError("--group-by", *why);
+      }
+      if (!rules.insert(rule).second) {
+        throw CLI::ValidationError("--group-by", "'" + rule + "' is given twice");
+      }
     }
     if (top->count() > 0 && args->format != "table") {
       throw CLI::ValidationError("--top", "applies only to --format table");

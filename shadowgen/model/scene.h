@@ -120,6 +120,15 @@ struct Weather {
   std::vector<WeatherHour> hours;  // in file order: each the hour after the one before
 };
 
+// A named set of faces (docs/scene-format.md, "Groups"): a scene's `groups` entry, kept in
+// the database, which reports sum over. Which faces it holds is the face patterns' rule
+// (shadowgen/groups/face_pattern.h): every face whose id one of `patterns` matches.
+struct FaceGroupSpec {
+  std::string id;                     // unique among the scene's groups
+  std::vector<std::string> patterns;  // at least one, each matching some face
+  bool operator==(const FaceGroupSpec&) const = default;
+};
+
 struct Scene {
   // The file it was read from, as messages about the whole input name it: the scene, or
   // the shadowed database the user gave (never the scene a database was generated from;
@@ -132,7 +141,8 @@ struct Scene {
   // without an instant included.
   std::vector<SunPathSpan> sun_paths;
   std::vector<ViewSpec> views;
-  std::optional<Site> site;  // the scene's own, or else its weather file's
+  std::vector<FaceGroupSpec> groups;  // in file order
+  std::optional<Site> site;           // the scene's own, or else its weather file's
   std::optional<Weather> weather;
   // Every file the scene was read from, in reading order, as messages name them: the
   // scene file, then each mesh file, then the weather file. Empty for the scene a

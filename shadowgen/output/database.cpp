@@ -239,6 +239,17 @@ void write_site(JsonWriter& out, const Site& site) {
   out.key("north_axis_deg").value(site.north_axis_deg).end_object();
 }
 
+// "groups": [{"id": "garden", "faces": ["garden*", "lawn/*"]}, ...], one group per line.
+void write_groups(JsonWriter& out, const std::vector<FaceGroupSpec>& groups) {
+  out.key("groups").begin_array(Layout::kLines);
+  for (const FaceGroupSpec& group : groups) {
+    out.begin_object().key("id").value(group.id).key("faces").begin_array();
+    for (const std::string& pattern : group.patterns) out.value(pattern);
+    out.end_array().end_object();
+  }
+  out.end_array();
+}
+
 void write_lit_polygons(JsonWriter& out, std::span<const LitPolygon> lit, bool with_part) {
   out.begin_array(Layout::kLines);
   for (const LitPolygon& p : lit) {
@@ -377,6 +388,7 @@ void write_database_to(const ShadowedScene& shadowed, JsonWriter& out) {
     for (const SunPathHours& path : shadowed.sun_paths) write_sun_path(out, path);
     out.end_array();
   }
+  if (!scene.groups.empty()) write_groups(out, scene.groups);
   out.key("faces").begin_array(Layout::kLines);
   for (std::size_t f = 0; f < scene.faces.size(); ++f) write_face(out, shadowed, f);
   out.end_array();

@@ -28,6 +28,9 @@
 //        "to":"2026-03-21T23:59",
 //        "instant_polygons":"dropped"}          or "kept": whether `lit` holds them
 //     ],
+//     "groups": [                               only with the scene's groups, in order
+//       {"id":"garden","faces":["garden*","lawn/*"]}    face patterns, as the scene gives them
+//     ],
 //     "faces": [                                scene order, ids unique
 //       {
 //         "id": "wall",

@@ -4,12 +4,14 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "detail/compensated_sum.h"
 #include "detail/csv_fields.h"
 #include "detail/method_json.h"
 #include "detail/origin_json.h"
@@ -19,6 +21,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/model/one_line.h"
+#include "shadowgen/output/group_sums.h"
 
 namespace shadowgen {
 namespace {
@@ -29,25 +32,7 @@ using detail::append_csv_number;
 
 double fraction(double part, double whole) { return whole == 0.0 ? 0.0 : part / whole; }
 
-// Neumaier's compensated sum: the error stays near one rounding however many rows there
-// are, so totals do not depend on the scene's size.
-class Sum {
- public:
-  void add(double x) {
-    const double t = sum_ + x;
-    if (std::fabs(sum_) >= std::fabs(x)) {
-      compensation_ += (sum_ - t) + x;
-    } else {
-      compensation_ += (x - t) + sum_;
-    }
-    sum_ = t;
-  }
-  double value() const { return sum_ + compensation_; }
-
- private:
-  double sum_ = 0.0;
-  double compensation_ = 0.0;
-};
+using Sum = detail::CompensatedSum;
 
 void write_totals(JsonWriter& out, double area, double lit_area) {
   out.key("area").value(area).key("lit_area").value(lit_area);
@@ -151,7 +136,8 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
   return rows;
 }
 
-std::string report_csv(const ShadowedScene& shadowed, CsvIds ids) {
+std::string report_csv(const ShadowedScene& shadowed, CsvIds ids,
+                       std::span<const groups::FaceGroup> groups) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   std::string out = "face_id,light_id,area,lit_area,lit_fraction\n";
   for (const ReportRow& row : rows) {
@@ -166,10 +152,23 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids) {
     append_csv_number(out, row.lit_fraction);
     out += '\n';
   }
+  if (groups.empty()) return out;
+  out += "\ngroup_id,light_id,faces,area,lit_area,lit_fraction\n";
+  for (const GroupLitRow& row : group_lit_rows(rows, shadowed.scene.lights.size(), groups)) {
+    append_csv_field(out, groups[row.group].id, ids);
+    out += ',';
+    append_csv_field(out, shadowed.scene.lights[row.light].id, ids);
+    out += ',' + std::to_string(row.faces);
+    for (const double v : {row.area, row.lit_area, row.lit_fraction}) {
+      out += ',';
+      append_csv_number(out, v);
+    }
+    out += '\n';
+  }
   return out;
 }
 
-std::string report_json(const ShadowedScene& shadowed) {
+std::string report_json(const ShadowedScene& shadowed, std::span<const groups::FaceGroup> groups) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   const Scene& scene = shadowed.scene;
   const Totals totals = totals_of(scene, rows);
@@ -198,11 +197,23 @@ std::string report_json(const ShadowedScene& shadowed) {
   out.key("totals").begin_object();
   write_totals(out, totals.area, totals.lit_area);
   out.end_object();
+  if (!groups.empty()) {
+    out.key("groups").begin_array(Layout::kLines);
+    for (const GroupLitRow& row : group_lit_rows(rows, scene.lights.size(), groups)) {
+      out.begin_object().key("group_id").value(groups[row.group].id);
+      out.key("light_id").value(scene.lights[row.light].id);
+      out.key("faces").value(std::uint64_t{row.faces});
+      write_totals(out, row.area, row.lit_area);
+      out.end_object();
+    }
+    out.end_array();
+  }
   out.end_object();
   return out.take();
 }
 
-std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
+std::string report_table(const ShadowedScene& shadowed, std::size_t top,
+                         std::span<const groups::FaceGroup> groups) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   const Scene& scene = shadowed.scene;
   const std::size_t lights = scene.lights.size();
@@ -228,6 +239,17 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top) {
   }
   totals.append_to(out);
   if (lights == 0) out += "(no lights)\n";
+  if (!groups.empty()) {
+    out += "\ngroups (each face counted once in each group it is in)\n";
+    detail::TextTable table({false, false, true, true, true, true});
+    table.add({"group_id", "light_id", "faces", "area", "lit_area", "lit_fraction"});
+    for (const GroupLitRow& row : group_lit_rows(rows, lights, groups)) {
+      table.add({one_line(groups[row.group].id), one_line(scene.lights[row.light].id),
+                 std::to_string(row.faces), readable_area(row.area), readable_area(row.lit_area),
+                 readable_fraction(row.lit_fraction)});
+    }
+    table.append_to(out);
+  }
   if (top == 0) return out;
 
   for (std::size_t l = 0; l < lights; ++l) {

@@ -4,9 +4,11 @@
 // shadowed database alone.
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "shadowgen/groups/face_groups.h"
 #include "shadowgen/model/shadowed_scene.h"
 
 namespace shadowgen {
@@ -41,7 +43,12 @@ enum class CsvIds {
 // The spec's CSV: header face_id,light_id,area,lit_area,lit_fraction; numbers with %.17g;
 // ids quoted as RFC 4180 says when they hold a comma, a quote or a line break. Lines end
 // with "\n".
-std::string report_csv(const ShadowedScene& shadowed, CsvIds ids = CsvIds::kExact);
+//
+// With `groups` (groups/face_groups.h, resolved on shadowed.scene), one empty line and a
+// second table follow the rows: header group_id,light_id,faces,area,lit_area,lit_fraction,
+// one row per (group, light), groups in order (group_lit_rows, output/group_sums.h).
+std::string report_csv(const ShadowedScene& shadowed, CsvIds ids = CsvIds::kExact,
+                       std::span<const groups::FaceGroup> groups = {});
 
 // The same rows as JSON, with totals per light and for the scene:
 //
@@ -54,7 +61,11 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids = CsvIds::kExac
 //     "lights": [                                                    scene order
 //       {"light_id":"sun","area":A,"lit_area":L,"lit_fraction":L/A}
 //     ],
-//     "totals": {"area":A,"lit_area":L,"lit_fraction":L/A}
+//     "totals": {"area":A,"lit_area":L,"lit_fraction":L/A},
+//     "groups": [                                                    only with `groups`
+//       {"group_id":"garden","light_id":"sun","faces":3,"area":A,"lit_area":L,
+//        "lit_fraction":L/A}                                        per (group, light)
+//     ]
 //   }
 //
 // A light's totals sum its rows: `area` is the scene's whole face area, `lit_area` what
@@ -62,7 +73,8 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids = CsvIds::kExac
 // once per light and `lit_fraction` is the area-weighted mean over the lights. Sums are
 // compensated (Neumaier), fractions are 0 where the area is 0, and numbers are the
 // shortest form that reads back to the same double.
-std::string report_json(const ShadowedScene& shadowed);
+std::string report_json(const ShadowedScene& shadowed,
+                        std::span<const groups::FaceGroup> groups = {});
 
 // A summary for people to read, in aligned columns (ids left, numbers right, two spaces
 // between columns, no trailing blanks):
@@ -81,7 +93,12 @@ std::string report_json(const ShadowedScene& shadowed);
 // nothing to shadow), and `top` = 0 leaves these lists out. Areas have 6 significant
 // digits, fractions 4 decimals (this is for reading; report_csv is for reading back).
 // Control characters in ids are shown escaped (\n, \xHH) so rows stay on one line;
-// widths count UTF-8 code points.
-std::string report_table(const ShadowedScene& shadowed, std::size_t top = 10);
+// widths count UTF-8 code points. With `groups`, a block after the lights' totals:
+//
+//   groups (each face counted once in each group it is in)
+//   group_id  light_id  faces  area  lit_area  lit_fraction
+//   garden    sun           3   572   467.083        0.8166
+std::string report_table(const ShadowedScene& shadowed, std::size_t top = 10,
+                         std::span<const groups::FaceGroup> groups = {});
 
 }  // namespace shadowgen

@@ -8,6 +8,7 @@
 #include "detail/sun_paths_required.h"
 #include "hsr/area.h"
 #include "shadowgen/model/number_text.h"
+#include "shadowgen/output/group_sums.h"
 
 namespace shadowgen {
 
@@ -58,7 +59,7 @@ std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
 }
 
 std::string sun_hours_csv(const ShadowedScene& shadowed, std::span<const double> thresholds,
-                          CsvIds ids) {
+                          CsvIds ids, std::span<const groups::FaceGroup> groups) {
   const std::vector<SunHoursRow> rows = sun_hours_rows(shadowed, thresholds);
   std::string out = "face_id,sun_path,area,mean_sun_hours,min_sun_hours,max_sun_hours";
   for (const double t : thresholds) out += ",area_at_least_" + shortest(t) + "h";
@@ -74,6 +75,29 @@ std::string sun_hours_csv(const ShadowedScene& shadowed, std::span<const double>
     for (const double a : row.area_at_least) {
       out += ',';
       detail::append_csv_number(out, a);
+    }
+    out += '\n';
+  }
+  if (groups.empty()) return out;
+  out += "\ngroup_id,sun_path,faces,area,mean_sun_hours,min_sun_hours,max_sun_hours";
+  for (const double t : thresholds) out += ",area_at_least_" + shortest(t) + "h";
+  for (const double t : thresholds) out += ",share_at_least_" + shortest(t) + "h";
+  out += '\n';
+  for (const GroupSunHoursRow& row :
+       group_sun_hours_rows(rows, shadowed.sun_paths.size(), groups)) {
+    detail::append_csv_field(out, groups[row.group].id, ids);
+    out += ',';
+    detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
+    out += ',' + std::to_string(row.faces);
+    for (const double v : {row.area, row.mean_hours, row.min_hours, row.max_hours}) {
+      out += ',';
+      detail::append_csv_number(out, v);
+    }
+    for (const std::vector<double>* list : {&row.area_at_least, &row.share_at_least}) {
+      for (const double v : *list) {
+        out += ',';
+        detail::append_csv_number(out, v);
+      }
     }
     out += '\n';
   }

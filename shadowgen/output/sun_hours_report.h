@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "shadowgen/groups/face_groups.h"
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/output/report.h"
 
@@ -32,8 +33,12 @@ std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
 
 // CSV: face_id,sun_path,area,mean_sun_hours,min_sun_hours,max_sun_hours, then a column
 // area_at_least_<T>h per threshold T (T written shortest: 2, 1.5); numbers as the report
-// CSV writes them, ids as CsvIds says.
+// CSV writes them, ids as CsvIds says. With `groups`, one empty line and a second table
+// follow: group_id,sun_path,faces,area,mean_sun_hours,min_sun_hours,max_sun_hours, then
+// area_at_least_<T>h per threshold, then share_at_least_<T>h per threshold, one row per
+// (group, path) (group_sun_hours_rows, output/group_sums.h).
 std::string sun_hours_csv(const ShadowedScene& shadowed, std::span<const double> thresholds,
-                          CsvIds ids = CsvIds::kExact);
+                          CsvIds ids = CsvIds::kExact,
+                          std::span<const groups::FaceGroup> groups = {});
 
 }  // namespace shadowgen

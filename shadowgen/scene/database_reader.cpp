@@ -15,6 +15,7 @@
 #include "clipper/clip.h"
 #include "detail/coordinate_range.h"
 #include "detail/face_builder.h"
+#include "detail/group_entry.h"
 #include "detail/json_entities.h"
 #include "detail/lit_checks.h"
 #include "detail/site_entry.h"
@@ -136,9 +137,13 @@ class DatabaseParser {
   }
 
   // The checks once every member is read: no unknown key at the top, the lit polygons and
-  // the sun hours (checked with every face read).
+  // the sun hours (checked with every face read); the groups, whose patterns must match
+  // faces, wherever they stand.
   ShadowedScene finished(JsonObject& top, ShadowedScene shadowed) const {
     (void)top.get("faces").array();
+    if (const std::optional<JsonValue> groups = top.find("groups")) {
+      shadowed.scene.groups = detail::read_groups(*groups, shadowed.scene.faces);
+    }
     top.finish();
     check_lit(shadowed);
     check_sun_hours(shadowed);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "detail/face_builder.h"
+#include "detail/group_entry.h"
 #include "detail/json_entities.h"
 #include "detail/lamp_depths.h"
 #include "detail/mesh_entry.h"
@@ -63,6 +64,9 @@ class SceneParser {
     for_each_entry(top, "views", [&](const JsonValue& entry) {
       result_.scene.views.push_back(detail::read_view(entry, view_ids_, detail::Source::kScene));
     });
+    if (const std::optional<JsonValue> groups = top.find("groups")) {
+      result_.scene.groups = detail::read_groups(*groups, result_.scene.faces);
+    }
     top.finish();
     detail::check_lamp_depths(result_.scene);
     return std::move(result_);
@@ -83,7 +87,7 @@ class SceneParser {
   static void check_has_faces(JsonObject& top) {
     const bool has_polygons = top.has("polygons");
     if (top.has("meshes") || has_polygons) return;
-    for (const char* key : {"lights", "views", "site", "weather"}) (void)top.has(key);
+    for (const char* key : {"lights", "views", "site", "weather", "groups"}) (void)top.has(key);
     std::string problem =
         "a scene needs \"polygons\" or \"meshes\" (either may be empty); neither is present";
     for (const std::string& key : top.unknown_keys()) {
