@@ -66,10 +66,13 @@ bool groups_apply(const std::string& format) {
          format == "sun-hours-table";
 }
 
-// The groups a report sums over: --group-by's, else the scene's own.
+// The groups a report sums over: --group-by's; else, in the formats for people and in
+// JSON, the scene's own. The CSVs keep the spec's shape unless --group-by asks for groups
+// (`--group-by scene.groups` for the scene's).
 std::vector<groups::FaceGroup> report_groups(const Scene& scene, const ReportArgs& args) {
   if (!groups_apply(args.format)) return {};
   if (!args.group_by.empty()) return groups::groups_by(scene, args.group_by);
+  if (args.format == "csv" || args.format == "sun-hours") return {};
   return groups::scene_groups(scene);
 }
 
@@ -160,9 +163,11 @@ Command add_report_command(CLI::App& app) {
                        "sum over groups of faces (comma-separated or repeated), instead of "
                        "the scene's \"groups\": a face pattern (* any run without /, ** any "
                        "run, ? one character, \\ quoting the next) whose matches make one "
-                       "group, or origin.object, origin.group, origin.semantic or "
-                       "origin.format, one group per value of the faces' origins; with "
-                       "--format csv, json, table, sun-hours and sun-hours-table")
+                       "group; origin.object, origin.group, origin.semantic or "
+                       "origin.format, one group per value of the faces' origins; or "
+                       "scene.groups, the scene's own (which json, table and sun-hours-table "
+                       "show without --group-by); with --format csv, json, table, sun-hours "
+                       "and sun-hours-table")
           ->delimiter(',');
   CLI::Option* weather =
       command->add_option("--weather", args->weather,

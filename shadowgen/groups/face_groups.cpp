@@ -11,6 +11,8 @@ namespace shadowgen::groups {
 namespace {
 
 constexpr std::string_view kOriginPrefix = "origin.";
+constexpr std::string_view kScenePrefix = "scene.";
+constexpr std::string_view kSceneGroups = "scene.groups";
 
 // The origin keys a rule may name, with what each gives of a face's origin.
 struct OriginKey {
@@ -116,6 +118,11 @@ std::optional<std::string> group_rule_problem(std::string_view rule) {
         "the origin keys are origin.format, origin.object, origin.group and origin.semantic "
         "(a face pattern beginning with 'origin.' is written 'origin\\.')");
   }
+  if (rule.starts_with(kScenePrefix) && rule != kSceneGroups) {
+    return quoted.append(
+        "the scene's groups are scene.groups (a face pattern beginning with 'scene.' is written "
+        "'scene\\.')");
+  }
   if (const std::optional<std::string> why = FacePattern::problem(rule)) {
     return quoted.append(*why);
   }
@@ -131,6 +138,15 @@ std::vector<FaceGroup> groups_by(const Scene& scene, std::span<const std::string
     }
     if (!given.insert(rule).second) {
       throw std::invalid_argument("--group-by names '" + rule + "' twice");
+    }
+    if (rule == kSceneGroups) {
+      if (scene.groups.empty()) {
+        throw InputError(scene.file, "",
+                         "--group-by scene.groups: the input has no groups (a scene's "
+                         "\"groups\" key, kept in its database)");
+      }
+      for (FaceGroup& group : scene_groups(scene)) out.push_back(std::move(group));
+      continue;
     }
     if (const OriginKey* key = origin_key(rule)) {
       for (FaceGroup& group : origin_groups(scene, *key, rule)) out.push_back(std::move(group));

@@ -7,11 +7,15 @@
 //   std::vector<FaceGroup> groups = scene_groups(scene);         // the scene's own
 //   groups = groups_by(scene, {"garden*", "origin.group"});      // or the command line's
 //
-// A rule is either `origin.KEY`, KEY one of format, object, group, semantic: one group per
-// value of the faces' FaceOrigin::KEY, in the order the faces first give it, named by the
-// value (faces without one are in none of them); or a face pattern
-// (shadowgen/groups/face_pattern.h): one group of the faces whose ids it matches, named by
-// the pattern as written. A face may be in several groups, and is counted once in each.
+// A rule is one of:
+// - `origin.KEY`, KEY one of format, object, group, semantic: one group per value of the
+//   faces' FaceOrigin::KEY, in the order the faces first give it, named by the value (faces
+//   without one are in none of them);
+// - `scene.groups`: the scene's own groups (scene_groups);
+// - a face pattern (shadowgen/groups/face_pattern.h): one group of the faces whose ids it
+//   matches, named by the pattern as written. Any other rule beginning with `origin.` or
+//   `scene.` is refused as a misspelt key; a pattern beginning so is written `origin\.`.
+// A face may be in several groups, and is counted once in each.
 
 #include <cstddef>
 #include <optional>
@@ -45,7 +49,8 @@ std::optional<std::string> group_rule_problem(std::string_view rule);
 // The groups the rules give, in the order of the rules (an origin rule's groups in the
 // order of their first faces). Throws std::invalid_argument where a rule has a problem
 // (group_rule_problem) or a rule is given twice, and InputError naming Scene::file where a
-// pattern matches no face, an origin rule finds no face with that origin key, or two groups
+// pattern matches no face, an origin rule finds no face with that origin key, scene.groups
+// finds no group in the scene, or two groups
 // come out with one id (a building and a pattern of that name).
 std::vector<FaceGroup> groups_by(const Scene& scene, std::span<const std::string> rules);
 
