@@ -36,7 +36,7 @@ std::string error_of(const std::string& groups) {
   return "no error";
 }
 
-TEST(SceneGroups, AreReadInOrderAndKeptInTheDatabase) {
+TEST(GroupEntries, AreReadInOrderAndKeptInTheDatabase) {
   const std::string groups =
       R"([{"id": "garden", "faces": ["garden*"]}, {"id": "roofs", "faces": ["roof", "r?of"]}])";
   const ShadowedScene shadowed = test::generated(scene_with_groups(groups));
@@ -51,7 +51,7 @@ TEST(SceneGroups, AreReadInOrderAndKeptInTheDatabase) {
   EXPECT_EQ(database_json(test::generated(test::kTwoLights)).find("\"groups\""), std::string::npos);
 }
 
-TEST(SceneGroups, EachMistakeIsNamedAtItsPath) {
+TEST(GroupEntries, EachMistakeIsNamedAtItsPath) {
   EXPECT_EQ(error_of(R"([{"id": "garden", "faces": ["garden", "gardn*"]}])"),
             "scene.json: group 'garden': groups[0] ('garden').faces[1]: the pattern 'gardn*' "
             "matches no face id");
@@ -68,7 +68,7 @@ TEST(SceneGroups, EachMistakeIsNamedAtItsPath) {
             "scene.json: group 'garden': groups[0] ('garden'): missing 'faces'");
 }
 
-TEST(SceneGroups, ADatabaseGroupMatchingNoFaceIsRefused) {
+TEST(GroupEntries, ADatabaseGroupMatchingNoFaceIsRefused) {
   std::string text = database_json(test::generated(test::kTwoLights));
   text.insert(text.find("\"faces\": ["),
               "\"groups\": [{\"id\": \"g\", \"faces\": [\"lawn/*\"]}],\n");
