@@ -1,4 +1,5 @@
-// `shadowgen report`: area, lit area and lit fraction per (face, light).
+// `shadowgen report`: area, lit area and lit fraction per (face, light), and over groups of
+// faces (shadowgen/groups/face_groups.h).
 
 #include <cstddef>
 #include <cstdint>
@@ -28,8 +29,9 @@ namespace {
 
 constexpr CommandText kReportText{
     "report",
-    "Area, lit area and lit fraction per (face, light). A scene is generated first; a "
-    "shadowed database is read as it is."};
+    "Area, lit area and lit fraction per (face, light), and summed over groups of faces "
+    "(--group-by, or the scene's groups). A scene is generated first; a shadowed database is "
+    "read as it is."};
 
 // The most faces --top lists per light (a practical bound: any scene has fewer).
 constexpr std::int64_t kMostTopFaces = 1'000'000'000;
