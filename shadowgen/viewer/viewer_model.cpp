@@ -33,11 +33,11 @@ using LightSet = std::vector<std::size_t>;
 
 nlohmann::json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
-// The angle from true north to the scene's +y, clockwise seen from above: the site's, or
-// else, for a database (which keeps its sun's instants but not its site), what a sun
-// instant's azimuth and direction say: the way to the sun is at its azimuth clockwise from
-// north, and at atan2(x, y) clockwise from +y. None where neither is known, or the only
-// suns stand overhead.
+// The angle from true north to the scene's +y, clockwise seen from above: the site's (a
+// database keeps its scene's), or else, for a database written before databases kept it,
+// what a sun instant's azimuth and direction say: the way to the sun is at its azimuth clockwise
+// from north, and at atan2(x, y) clockwise from +y. None where neither is known, or the only suns
+// stand overhead.
 std::optional<double> north_axis_deg(const Scene& scene) {
   if (scene.site) return scene.site->north_axis_deg;
   for (const Light& light : scene.lights) {
