@@ -6,7 +6,8 @@
 # 800 × 600 picture) as one path per piece (`--pieces`, as every map was drawn before the
 # pieces of one colour were joined) and as one path per colour, the two in turn, each
 # REPETITIONS times: the SVG's size and path count, and each run's wall time and peak
-# resident memory, with the medians.
+# resident memory, with the medians; then the same bands exported as a glTF and an OBJ
+# model (`export --sun-hours`), likewise.
 #
 #   bench/run_map_bench.sh [FACES] [FROM] [TO] [STEP_MIN]
 #
@@ -101,5 +102,37 @@ print("| %s | %s | %.2f | %d | %s | %s |" % (
     ", ".join("%.2f" % w for w in walls), statistics.median(walls),
     statistics.median(int(r[1]) for r in rows), format(int(rows[-1][2]), ","),
     format(int(rows[-1][3]), ",")))
+PY
+done
+
+# The same bands as a 3D model, for a viewer: `export --sun-hours` as binary glTF and as
+# OBJ (with its MTL), in turn, REPETITIONS times, each run's wall time and peak memory
+# and the file's size.
+model() {
+  local form=$1
+  /usr/bin/time -f "%e %M" -o "$work/time" "$build/cli/shadowgen" export "$work/db.json" \
+    --sun-hours path -o "$work/bands.$form" --quiet
+  read -r wall kb <"$work/time"
+  local bytes
+  bytes=$(stat -c %s "$work/bands.$form")
+  [ "$form" = obj ] && bytes=$((bytes + $(stat -c %s "$work/bands.mtl")))
+  echo "$wall $((kb / 1024)) $bytes" >>"$work/$form.runs"
+}
+for _ in $(seq "$repetitions"); do
+  model glb
+  model obj
+done
+echo
+echo "| model | wall s (runs) | median s | peak MB | bytes |"
+echo "|---|---|---:|---:|---:|"
+for form in glb obj; do
+  python3 - "$form" "$work/$form.runs" <<'PY'
+import statistics, sys
+rows = [line.split() for line in open(sys.argv[2])]
+walls = [float(r[0]) for r in rows]
+print("| %s | %s | %.2f | %d | %s |" % (
+    "glTF (.glb)" if sys.argv[1] == "glb" else "OBJ + MTL",
+    ", ".join("%.2f" % w for w in walls), statistics.median(walls),
+    statistics.median(int(r[1]) for r in rows), format(int(rows[-1][2]), ",")))
 PY
 done
