@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 #SBATCH --job-name=shadowgen-merge
-#SBATCH --cpus-per-task=4
-#SBATCH --mem=16G
+#SBATCH --cpus-per-task=1
+#SBATCH --mem=1G
 #SBATCH --time=01:00:00
 #SBATCH --output=shadowgen-merge-%j.log
 #
@@ -10,12 +10,14 @@
 #   shadowgen merge OUT/shard-1.json ... OUT/shard-SHARDS.json -o DATABASE
 #
 # Submit it to start when every task of the shards' array has succeeded (submit-slurm.sh
-# does both):
+# does both, with the CPUs from CPUS_PER_TASK and the memory from MERGE_MEM):
 #
 #   sbatch --dependency=afterok:JOBID examples/shards/slurm-merge.sh
 #
-# with JOBID the array's job id. merge refuses, naming the file, shards missing or given
-# twice, shards of another count or another scene, and a whole database among them.
+# with JOBID the array's job id; --cpus-per-task and --mem on that command line win over
+# the #SBATCH lines above (merge holds every shard at once: give it their memory). merge
+# refuses, naming the file, shards missing or given twice, shards of another count or
+# another scene, and a whole database among them.
 #
 # Environment (as for slurm.sh):
 #   SCENE      the scene (default: scene.json): only its name is used here

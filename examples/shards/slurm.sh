@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 #SBATCH --job-name=shadowgen-shard
 #SBATCH --array=1-8
-#SBATCH --cpus-per-task=4
-#SBATCH --mem=8G
+#SBATCH --cpus-per-task=1
+#SBATCH --mem=1G
 #SBATCH --time=04:00:00
 #SBATCH --output=shadowgen-shard-%A_%a.log
 #
@@ -10,10 +10,13 @@
 #
 #   shadowgen generate SCENE -o OUT/shard-K.json --instants K/SHARDS
 #
-# The array must be 1-SHARDS. submit-slurm.sh submits it so, and the merge after it; by
-# hand, the options on the command line win over the #SBATCH lines above:
+# The array must be 1-SHARDS. submit-slurm.sh submits it so, and the merge after it, with
+# each task's CPUs and memory from CPUS_PER_TASK and MEM_PER_TASK (default: 1 CPU and 1G,
+# as above, which a small node gives); by hand, the options on the command line win over
+# the #SBATCH lines above:
 #
-#   SCENE=city.json SHARDS=16 sbatch --array=1-16 examples/shards/slurm.sh
+#   SCENE=city.json SHARDS=16 sbatch --array=1-16 --cpus-per-task=4 --mem=8G \
+#     examples/shards/slurm.sh
 #
 # A task that failed is run again alone with --array=K (K its task id); its shard file
 # is written whole or not at all, so the others stay as they are.
@@ -25,7 +28,7 @@
 #   OUT        the folder of the shard files (default: shards), on a file system every
 #              node writes to and the merge job reads
 #   SHADOWGEN  the shadowgen command (default: shadowgen)
-# Each shard runs with --threads SLURM_CPUS_PER_TASK (the --cpus-per-task above).
+# Each shard runs with --threads SLURM_CPUS_PER_TASK (its --cpus-per-task).
 set -euo pipefail
 
 scene=${SCENE:-scene.json}

@@ -6,12 +6,24 @@
 #
 # Environment: SCENE, SHARDS, OUT, DATABASE and SHADOWGEN as slurm.sh and slurm-merge.sh
 # read them (exported here, so that both jobs see the same), and
-#   MAX_RUNNING  at most this many shards running at a time (default: no limit)
+#   CPUS_PER_TASK  CPUs of each shard and of the merge, their --threads (default: 1)
+#   MEM_PER_TASK   memory of each shard, as sbatch --mem takes it: a whole number of
+#                  megabytes, or with the suffix K, M, G or T (default: 1G)
+#   MERGE_MEM      memory of the merge, which holds every shard at once (default:
+#                  MEM_PER_TASK)
+#   MAX_RUNNING    at most this many shards running at a time (default: no limit)
+# These override the #SBATCH lines of the two scripts; sbatch's own SBATCH_PARTITION,
+# SBATCH_TIMELIMIT and the like apply to both jobs as usual.
+#
+# Before submitting anything, it checks that a node of the partition (SBATCH_PARTITION,
+# or the cluster's default) has CPUS_PER_TASK CPUs and the memory asked, and that Slurm
+# would run both jobs (sbatch --test-only): a job asking what no node has would stay
+# pending for ever. If not, it says which setting to lower and submits nothing.
 #
 # If a shard fails, the merge job is cancelled (--kill-on-invalid-dep=yes). Run the
 # failed task again alone, then the merge:
 #
-#   sbatch --array=K examples/shards/slurm.sh
+#   sbatch --array=K --cpus-per-task=C --mem=M examples/shards/slurm.sh
 #   sbatch --dependency=afterok:NEWJOBID examples/shards/slurm-merge.sh
 set -euo pipefail
 
@@ -21,16 +33,87 @@ export SHARDS=${SHARDS:-8}
 export OUT=${OUT:-shards}
 export SHADOWGEN=${SHADOWGEN:-shadowgen}
 if [[ -n ${DATABASE:-} ]]; then export DATABASE; fi
+cpus=${CPUS_PER_TASK:-1}
+mem=${MEM_PER_TASK:-1G}
+merge_mem=${MERGE_MEM:-$mem}
 
-[[ -f $SCENE ]] || { echo "submit-slurm.sh: $SCENE: no such file" >&2; exit 1; }
-mkdir -p -- "$OUT"
+fail() {
+  echo "submit-slurm.sh: $*" >&2
+  exit 1
+}
+
+[[ $cpus =~ ^[1-9][0-9]*$ ]] || fail "CPUS_PER_TASK=$cpus: expected a positive whole number"
+# Megabytes of a memory size as sbatch --mem reads it (no suffix: megabytes), rounded up.
+megabytes() {
+  local name=$1 size=$2
+  [[ $size =~ ^([1-9][0-9]*)([KkMmGgTt]?)$ ]] ||
+    fail "$name=$size: expected a memory size such as 500M or 2G (sbatch --mem)"
+  local n=${BASH_REMATCH[1]}
+  case ${BASH_REMATCH[2]} in
+    K | k) echo $(((n + 1023) / 1024)) ;;
+    G | g) echo $((n * 1024)) ;;
+    T | t) echo $((n * 1024 * 1024)) ;;
+    *) echo "$n" ;;
+  esac
+}
+mem_mb=$(megabytes MEM_PER_TASK "$mem")
+merge_mem_mb=$(megabytes MERGE_MEM "$merge_mem")
+
+[[ -f $SCENE ]] || fail "$SCENE: no such file"
+
+# The partition the jobs go to, and the CPUs and megabytes of each of its nodes.
+partition=${SBATCH_PARTITION:-$(sinfo -h -o '%P' | sed -n 's/\*$//p' | head -n 1)}
+[[ -n $partition ]] || fail "the cluster has no default partition: set SBATCH_PARTITION"
+nodes=$(sinfo -h -N -p "$partition" -o '%c %m') ||
+  fail "sinfo could not list the nodes of partition '$partition'"
+[[ -n $nodes ]] || fail "partition '$partition': sinfo lists no node of it (sinfo -s lists the partitions)"
+
+# Fails unless a node has `cpus` CPUs and $2 megabytes together, naming what to lower.
+check_fits() {
+  local what=$1 want_mb=$2 mem_name=$3 mem_size=$4
+  awk -v c="$cpus" -v m="$want_mb" -v what="$what" -v part="$partition" \
+    -v mem_name="$mem_name" -v mem_size="$mem_size" '
+    { if ($1 > max_c) max_c = $1; if ($2 + 0 > max_m) max_m = $2 + 0
+      if ($1 >= c) cpus_ok = 1; if ($2 >= m) mem_ok = 1; if ($1 >= c && $2 >= m) both = 1 }
+    END {
+      if (both) exit 0
+      if (!cpus_ok) {
+        printf "CPUS_PER_TASK=%d: no node of partition '\''%s'\'' has %d CPUs (the most is %d): lower CPUS_PER_TASK\n", c, part, c, max_c
+      } else if (!mem_ok) {
+        printf "%s=%s: no node of partition '\''%s'\'' has %d MB of memory for %s (the most is %d MB): lower %s\n", mem_name, mem_size, part, m, what, max_m, mem_name
+      } else {
+        printf "CPUS_PER_TASK=%d and %s=%s: no node of partition '\''%s'\'' has both %d CPUs and %d MB of memory for %s: lower CPUS_PER_TASK or %s\n", c, mem_name, mem_size, part, c, m, what, mem_name
+      }
+      exit 1
+    }' <<<"$nodes"
+}
+if ! said=$(check_fits "a shard" "$mem_mb" MEM_PER_TASK "$mem"); then fail "$said"; fi
+if ! said=$(check_fits "the merge" "$merge_mem_mb" MERGE_MEM "$merge_mem"); then fail "$said"; fi
 
 array=1-$SHARDS${MAX_RUNNING:+%$MAX_RUNNING}
+shard_options=(--array="$array" --cpus-per-task="$cpus" --mem="$mem")
+merge_options=(--cpus-per-task="$cpus" --mem="$merge_mem")
+
+# What else Slurm holds against the jobs (a partition's time or size limits, a QOS):
+# sbatch --test-only asks the scheduler without submitting.
+for job in shards merge; do
+  if [[ $job == shards ]]; then
+    options=("${shard_options[@]}") script=$here/slurm.sh
+  else
+    options=("${merge_options[@]}") script=$here/slurm-merge.sh
+  fi
+  if ! said=$(sbatch --test-only "${options[@]}" "$script" 2>&1); then
+    fail "Slurm would not run the $job (${options[*]}) in partition '$partition': $(tail -n 1 <<<"$said")"
+  fi
+done
+
+mkdir -p -- "$OUT"
 # --parsable prints JOBID, or JOBID;CLUSTER on a federation.
-shards_job=$(sbatch --parsable --array="$array" "$here/slurm.sh")
+shards_job=$(sbatch --parsable "${shard_options[@]}" "$here/slurm.sh")
 shards_job=${shards_job%%;*}
-merge_job=$(sbatch --parsable --dependency=afterok:"$shards_job" --kill-on-invalid-dep=yes \
-  "$here/slurm-merge.sh")
+merge_job=$(sbatch --parsable "${merge_options[@]}" --dependency=afterok:"$shards_job" \
+  --kill-on-invalid-dep=yes "$here/slurm-merge.sh")
 merge_job=${merge_job%%;*}
 
-echo "shards: job array $shards_job, tasks $array; merge: job $merge_job, once they all succeed"
+echo "shards: job array $shards_job, tasks $array, each --cpus-per-task=$cpus --mem=$mem;" \
+  "merge: job $merge_job, --cpus-per-task=$cpus --mem=$merge_mem, once they all succeed"
