@@ -10,12 +10,13 @@
 #   shadowgen merge OUT/shard-1.json ... OUT/shard-SHARDS.json -o DATABASE
 #
 # Submit it to start when every task of the shards' array has succeeded (submit-slurm.sh
-# does both, with the CPUs from CPUS_PER_TASK and the memory from MERGE_MEM):
+# does both, with the CPUs from CPUS_PER_TASK, the memory from MERGE_MEM and the time
+# limit from MERGE_TIME):
 #
 #   sbatch --dependency=afterok:JOBID examples/shards/slurm-merge.sh
 #
-# with JOBID the array's job id; --cpus-per-task and --mem on that command line win over
-# the #SBATCH lines above (merge holds every shard at once: give it their memory). merge
+# with JOBID the array's job id; --cpus-per-task, --mem and --time on that command line
+# win over the #SBATCH lines above (merge holds every shard at once: give it their memory). merge
 # refuses, naming the file, shards missing or given twice, shards of another count or
 # another scene, and a whole database among them.
 #

@@ -11,9 +11,10 @@
 #   shadowgen generate SCENE -o OUT/shard-K.json --instants K/SHARDS
 #
 # The array must be 1-SHARDS. submit-slurm.sh submits it so, and the merge after it, with
-# each task's CPUs and memory from CPUS_PER_TASK and MEM_PER_TASK (default: 1 CPU and 1G,
-# as above, which a small node gives); by hand, the options on the command line win over
-# the #SBATCH lines above:
+# each task's CPUs, memory and time limit from CPUS_PER_TASK, MEM_PER_TASK and
+# TIME_PER_TASK (default: 1 CPU, 1G and 4 hours, as above: a small node gives them),
+# having checked that the partition can give them; by hand, the options on the command
+# line win over the #SBATCH lines above:
 #
 #   SCENE=city.json SHARDS=16 sbatch --array=1-16 --cpus-per-task=4 --mem=8G \
 #     examples/shards/slurm.sh

@@ -11,20 +11,26 @@
 #                  megabytes, or with the suffix K, M, G or T (default: 1G)
 #   MERGE_MEM      memory of the merge, which holds every shard at once (default:
 #                  MEM_PER_TASK)
+#   TIME_PER_TASK  time limit of each shard, as sbatch --time takes it: MINUTES,
+#                  MINUTES:SECONDS, HOURS:MINUTES:SECONDS, DAYS-HOURS,
+#                  DAYS-HOURS:MINUTES or DAYS-HOURS:MINUTES:SECONDS (default: 4:00:00)
+#   MERGE_TIME     time limit of the merge (default: 1:00:00)
 #   MAX_RUNNING    at most this many shards running at a time (default: no limit)
-# These override the #SBATCH lines of the two scripts; sbatch's own SBATCH_PARTITION,
-# SBATCH_TIMELIMIT and the like apply to both jobs as usual.
+# These override the #SBATCH lines of the two scripts. The jobs go to SBATCH_PARTITION
+# (sbatch's own variable), or to the cluster's default partition.
 #
-# Before submitting anything, it checks that a node of the partition (SBATCH_PARTITION,
-# or the cluster's default) has CPUS_PER_TASK CPUs and the memory asked, and that Slurm
-# would run both jobs (sbatch --test-only): a job asking what no node has would stay
-# pending for ever. If not, it says which setting to lower and submits nothing.
+# Before submitting anything, it checks that a node of the partition has CPUS_PER_TASK
+# CPUs and the memory asked, that the partition's time limit allows the time asked, and
+# that Slurm would run both jobs (sbatch --test-only: a QOS's or a partition's other
+# limits): a job asking what the partition cannot give would stay pending for ever. If
+# not, it says which setting to lower and submits nothing.
 #
 # If a shard fails, the merge job is cancelled (--kill-on-invalid-dep=yes). Run the
 # failed task again alone, then the merge:
 #
-#   sbatch --array=K --cpus-per-task=C --mem=M examples/shards/slurm.sh
-#   sbatch --dependency=afterok:NEWJOBID examples/shards/slurm-merge.sh
+#   sbatch --array=K --cpus-per-task=C --mem=M --time=T examples/shards/slurm.sh
+#   sbatch --dependency=afterok:NEWJOBID --cpus-per-task=C --mem=M --time=T \
+#     examples/shards/slurm-merge.sh
 set -euo pipefail
 
 here=$(cd -- "$(dirname -- "$0")" && pwd)
@@ -36,6 +42,8 @@ if [[ -n ${DATABASE:-} ]]; then export DATABASE; fi
 cpus=${CPUS_PER_TASK:-1}
 mem=${MEM_PER_TASK:-1G}
 merge_mem=${MERGE_MEM:-$mem}
+time=${TIME_PER_TASK:-4:00:00}
+merge_time=${MERGE_TIME:-1:00:00}
 
 fail() {
   echo "submit-slurm.sh: $*" >&2
@@ -58,6 +66,29 @@ megabytes() {
 }
 mem_mb=$(megabytes MEM_PER_TASK "$mem")
 merge_mem_mb=$(megabytes MERGE_MEM "$merge_mem")
+# Seconds of a time limit as sbatch --time and sinfo write it; "infinite", "unlimited"
+# and 0 (no limit) give -1.
+seconds() {
+  local name=$1 limit=$2 d=0 f=()
+  case ${limit,,} in infinite | unlimited | 0) echo -1 && return ;; esac
+  if [[ $limit =~ ^([0-9]+)-([0-9]+(:[0-9]+){0,2})$ ]]; then
+    d=${BASH_REMATCH[1]}
+    IFS=: read -ra f <<<"${BASH_REMATCH[2]}"
+    f+=(0 0) # DAYS-HOURS[:MINUTES[:SECONDS]]
+    echo $((((10#$d * 24 + 10#${f[0]}) * 60 + 10#${f[1]}) * 60 + 10#${f[2]}))
+  elif [[ $limit =~ ^[0-9]+(:[0-9]+){0,2}$ ]]; then
+    IFS=: read -ra f <<<"$limit"
+    case ${#f[@]} in
+      1) echo $((10#${f[0]} * 60)) ;;
+      2) echo $((10#${f[0]} * 60 + 10#${f[1]})) ;;
+      *) echo $(((10#${f[0]} * 60 + 10#${f[1]}) * 60 + 10#${f[2]})) ;;
+    esac
+  else
+    fail "$name=$limit: expected a time limit such as 90, 4:00:00 or 1-12:00:00 (sbatch --time)"
+  fi
+}
+time_s=$(seconds TIME_PER_TASK "$time")
+merge_time_s=$(seconds MERGE_TIME "$merge_time")
 
 [[ -f $SCENE ]] || fail "$SCENE: no such file"
 
@@ -90,9 +121,22 @@ check_fits() {
 if ! said=$(check_fits "a shard" "$mem_mb" MEM_PER_TASK "$mem"); then fail "$said"; fi
 if ! said=$(check_fits "the merge" "$merge_mem_mb" MERGE_MEM "$merge_mem"); then fail "$said"; fi
 
+# The partition's time limit (as sinfo writes it: [DAYS-]HOURS:MINUTES:SECONDS).
+most=$(sinfo -h -p "$partition" -o '%l' | head -n 1)
+most_s=$(seconds "the time limit of partition '$partition'" "$most")
+if ((most_s >= 0)); then
+  for setting in "TIME_PER_TASK $time $time_s" "MERGE_TIME $merge_time $merge_time_s"; do
+    read -r name limit limit_s <<<"$setting"
+    if ((limit_s < 0 || limit_s > most_s)); then
+      asks=$([[ $limit_s -lt 0 ]] && echo "no time limit" || echo "$limit_s s")
+      fail "$name=$limit asks $asks, and partition '$partition' runs a job $most_s s at the most (its time limit, $most): lower $name"
+    fi
+  done
+fi
+
 array=1-$SHARDS${MAX_RUNNING:+%$MAX_RUNNING}
-shard_options=(--array="$array" --cpus-per-task="$cpus" --mem="$mem")
-merge_options=(--cpus-per-task="$cpus" --mem="$merge_mem")
+shard_options=(--array="$array" --cpus-per-task="$cpus" --mem="$mem" --time="$time")
+merge_options=(--cpus-per-task="$cpus" --mem="$merge_mem" --time="$merge_time")
 
 # What else Slurm holds against the jobs (a partition's time or size limits, a QOS):
 # sbatch --test-only asks the scheduler without submitting.
@@ -115,5 +159,5 @@ merge_job=$(sbatch --parsable "${merge_options[@]}" --dependency=afterok:"$shard
   --kill-on-invalid-dep=yes "$here/slurm-merge.sh")
 merge_job=${merge_job%%;*}
 
-echo "shards: job array $shards_job, tasks $array, each --cpus-per-task=$cpus --mem=$mem;" \
-  "merge: job $merge_job, --cpus-per-task=$cpus --mem=$merge_mem, once they all succeed"
+echo "shards: job array $shards_job, tasks $array, each ${shard_options[*]:1};" \
+  "merge: job $merge_job, ${merge_options[*]}, once they all succeed"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # examples/shards/submit-slurm.sh against a real Slurm: a one-node cluster of the test's
 # own (tests/cli/slurm_mini_cluster.sh) is started, then
-#   - asked for more CPUs per task than its node has, or more memory, submit-slurm.sh
-#     exits 1 naming the setting to lower, and submits nothing;
+#   - asked for more CPUs per task than its node has, more memory, or more time than a
+#     partition allows, submit-slurm.sh exits 1 naming the setting to lower, and submits
+#     nothing; likewise for settings that are not a count, a memory size or a time;
 #   - with the defaults, a street's sun path of 71 instants (5 blocks of 16) in 4 shards
 #     runs as a job array and its merge job, and the database merged is byte for byte
 #     the one of a plain generate.
@@ -60,8 +61,8 @@ if ! slurm_cluster_start "$dir/cluster"; then
   echo "slurm_cluster skipped: the one-node Slurm cluster could not start: $slurm_cluster_reason"
   exit 77
 fi
-cpus=$(sinfo -h -N -o '%c')
-memory=$(sinfo -h -N -o '%m')
+cpus=$(sinfo -h -N -p shards -o '%c')
+memory=$(sinfo -h -N -p shards -o '%m')
 echo "a one-node Slurm cluster: $cpus CPUs, $memory MB, SLURM_CONF=$SLURM_CONF"
 
 failed=0
@@ -117,6 +118,23 @@ expect_refused "submit-slurm.sh: MEM_PER_TASK=$((memory + 1))M: no node of parti
   MEM_PER_TASK=$((memory + 1))M
 expect_refused "submit-slurm.sh: MERGE_MEM=$((memory + 1)): no node of partition 'shards' has $((memory + 1)) MB of memory for the merge (the most is $memory MB): lower MERGE_MEM" \
   MERGE_MEM=$((memory + 1))
+expect_refused "submit-slurm.sh: TIME_PER_TASK=4:00:00 asks 14400 s, and partition 'short' runs a job 60 s at the most (its time limit, 1:00): lower TIME_PER_TASK" \
+  SBATCH_PARTITION=short
+expect_refused "submit-slurm.sh: MERGE_TIME=1:00:00 asks 3600 s, and partition 'short' runs a job 60 s at the most (its time limit, 1:00): lower MERGE_TIME" \
+  SBATCH_PARTITION=short TIME_PER_TASK=1
+# A limit that only the scheduler knows (the partition uses 1 CPU of a node, which has
+# more): sbatch --test-only's answer.
+if ((cpus >= 2)); then
+  expect_refused "submit-slurm.sh: Slurm would not run the shards (--array=1-4 --cpus-per-task=2 --mem=1G --time=1) in partition 'short': allocation failure: Requested node configuration is not available" \
+    SBATCH_PARTITION=short TIME_PER_TASK=1 MERGE_TIME=1 CPUS_PER_TASK=2
+else
+  echo "not checked: a partition's limit that only sbatch --test-only sees (the node has 1 CPU)"
+fi
+expect_refused "submit-slurm.sh: CPUS_PER_TASK=0: expected a positive whole number" CPUS_PER_TASK=0
+expect_refused "submit-slurm.sh: MEM_PER_TASK=2GB: expected a memory size such as 500M or 2G (sbatch --mem)" \
+  MEM_PER_TASK=2GB
+expect_refused "submit-slurm.sh: TIME_PER_TASK=soon: expected a time limit such as 90, 4:00:00 or 1-12:00:00 (sbatch --time)" \
+  TIME_PER_TASK=soon
 
 # The defaults fit the node: 4 shards and their merge run, and give one generate's file.
 if ! submit; then

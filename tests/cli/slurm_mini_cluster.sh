@@ -17,9 +17,11 @@
 #
 # It leaves a machine's own Slurm and munge alone: its own ports (two free ones, picked at
 # random), its own munge socket and key, its own files, a cluster named shadowgen-test.
-# The node is this host as `slurmd -C` describes it (its CPUs and memory), at 127.0.0.1;
-# no cgroup (proctrack/linuxproc, task/none). Needs root (slurmd runs jobs as their user)
-# and Debian's slurm-wlm and munge.
+# The node is this host as `slurmd -C` describes it (its CPUs and memory), at 127.0.0.1,
+# in two partitions: shards (the default, no limit) and short (a 1-minute time limit, 1
+# CPU of a node at the most). No cgroup (proctrack/linuxproc, task/none); memory is a
+# consumable (CR_Core_Memory). Needs root (slurmd runs jobs as their user) and Debian's
+# slurm-wlm and munge.
 #
 # Every process it starts has SHADOWGEN_SLURM_CLUSTER=DIR in its environment, and so do
 # the daemons' children (slurmstepd) and, if the caller submits with that variable set
@@ -128,6 +130,7 @@ MailProg=/bin/true
 ReturnToService=2
 $node NodeAddr=127.0.0.1 State=UNKNOWN
 PartitionName=shards Nodes=ALL Default=YES MaxTime=INFINITE State=UP
+PartitionName=short Nodes=ALL MaxTime=1 MaxCPUsPerNode=1 State=UP
 EOF
   export SLURM_CONF=$d/slurm.conf
 
@@ -144,7 +147,7 @@ EOF
   slurm_cluster_spawn slurmd.out slurmd -D -f "$d/slurm.conf"
   local state=
   for ((waited = 0; waited < slurm_cluster_start_wait * 4; waited++)); do
-    state=$(sinfo -h -N -o '%t' 2>/dev/null) || state=
+    state=$(sinfo -h -N -p shards -o '%t' 2>/dev/null) || state=
     [[ $state == idle ]] && return 0
     local i
     for i in "${!slurm_cluster_pids[@]}"; do
