@@ -93,7 +93,9 @@ merge_time_s=$(seconds MERGE_TIME "$merge_time")
 [[ -f $SCENE ]] || fail "$SCENE: no such file"
 
 # The partition the jobs go to, and the CPUs and megabytes of each of its nodes.
-partition=${SBATCH_PARTITION:-$(sinfo -h -o '%P' | sed -n 's/\*$//p' | head -n 1)}
+partitions=$(sinfo -h -o '%P' 2>&1) ||
+  fail "sinfo could not reach the cluster: $(tail -n 1 <<<"$partitions")"
+partition=${SBATCH_PARTITION:-$(sed -n 's/\*$//p' <<<"$partitions" | head -n 1)}
 [[ -n $partition ]] || fail "the cluster has no default partition: set SBATCH_PARTITION"
 nodes=$(sinfo -h -N -p "$partition" -o '%c %m') ||
   fail "sinfo could not list the nodes of partition '$partition'"

@@ -24,8 +24,9 @@ set -euo pipefail
 shadowgen=$(realpath -- "$1")
 scripts=$(realpath -- "$2")
 here=$(cd -- "$(dirname -- "$0")" && pwd)
-# Bounds on the waits, in seconds (the run itself takes a few).
-jobs_wait=180
+# The bound on the wait for the jobs, in seconds (they take a few); with the cluster's
+# start (slurm_cluster_start_wait) well under ctest's TIMEOUT.
+jobs_wait=120
 
 # Nothing of a surrounding Slurm job or of the user's sbatch defaults applies here.
 while read -r name; do unset "$name"; done < <(compgen -e | grep -E '^(SLURM|SBATCH)_' || true)
