@@ -7,6 +7,15 @@
 
 namespace shadowgen::cli {
 
+void MethodArgs::apply(api::GenerateSettings& settings) const {
+  const Method chosen = method();
+  settings.method = chosen.kind == MethodKind::kRays        ? api::Method::kRays
+                    : chosen.kind == MethodKind::kShadowMap ? api::Method::kShadowMap
+                                                            : api::Method::kExact;
+  settings.samples = samples;
+  settings.resolution = resolution;
+}
+
 Method MethodArgs::method() const {
   const MethodKind kind = method_kind(name).value_or(MethodKind::kExact);
   if (kind == MethodKind::kExact && samples_option && samples_option->count() > 0) {
@@ -101,6 +110,27 @@ LoadOptions load_options(const ReadingArgs& args, Accept accept, const RunFiles&
     };
   }
   return options;
+}
+
+api::ReadSettings read_settings(const ReadingArgs& args) {
+  api::ReadSettings read;
+  read.strict = args.strict;
+  read.verbose = args.verbose;
+  read.lights = args.lights;
+  if (!args.quiet) {
+    read.on_warning = [](const std::string& warning) {
+      std::cerr << "shadowgen: warning: " << warning << '\n';
+    };
+  }
+  return read;
+}
+
+api::LoadSettings load_settings(const ReadingArgs& args, const RunFiles& files) {
+  api::LoadSettings settings;
+  settings.read = read_settings(args);
+  settings.generate.threads = args.threads;
+  guard_outputs(settings, files);
+  return settings;
 }
 
 }  // namespace shadowgen::cli

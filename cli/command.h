@@ -16,6 +16,7 @@
 
 #include "cli/run_files.h"
 #include "shadowgen/pipeline/load_shadowed.h"
+#include "shadowgen/shadowgen.h"
 
 namespace shadowgen::cli {
 
@@ -85,6 +86,8 @@ struct MethodArgs {
   // The method asked for; a UsageError where --samples or --resolution comes with a
   // method that takes none.
   Method method() const;
+  // The same, set in `settings` (the library's GenerateSettings).
+  void apply(api::GenerateSettings& settings) const;
 };
 
 // --method, --samples and --resolution on `command`.
@@ -105,5 +108,12 @@ CLI::Option* add_output_option(CLI::App& command, std::string& path, const std::
 // that no output is an input, the files a scene names included, and no two outputs are
 // one file.
 LoadOptions load_options(const ReadingArgs& args, Accept accept, const RunFiles& files = {});
+
+// The same for the library's load (shadowgen/shadowgen.h): a scene or a database, `files`
+// checked as load_options checks them.
+api::LoadSettings load_settings(const ReadingArgs& args, const RunFiles& files = {});
+
+// How the library reads a scene for these arguments: reading warnings on stderr unless quiet.
+api::ReadSettings read_settings(const ReadingArgs& args);
 
 }  // namespace shadowgen::cli

@@ -1,6 +1,5 @@
 // `shadowgen generate`: scenes in, shadowed databases out.
 
-#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -16,7 +15,6 @@
 #include "cli/number_options.h"
 #include "cli/progress.h"
 #include "shadowgen/model/input_error.h"
-#include "shadowgen/output/database.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -117,45 +115,42 @@ std::vector<fs::path> database_paths(const std::vector<std::string>& scenes,
 }
 
 // Scene `index` of `args`, read and generated, with a progress line when `show_progress`.
-ShadowedScene generated(const GenerateArgs& args, const fs::path& database, std::size_t index,
-                        bool show_progress) {
-  LoadOptions options =
-      load_options(args.reading, Accept::kScene, {args.scenes, {{"-o", database.string()}}});
-  options.instant_polygons = args.keep_instants;
-  options.sun_hours_regions = !args.areas_only;
-  options.method = args.method.method();
+api::Shadows generated(const GenerateArgs& args, const fs::path& database, std::size_t index,
+                       bool show_progress) {
+  const std::vector<OutputFile> writes{{"-o", database.string()}};
+  refuse_unsafe_outputs(writes, args.scenes);
+  const api::Scene scene = api::read_scene(args.scenes[index], read_settings(args.reading));
+  refuse_unsafe_outputs(writes, scene.files());
+  api::GenerateSettings settings;
+  settings.threads = args.reading.threads;
+  settings.keep_instant_polygons = args.keep_instants;
+  settings.sun_hours_regions = !args.areas_only;
+  args.method.apply(settings);
   if (!args.instants.empty()) {
-    options.shard = parse_shard(args.instants);
-    options.on_scene = [&, check = options.on_scene](const Scene& scene) {
-      check(scene);
-      const bool paths = !scene.sun_paths.empty() ||
-                         std::any_of(scene.lights.begin(), scene.lights.end(), in_sun_path);
-      if (!paths) {
-        throw InputError(args.scenes[index], "",
-                         "--instants shares out the instants of sun paths, and the scene has "
-                         "no sun path (a `sun` light with from, to and step_min)");
-      }
-    };
+    const ShardPlace shard = parse_shard(args.instants);
+    settings.shard = api::Shard{shard.index, shard.count};
+    if (scene.sun_path_ids().empty()) {
+      throw InputError(args.scenes[index], "",
+                       "--instants shares out the instants of sun paths, and the scene has "
+                       "no sun path (a `sun` light with from, to and step_min)");
+    }
   }
   // Ends its line when it goes, so that an error printed afterwards has a line of its own.
   std::optional<ProgressDisplay> progress;
   if (show_progress) {
-    options.on_scene = [&, check = options.on_scene](const Scene& scene) {
-      check(scene);
-      ProgressLine line;
-      line.scene = args.scenes[index];
-      line.scene_index = index;
-      line.scene_count = args.scenes.size();
-      line.lights_total = scene.lights.size();
-      progress.emplace(&std::cerr, line);
-    };
-    options.on_light_done = [&](std::size_t, const LightStats& stats) {
-      progress->light_done(stats);
+    ProgressLine line;
+    line.scene = args.scenes[index];
+    line.scene_index = index;
+    line.scene_count = args.scenes.size();
+    line.lights_total = scene.light_ids().size();
+    progress.emplace(&std::cerr, line);
+    settings.on_light_done = [&](const api::LightDone& done) {
+      progress->light_done(light_stats(done));
     };
   }
-  ShadowedScene shadowed = load_shadowed(args.scenes[index], options);
+  api::Shadows shadows = api::generate(scene, settings);
   if (progress) progress->finish();
-  return shadowed;
+  return shadows;
 }
 
 void run_generate(const GenerateArgs& args) {
@@ -177,7 +172,7 @@ void run_generate(const GenerateArgs& args) {
   const std::vector<fs::path> paths = database_paths(args.scenes, args.output);
   const bool show_progress = !args.reading.quiet && stderr_is_terminal();
   for (std::size_t i = 0; i < args.scenes.size(); ++i) {
-    const ShadowedScene shadowed = generated(args, paths[i], i, show_progress);
+    const api::Shadows shadows = generated(args, paths[i], i, show_progress);
     if (args.scenes.size() > 1) {
       std::error_code error;
       fs::create_directories(args.output, error);
@@ -185,7 +180,7 @@ void run_generate(const GenerateArgs& args) {
         throw std::runtime_error("cannot make the folder " + args.output + ": " + error.message());
       }
     }
-    write_database(shadowed, paths[i]);
+    api::write_database(shadows, paths[i]);
   }
 }
 

@@ -23,6 +23,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/output/atomic_file.h"
+#include "shadowgen/shadowgen.h"
 #include "shadowgen/shadows/generate.h"
 
 namespace {
@@ -61,6 +62,8 @@ int run(const shadowgen::cli::Command& command) {
     std::cerr << "shadowgen: " << e.what() << "\nRun with --help for more information.\n";
     return kExitUsage;
   } catch (const shadowgen::GenerationError& e) {
+    return fail(e, kExitNotComputed);
+  } catch (const shadowgen::api::GenerationError& e) {
     return fail(e, kExitNotComputed);
   } catch (const shadowgen::clipper::SnapRoundingError& e) {
     // From a clip outside shadow generation (light regions, hidden-surface removal from

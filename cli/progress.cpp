@@ -94,4 +94,12 @@ void ProgressDisplay::draw() {
   open_ = true;
 }
 
+LightStats light_stats(const api::LightDone& done) {
+  LightStats stats;
+  stats.faces_considered = done.faces_considered;
+  stats.lit_polygons = done.lit_polygons;
+  stats.seconds = done.seconds;
+  return stats;
+}
+
 }  // namespace shadowgen::cli

@@ -13,6 +13,7 @@
 #include <ostream>
 #include <string>
 
+#include "shadowgen/shadowgen.h"
 #include "shadowgen/shadows/generate.h"
 
 namespace shadowgen::cli {
@@ -77,5 +78,8 @@ class ProgressDisplay {
   bool open_ = false;
   std::mutex mutex_;
 };
+
+// A light done by the library's generation, as the progress line counts it.
+LightStats light_stats(const api::LightDone& done);
 
 }  // namespace shadowgen::cli

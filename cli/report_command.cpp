@@ -15,14 +15,7 @@
 #include "cli/number_options.h"
 #include "cli/run_progress.h"
 #include "shadowgen/groups/face_groups.h"
-#include "shadowgen/model/input_error.h"
 #include "shadowgen/output/atomic_file.h"
-#include "shadowgen/output/energyplus_shading.h"
-#include "shadowgen/output/irradiation_report.h"
-#include "shadowgen/output/report.h"
-#include "shadowgen/output/sun_hours_report.h"
-#include "shadowgen/output/sun_hours_table.h"
-#include "shadowgen/weather/epw_reader.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -53,85 +46,66 @@ bool is_sun_hours(const std::string& format) {
   return format == "sun-hours" || format == "sun-hours-table";
 }
 
-// The weather file irradiation reads: --weather, else the scene's `weather`.
-Weather weather_for(const ShadowedScene& shadowed, const ReportArgs& args) {
-  if (!args.weather.empty()) return weather::read_epw(args.weather);
-  if (shadowed.scene.weather) return *shadowed.scene.weather;
-  throw InputError(args.input, "",
-                   "the irradiation report needs a weather file: a scene's \"weather\" key, or "
-                   "--weather FILE.epw");
-}
-
 // The formats that sum over groups of faces.
 bool groups_apply(const std::string& format) {
   return format == "csv" || format == "json" || format == "table" || format == "sun-hours" ||
          format == "sun-hours-table";
 }
 
-// The groups a report sums over: --group-by's; else, in the formats for people and in
-// JSON, the scene's own. The CSVs keep the spec's shape unless --group-by asks for groups
-// (`--group-by scene.groups` for the scene's).
-std::vector<groups::FaceGroup> report_groups(const Scene& scene, const ReportArgs& args) {
-  if (!groups_apply(args.format)) return {};
-  if (!args.group_by.empty()) return groups::groups_by(scene, args.group_by);
-  if (args.format == "csv" || args.format == "sun-hours") return {};
-  return groups::scene_groups(scene);
+api::ReportFormat report_format(const std::string& format) {
+  if (format == "json") return api::ReportFormat::kJson;
+  if (format == "table") return api::ReportFormat::kTable;
+  if (format == "sun-hours") return api::ReportFormat::kSunHours;
+  if (format == "sun-hours-table") return api::ReportFormat::kSunHoursTable;
+  if (format == "irradiation") return api::ReportFormat::kIrradiation;
+  if (format == "energyplus") return api::ReportFormat::kEnergyPlus;
+  return api::ReportFormat::kCsv;
 }
 
-std::string report_text(const ShadowedScene& shadowed, const ReportArgs& args) {
-  const std::vector<groups::FaceGroup> groups = report_groups(shadowed.scene, args);
-  const CsvIds ids = args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact;
-  if (args.format == "json") return report_json(shadowed, groups);
-  if (args.format == "energyplus") {
-    EnergyPlusShading shading = energyplus_shading(shadowed);
-    for (const std::string& warning : shading.warnings) {
-      std::cerr << "shadowgen: warning: " << args.input << ": " << warning << '\n';
-    }
-    return std::move(shading.csv);
+// The groups the report will sum over, resolved against `scene`, so that a group that
+// matches no face is named before any shadow is computed.
+void check_groups(const api::Scene& scene, const ReportArgs& args) {
+  if (!groups_apply(args.format)) return;
+  if (!args.group_by.empty()) {
+    (void)api::groups(scene, args.group_by);
+  } else if (args.format != "csv" && args.format != "sun-hours") {
+    (void)api::groups(scene);
   }
-  if (args.format == "irradiation") {
-    return irradiation_csv(shadowed, weather_for(shadowed, args),
-                           args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
-  }
-  if (args.format == "table") return report_table(shadowed, args.top, groups);
-  if (is_sun_hours(args.format)) {
-    if (!shadowed.method.exact()) {
-      throw InputError(args.input, "",
-                       "holds the lit areas a sampled method estimated, without the exact "
-                       "sun-hours regions a sun-hours report needs");
-    }
-    if (args.format == "sun-hours-table") {
-      return sun_hours_table(shadowed, args.thresholds, groups);
-    }
-    return sun_hours_csv(shadowed, args.thresholds, ids, groups);
-  }
-  return report_csv(shadowed, ids, groups);
 }
 
 void run_report(const ReportArgs& args) {
   RunFiles files{{args.input}, {}};
   if (!args.weather.empty()) files.reads.push_back(args.weather);
   if (!args.output.empty()) files.writes.push_back({"-o", args.output});
-  LoadOptions options = load_options(args.reading, Accept::kSceneOrDatabase, files);
+  api::LoadSettings settings = load_settings(args.reading, files);
   // From a scene, a sun path's regions are made only for the report that reads them.
-  options.sun_hours_regions = is_sun_hours(args.format);
-  options.method = args.method.method();
-  if (!options.method.exact() && is_sun_hours(args.format)) {
+  settings.generate.sun_hours_regions = is_sun_hours(args.format);
+  args.method.apply(settings.generate);
+  if (settings.generate.method != api::Method::kExact && is_sun_hours(args.format)) {
     throw UsageError("--format " + args.format +
                      " reports exact sun-hours regions, which a sampled "
                      "method does not make (its lit areas give --format energyplus and "
                      "irradiation)");
   }
-  // A group that matches no face is named before any shadow is computed.
-  options.on_scene = [&args, then = std::move(options.on_scene)](const Scene& scene) {
+  settings.on_scene = [&args, then = std::move(settings.on_scene)](const api::Scene& scene) {
     if (then) then(scene);
-    (void)report_groups(scene, args);
+    check_groups(scene, args);
   };
   RunProgress progress(args.input, progress_stream(args.reading.quiet));
-  progress.watch(options);
-  const ShadowedScene shadowed = load_shadowed(args.input, options);
+  progress.watch(settings);
+  const api::Shadows shadows = api::load(args.input, settings);
   progress.finish();  // before the report's warnings, and the report on the terminal
-  const std::string report = report_text(shadowed, args);
+  api::ReportSettings report_settings;
+  report_settings.format = report_format(args.format);
+  report_settings.group_by = args.group_by;
+  report_settings.thresholds = args.thresholds;
+  report_settings.top = args.top;
+  report_settings.csv_safe = args.csv_safe;
+  report_settings.weather = args.weather;
+  report_settings.on_warning = [&args](const std::string& warning) {
+    std::cerr << "shadowgen: warning: " << args.input << ": " << warning << '\n';
+  };
+  const std::string report = api::report(shadows, report_settings);
   if (args.output.empty()) {
     std::cout << report << std::flush;
     if (!std::cout) throw std::runtime_error("cannot write the report to standard output");

@@ -36,4 +36,14 @@ void guard_outputs(LoadOptions& options, const RunFiles& files) {
   };
 }
 
+void guard_outputs(api::LoadSettings& settings, const RunFiles& files) {
+  refuse_unsafe_outputs(files.writes, files.reads);
+  if (files.writes.empty()) return;
+  settings.on_scene = [writes = files.writes,
+                       then = std::move(settings.on_scene)](const api::Scene& scene) {
+    refuse_unsafe_outputs(writes, scene.files());
+    if (then) then(scene);
+  };
+}
+
 }  // namespace shadowgen::cli

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "shadowgen/pipeline/load_shadowed.h"
+#include "shadowgen/shadowgen.h"
 
 namespace shadowgen::cli {
 
@@ -38,5 +39,8 @@ void refuse_unsafe_outputs(const std::vector<OutputFile>& writes,
 // scene is read (LoadOptions::on_scene, before any shadow is generated; an on_scene set
 // before runs after the check).
 void guard_outputs(LoadOptions& options, const RunFiles& files);
+
+// The same for the library's load (api::LoadSettings::on_scene, Scene::files).
+void guard_outputs(api::LoadSettings& settings, const RunFiles& files);
 
 }  // namespace shadowgen::cli

@@ -34,6 +34,24 @@ void RunProgress::watch(LoadOptions& options) {
   }
 }
 
+void RunProgress::watch(api::LoadSettings& settings) {
+  if (out_ == nullptr) return;
+  settings.on_scene = [this, then = std::move(settings.on_scene)](const api::Scene& scene) {
+    if (then) then(scene);
+    lights(scene.light_ids().size());
+  };
+  settings.generate.on_light_done = [this](const api::LightDone& done) {
+    if (display_) display_->light_done(light_stats(done));
+  };
+  if (settings.read.on_warning) {
+    settings.read.on_warning =
+        [this, then = std::move(settings.read.on_warning)](const std::string& warning) {
+          if (display_) display_->interrupt();
+          then(warning);
+        };
+  }
+}
+
 void RunProgress::stage(const std::string& what) {
   if (out_ == nullptr) return;
   if (display_) {

@@ -13,6 +13,7 @@
 
 #include "cli/progress.h"
 #include "shadowgen/pipeline/load_shadowed.h"
+#include "shadowgen/shadowgen.h"
 
 namespace shadowgen::cli {
 
@@ -31,6 +32,8 @@ class RunProgress {
   // on_scene; each reading warning ends the open line first, so that it has a line of its
   // own.
   void watch(LoadOptions& options);
+  // The same for the library's load.
+  void watch(api::LoadSettings& settings);
   // The run's stage from now on ("splitting faces by light sets").
   void stage(const std::string& what);
   // Lights generated outside a load (compare's trials): `total` of them from now on; the

@@ -1,0 +1,164 @@
+#include "shadowgen/api/outputs.h"
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "detail/handles.h"
+#include "detail/translated.h"
+#include "shadowgen/groups/face_groups.h"
+#include "shadowgen/model/input_error.h"
+#include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/database.h"
+#include "shadowgen/output/energyplus_shading.h"
+#include "shadowgen/output/gltf_export.h"
+#include "shadowgen/output/irradiation_report.h"
+#include "shadowgen/output/obj_export.h"
+#include "shadowgen/output/report.h"
+#include "shadowgen/output/sun_hours_report.h"
+#include "shadowgen/output/sun_hours_table.h"
+#include "shadowgen/view/camera.h"
+#include "shadowgen/view/render.h"
+#include "shadowgen/view/svg_writer.h"
+#include "shadowgen/weather/epw_reader.h"
+
+namespace shadowgen::api {
+namespace {
+
+// The groups a report sums over: group_by's; else, in the formats for people and in JSON,
+// the scene's own. The CSVs keep the spec's shape unless group_by asks for groups.
+std::vector<groups::FaceGroup> report_groups(const shadowgen::Scene& scene,
+                                             const ReportSettings& settings) {
+  switch (settings.format) {
+    case ReportFormat::kCsv:
+    case ReportFormat::kSunHours:
+      return settings.group_by.empty() ? std::vector<groups::FaceGroup>{}
+                                       : groups::groups_by(scene, settings.group_by);
+    case ReportFormat::kJson:
+    case ReportFormat::kTable:
+    case ReportFormat::kSunHoursTable:
+      return settings.group_by.empty() ? groups::scene_groups(scene)
+                                       : groups::groups_by(scene, settings.group_by);
+    case ReportFormat::kIrradiation:
+    case ReportFormat::kEnergyPlus:
+      return {};
+  }
+  return {};
+}
+
+// The weather file irradiation reads: settings.weather, else the scene's.
+Weather weather_for(const ShadowedScene& shadowed, const ReportSettings& settings) {
+  if (!settings.weather.empty()) return weather::read_epw(settings.weather);
+  if (shadowed.scene.weather) return *shadowed.scene.weather;
+  throw shadowgen::InputError(
+      shadowed.scene.file, "",
+      "the irradiation report needs a weather file: a scene's \"weather\" key, or "
+      "--weather FILE.epw");
+}
+
+std::string report_text(const ShadowedScene& shadowed, const ReportSettings& settings) {
+  const std::vector<groups::FaceGroup> groups = report_groups(shadowed.scene, settings);
+  const CsvIds ids = settings.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact;
+  switch (settings.format) {
+    case ReportFormat::kJson:
+      return report_json(shadowed, groups);
+    case ReportFormat::kEnergyPlus: {
+      EnergyPlusShading shading = energyplus_shading(shadowed);
+      if (settings.on_warning) {
+        for (const std::string& warning : shading.warnings) settings.on_warning(warning);
+      }
+      return std::move(shading.csv);
+    }
+    case ReportFormat::kIrradiation:
+      return irradiation_csv(shadowed, weather_for(shadowed, settings), ids);
+    case ReportFormat::kTable:
+      return report_table(shadowed, settings.top, groups);
+    case ReportFormat::kSunHours:
+    case ReportFormat::kSunHoursTable:
+      if (!shadowed.method.exact()) {
+        throw shadowgen::InputError(
+            shadowed.scene.file, "",
+            "holds the lit areas a sampled method estimated, without the exact "
+            "sun-hours regions a sun-hours report needs");
+      }
+      if (settings.format == ReportFormat::kSunHoursTable) {
+        return sun_hours_table(shadowed, settings.thresholds, groups);
+      }
+      return sun_hours_csv(shadowed, settings.thresholds, ids, groups);
+    case ReportFormat::kCsv:
+      break;
+  }
+  return report_csv(shadowed, ids, groups);
+}
+
+// What draws lit polygons needs exact shadows.
+void require_exact(const ShadowedScene& shadowed, const std::string& what) {
+  if (shadowed.method.exact()) return;
+  throw shadowgen::InputError(
+      shadowed.scene.file, "",
+      "holds the lit areas a sampled method estimated, no lit polygons " + what);
+}
+
+}  // namespace
+
+std::string report(const Shadows& shadows, const ReportSettings& settings) {
+  return detail::translated([&] { return report_text(detail::model(shadows), settings); });
+}
+
+void write_database(const Shadows& shadows, const std::string& path) {
+  detail::translated([&] { shadowgen::write_database(detail::model(shadows), path); });
+}
+
+void write_obj(const Shadows& shadows, const std::string& path, ObjLayout layout) {
+  detail::translated([&] {
+    const ShadowedScene& shadowed = detail::model(shadows);
+    require_exact(shadowed, "for an OBJ");
+    const std::filesystem::path obj_path = path;
+    const std::filesystem::path mtl_path =
+        obj_path.parent_path() / (obj_name(obj_path.stem().string()) + ".mtl");
+    if (mtl_path == obj_path || obj_path.filename().empty()) {
+      throw shadowgen::InputError(path, "",
+                                  "not a usable OBJ file name: the MTL file goes next to it, "
+                                  "named with the same stem and \".mtl\"");
+    }
+    const std::string mtl_name = mtl_path.filename().string();
+    const ObjFiles texts = layout == ObjLayout::kByLight ? obj_export_by_light(shadowed, mtl_name)
+                                                         : obj_export(shadowed, mtl_name);
+    write_files_atomically({{mtl_path, texts.mtl}, {obj_path, texts.obj}});
+  });
+}
+
+void write_gltf(const Shadows& shadows, const std::string& path) {
+  detail::translated([&] {
+    const std::optional<GltfForm> form = gltf_form_of(path);
+    if (!form) {
+      throw std::invalid_argument(path + ": a glTF file's name ends in \".glb\" or \".gltf\"");
+    }
+    const ShadowedScene& shadowed = detail::model(shadows);
+    require_exact(shadowed, "for a glTF file");
+    write_file_atomically(path, gltf_export(shadowed, *form));
+  });
+}
+
+void write_svg(const Shadows& shadows, const std::string& path, const std::string& view_id,
+               int width, int height) {
+  detail::translated([&] {
+    const ShadowedScene& shadowed = detail::model(shadows);
+    require_exact(shadowed, "to draw");
+    const ViewSpec* spec = nullptr;
+    for (const ViewSpec& view : shadowed.scene.views) {
+      if (view.id == view_id) spec = &view;
+    }
+    if (spec == nullptr) {
+      throw shadowgen::InputError(shadowed.scene.file, "", "no view with id '" + view_id + "'");
+    }
+    RenderOptions options;
+    options.width = width;
+    options.height = height;
+    const Picture picture = render(shadowed, camera_from_view(*spec, false), options);
+    write_file_atomically(path, svg_document(picture));
+  });
+}
+
+}  // namespace shadowgen::api

@@ -1,0 +1,69 @@
+#pragma once
+
+// Every output of shadows: reports as text, and the database, OBJ, glTF and SVG files.
+// Files are written whole through a temporary file and a rename: on an error nothing is
+// left half-written (std::runtime_error naming the path).
+//
+//   shadowgen::api::Shadows shadows = shadowgen::api::load("courtyard.json");
+//   std::cout << shadowgen::api::report(shadows);  // the report CSV
+//   shadowgen::api::write_database(shadows, "courtyard.shadowed.json");
+//   shadowgen::api::write_svg(shadows, "courtyard.svg", "main");
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "shadowgen/api/shadows.h"
+
+namespace shadowgen::api {
+
+// The report formats of `shadowgen report --format` (docs/scene-format.md).
+enum class ReportFormat {
+  kCsv,            // area, lit area, lit fraction per (face, light)
+  kJson,           // the rows, with totals per light and for the scene
+  kTable,          // totals per light and the most shadowed faces, for people
+  kSunHours,       // per face and sun path: mean, least and most hours, area at thresholds
+  kSunHoursTable,  // per sun path and group: the share with at least each threshold (BRE 209)
+  kIrradiation,    // per face and sun path: direct solar energy from a weather file
+  kEnergyPlus,     // a sun path's sunlit fractions as EnergyPlus's Schedule:File:Shading
+};
+
+struct ReportSettings {
+  ReportFormat format = ReportFormat::kCsv;
+  // kCsv, kJson, kTable, kSunHours, kSunHoursTable: sum over these groups (rules as
+  // groups() takes them); with none, the scene's own groups in kJson, kTable and
+  // kSunHoursTable.
+  std::vector<std::string> group_by = {};
+  std::vector<double> thresholds{2.0};  // kSunHours, kSunHoursTable: hours
+  std::size_t top = 10;                 // kTable: most shadowed faces listed per light
+  bool csv_safe = false;                // CSVs: a ' before ids a spreadsheet would run as formulas
+  std::string weather = {};             // kIrradiation: an EPW file; empty: the scene's weather
+  std::function<void(const std::string& warning)> on_warning = {};  // kEnergyPlus's warnings
+};
+
+// The report's text, as `shadowgen report` writes it, byte for byte.
+std::string report(const Shadows& shadows, const ReportSettings& settings = {});
+
+// The shadowed database (shadowgen-shadowed/1), which load() reads back.
+void write_database(const Shadows& shadows, const std::string& path);
+
+enum class ObjLayout {
+  kLightSets,  // each face split by the set of lights reaching it, a material per set
+  kByLight,    // each face whole in shadow, then one group per light of its lit polygons
+};
+
+// An OBJ file and its MTL beside it (the OBJ's stem, ".mtl"). Exact shadows only.
+void write_obj(const Shadows& shadows, const std::string& path,
+               ObjLayout layout = ObjLayout::kLightSets);
+
+// A glTF 2.0 file of the faces split by light sets: binary for ".glb", JSON for ".gltf"
+// (std::invalid_argument for another extension). Exact shadows only.
+void write_gltf(const Shadows& shadows, const std::string& path);
+
+// An SVG picture from the scene's view `view_id`, `width` × `height` pixels, as `shadowgen
+// render --view` draws it. Exact shadows only; InputError for a view the scene lacks.
+void write_svg(const Shadows& shadows, const std::string& path, const std::string& view_id,
+               int width = 800, int height = 600);
+
+}  // namespace shadowgen::api
