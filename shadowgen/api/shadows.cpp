@@ -8,6 +8,7 @@
 #include "detail/translated.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/method.h"
+#include "shadowgen/model/one_line.h"
 #include "shadowgen/output/report.h"
 #include "shadowgen/output/sun_hours_report.h"
 #include "shadowgen/pipeline/load_shadowed.h"
@@ -89,12 +90,13 @@ std::vector<PolygonData> Shadows::lit_polygons(std::size_t face, std::size_t lig
   if (face >= shadowed.scene.faces.size() || light >= shadowed.scene.lights.size()) {
     throw std::out_of_range("lit_polygons: face or light index out of range");
   }
-  const std::string& light_id = shadowed.scene.lights[light].id;
   if (!shadowed.method.exact() || !shadowed.lit.kept(light)) {
-    throw api::InputError(shadowed.scene.file + ": light '" + light_id +
-                              "': no lit polygons kept (a sampled method's estimate, or a sun "
-                              "path's instant summed into sun hours)",
-                          shadowed.scene.file, "", "no lit polygons kept");
+    detail::translated([&] {
+      throw shadowgen::InputError(shadowed.scene.file, "",
+                                  "light '" + one_line(shadowed.scene.lights[light].id) +
+                                      "': no lit polygons kept (a sampled method's estimate, or "
+                                      "a sun path's instant summed into sun hours)");
+    });
   }
   std::vector<PolygonData> polygons;
   for (const LitPolygon& lit : shadowed.lit.at(face, light)) {
