@@ -55,7 +55,8 @@ struct GenerateSettings {
   // Keep every sun-path instant's lit polygons too (exact only).
   bool keep_instant_polygons = false;
   std::optional<Shard> shard = {};  // exact only, without keep_instant_polygons
-  // Called as each light is done, from the generating threads (one at a time).
+  // Called as each light is done, from the worker thread that finished it (several may
+  // call at once: it must be safe to call from any thread).
   std::function<void(const LightDone& done)> on_light_done = {};
 };
 
