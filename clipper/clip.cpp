@@ -8,6 +8,7 @@
 #include "clipper/box.h"
 #include "clipper/normalize.h"
 #include "detail/boundary_graph.h"
+#include "detail/clip_prepared.h"
 #include "detail/overlay.h"
 #include "detail/snap_rounding.h"
 
@@ -78,6 +79,10 @@ ClipResult clip_normalized(PolygonSet2 a, const PolygonSet2& b) {
 }
 
 }  // namespace
+
+ClipResult detail::clip_prepared(PolygonSet2 subject, const PolygonSet2& clip_region) {
+  return clip_normalized(std::move(subject), normalized(clip_region));
+}
 
 ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region) {
   return clip_normalized(normalized(subject), normalized(clip_region));
