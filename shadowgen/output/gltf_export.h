@@ -26,7 +26,8 @@
 //
 // Pieces: each region is written once, triangulated in its part's plane chart by ear
 // clipping (clipper/triangulate.h) on its own vertices (hsr/chart_triangles.h), as the OBJ
-// export triangulates it, triangles without area left out; a vertex is shared by the
+// export triangulates it (a polygon of more than 256 vertices in tiles, obj_export.h),
+// triangles without area left out; a vertex is shared by the
 // triangles of one face in one mesh. Materials are two-sided (doubleSided) and unlit
 // (KHR_materials_unlit, in extensionsUsed only: a viewer without it shades the same base colour),
 // their baseColorFactor the light set's colour (light_set_colour, obj_export.h) or the band's

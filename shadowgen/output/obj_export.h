@@ -18,7 +18,12 @@
 // vertices are the regions' vertices bit for bit. Regions are triangulated in their
 // part's plane chart by ear clipping (clipper/triangulate.h) on their own
 // vertices: no point is added, and the triangles of a region cover exactly its polygons
-// (triangles whose corners are exactly collinear, which add no area, are left out). Vertex
+// (triangles whose corners are exactly collinear, which add no area, are left out). A
+// polygon of more than 256 vertices (a ground's lit region with a hole per building) is
+// first cut into tiles along lines parallel to its chart's axes (hsr/chart_triangles.h,
+// tiled_chart_triangles), so that its triangulation costs time near linear in its
+// vertices: its own vertices are kept, the cut lines' crossings are added on the part's
+// plane, and its triangles cover it up to the clipper's rounding of those crossings. Vertex
 // and normal numbers are global and 1-based, as OBJ counts them; a face's vertices and
 // normals come right after its `g` line and are not shared with other faces.
 //

@@ -34,6 +34,28 @@ inline constexpr const char* kTwoLights = R"({
   ]
 })";
 
+// A 36 × 36 ground under 144 square slabs of 1.2 × 1.1 at z = 2, a grid of 12 × 12 at
+// generic offsets, and a sun that casts each slab's shadow whole onto the ground: the
+// ground's lit polygon is one outer loop with 144 holes, 580 vertices, more than a region
+// is triangulated or clipped whole (hsr/chart_triangles.h, the picture's region tiles).
+inline std::string ground_under_slabs() {
+  std::string polygons = R"({"id": "ground", "outer": [[0,0,0],[36,0,0],[36,36,0],[0,36,0]]})";
+  for (int i = 0; i < 12; ++i) {
+    for (int j = 0; j < 12; ++j) {
+      const double x = 3.0 * i + 0.8 + 0.01 * j, y = 3.0 * j + 0.7 + 0.013 * i;
+      const std::string id = "slab" + std::to_string(i) + "_" + std::to_string(j);
+      auto corner = [](double cx, double cy) {
+        return "[" + std::to_string(cx) + "," + std::to_string(cy) + ",2]";
+      };
+      polygons += R"(, {"id": ")" + id + R"(", "outer": [)" + corner(x, y) + "," +
+                  corner(x + 1.2, y) + "," + corner(x + 1.2, y + 1.1) + "," + corner(x, y + 1.1) +
+                  "]}";
+    }
+  }
+  return R"({"format": "shadowgen-scene/1", "polygons": [)" + polygons +
+         R"(], "lights": [{"id": "sun", "type": "directional", "direction": [0.3, 0.2, -1]}]})";
+}
+
 // A dart (its only diagonal runs from the reflex vertex (1,2) to (4,2)) with the reflex
 // vertex raised to z = 1: a non-planar face of two triangles, each of area sqrt(14), one
 // over y ∈ [0,2], one over y ∈ [2,4]. The sun straight down past a roof over y ∈ [3,5]

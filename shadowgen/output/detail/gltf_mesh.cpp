@@ -15,7 +15,7 @@ bool GltfMesh::add_piece(const Face& face, std::size_t face_index,
   std::vector<hsr::ChartTriangles> splits;
   for (const LitPolygon& lit : polygons) {
     std::optional<hsr::ChartTriangles> split =
-        hsr::chart_triangles(lit.polygon, hsr::plane_of(face.parts.at(lit.part)).normal);
+        hsr::tiled_chart_triangles(lit.polygon, hsr::plane_of(face.parts.at(lit.part)).normal);
     if (!split) return false;
     splits.push_back(std::move(*split));
   }

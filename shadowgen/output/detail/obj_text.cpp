@@ -41,7 +41,7 @@ bool ObjFaceBlock::add_polygons(std::span<const LitPolygon> polygons) {
     const glm::dvec3& plane_normal = part_normals_.at(lit.part);
     const std::size_t n = normal(plane_normal);
     const std::optional<hsr::ChartTriangles> split =
-        hsr::chart_triangles(lit.polygon, plane_normal);
+        hsr::tiled_chart_triangles(lit.polygon, plane_normal);
     if (!split) return false;
     for (std::size_t k = 0; k < split->triangles.size(); ++k) {
       if (split->flat_triangle(k)) continue;  // no area

@@ -350,6 +350,28 @@ TEST(ObjExport, AreasOnAGeneratedRoomWithThreeLights) {
   std::printf("worst relative errors: region %.3g, face %.3g, lit %.3g\n", w.region, w.face, w.lit);
 }
 
+// A ground whose lit region has a hole per occluder (580 vertices) is triangulated in
+// tiles: its triangles still add up to each region and to the lit area, and their
+// corners are the regions' own and the crossings of the tiles' cut lines.
+TEST(ObjExport, AGroundWithAHolePerOccluderIsTriangulatedInTiles) {
+  const ShadowedScene s = generated(test::ground_under_slabs());
+  const ObjFiles files = obj_export(s, "slabs.mtl");
+  ExpectObjMatches(s, files, 1e-9);
+  const test::ObjText obj = test::parse_obj(files.obj);
+  ASSERT_EQ(obj.groups.front().name, "ground");
+  std::set<test::Vec3> corners;
+  for (const test::ObjTriangle& t : obj.groups.front().triangles) {
+    corners.insert(t.corners.begin(), t.corners.end());
+  }
+  // The regions' own corners: the lit region's, whose holes are the shadows.
+  const std::vector<LitPolygon>& lit = s.lit.at(0, 0);
+  ASSERT_EQ(lit.size(), 1u);
+  std::size_t own = lit[0].polygon.outer.size();
+  for (const hsr::Loop3& hole : lit[0].polygon.holes) own += hole.size();
+  ASSERT_EQ(own, 580u);
+  EXPECT_GT(corners.size(), own);
+}
+
 TEST(ObjExport, OutputIsDeterministic) {
   const ShadowedScene one = generated(kRoom, 1);
   const ShadowedScene three = generated(kRoom, 3);
