@@ -9,12 +9,17 @@
 
 #include "clipper/box.h"
 #include "clipper/clip.h"
+#include "clipper/tiles.h"
 #include "hsr/plane_chart.h"
 #include "shadowgen/view/map_marks.h"
 #include "shadowgen/view/outlines.h"
 
 namespace shadowgen::detail {
 namespace {
+
+// The most vertices of a region's image clipped whole; larger ones are cut into tiles
+// of about half as many (clipper/tiles.h).
+constexpr std::size_t kTileVertices = 256;
 
 clipper::Box2 box_of(const clipper::PolygonSet2& set) {
   clipper::Box2 box;
@@ -248,7 +253,11 @@ class Painter {
       if (r == tiling_.rest()) continue;  // it gets what the others leave
       for (const LitPolygon& lit : tiling_.polygons(r)) {
         for (clipper::PolygonWithHoles2& p : hsr::project_polygon(lit.polygon, camera_.view())) {
-          images_[r][lit.part].shape.push_back(std::move(p));
+          // A region with a hole per building in front of it, as tiles: each fragment is
+          // then clipped by the tiles its box meets, not by the whole region.
+          for (clipper::PolygonWithHoles2& tile : clipper::split_into_tiles(p, kTileVertices)) {
+            images_[r][lit.part].shape.push_back(std::move(tile));
+          }
         }
       }
       for (RegionImage& image : images_[r]) image.box = box_of(image.shape);

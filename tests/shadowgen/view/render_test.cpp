@@ -25,6 +25,8 @@
 #include "shadowgen/output/report.h"
 #include "shadowgen/shadows/generate.h"
 #include "shadowgen/view/camera.h"
+#include "shadowgen/view/picture_raster.h"
+#include "shadowgen/view/raster_render.h"
 #include "tests/shadowgen/hand_scenes.h"
 #include "tests/shadowgen/view/cameras.h"
 #include "tests/support/cgal_oracle.h"
@@ -230,6 +232,60 @@ TEST(Render, TopDownOrthographicLitAreasEqualTheDatabase) {
   }
   ExpectNoOverlap(picture, 1e-9 * options.width * options.height);
   ExpectInsidePicture(picture);
+}
+
+// A ground lit around a hole per occluder (test::ground_under_slabs): the sun's region on
+// the ground is one polygon of 580 vertices, whose image the picture cuts into tiles
+// before clipping the ground's fragments by it. The pieces' lit area is the database's,
+// and every pixel is lit or shadowed as the exact lit polygons say there (render_raster,
+// which never reads the picture's pieces).
+TEST(Render, AGroundWithAHolePerOccluderIsDrawnAsItsLitPolygonSays) {
+  const ShadowedScene shadowed = generated(test::ground_under_slabs());
+  ASSERT_EQ(shadowed.scene.faces[0].id, "ground");
+  const std::vector<LitPolygon>& lit = shadowed.lit.at(0, 0);
+  ASSERT_EQ(lit.size(), 1u);
+  std::size_t vertices = lit[0].polygon.outer.size();
+  for (const hsr::Loop3& hole : lit[0].polygon.holes) vertices += hole.size();
+  ASSERT_EQ(lit[0].polygon.holes.size(), 144u);
+  ASSERT_EQ(vertices, 580u);
+
+  // Below the slabs, so that nothing hides the ground, which fills the picture; a scale
+  // that puts no pixel's centre on a shadow's edge.
+  const Camera camera = looking_down({18, 18, 1}, {18, 18, 0}, 9.73);
+  const RenderOptions options = picture_size(350, 350);
+  const Picture picture = render(shadowed, camera, options);
+  const double s2 = camera.pixels_per_unit * camera.pixels_per_unit;
+  double lit_area = 0.0;
+  for (const Piece& piece : picture.pieces) {
+    if (!piece.lights.empty()) lit_area += clipper::area(piece.shape);
+  }
+  EXPECT_LE(relative_error(lit_area / s2, report_rows(shadowed)[0].lit_area), 1e-9);
+  ExpectNoOverlap(picture, 1e-9 * options.width * options.height);
+
+  RasterOptions raster;
+  raster.picture = options;
+  const RgbImage exact = render_raster(shadowed, camera, raster);
+  const RgbImage drawn = rasterize_picture(picture);
+  ASSERT_EQ(drawn.rgb.size(), exact.rgb.size());
+  // The ground's two colours, the sun's and the shadow's, as 8-bit values.
+  auto bytes = [&](const std::vector<std::size_t>& lights) {
+    const Rgb c = shade(shadowed.scene, lights, {0, 0, 0}, {0, 0, 1}, options);
+    return std::array<long, 3>{std::lround(255.0 * c.r), std::lround(255.0 * c.g),
+                               std::lround(255.0 * c.b)};
+  };
+  const std::array<long, 3> sunlit = bytes({0}), shaded = bytes({});
+  std::size_t differing = 0, in_sun = 0, in_shadow = 0;
+  for (std::size_t i = 0; i < exact.rgb.size(); i += 3) {
+    const std::array<long, 3> e{exact.rgb[i], exact.rgb[i + 1], exact.rgb[i + 2]};
+    const std::array<long, 3> d{drawn.rgb[i], drawn.rgb[i + 1], drawn.rgb[i + 2]};
+    differing += e != d;
+    in_sun += d == sunlit;
+    in_shadow += d == shaded;
+  }
+  EXPECT_EQ(differing, 0u);
+  // 144 shadows of 1.2 × 1.1 at 9.73² pixels a square unit, the rest in the sun.
+  EXPECT_NEAR(static_cast<double>(in_shadow), 144 * 1.32 * 9.73 * 9.73, 144 * 4 * 12);
+  EXPECT_EQ(in_sun + in_shadow, 350u * 350u);
 }
 
 // Layers by light against the light sets' picture from a perspective camera: per face,
