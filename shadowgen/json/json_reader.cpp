@@ -241,6 +241,15 @@ JsonDocument::JsonDocument(std::istream& in, JsonSource source, std::string_view
   if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
 }
 
+JsonDocument::JsonDocument(std::string_view text, JsonSource source, std::string path,
+                           std::size_t depth)
+    : root_(std::make_unique<Json>()),
+      source_(std::make_unique<JsonSource>(std::move(source))),
+      root_path_(std::move(path)) {
+  const detail::ParseOutcome outcome = detail::parse_json_at_depth(text, *root_, depth);
+  if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
+}
+
 JsonDocument::~JsonDocument() = default;
 
 detail::ElementStream JsonDocument::element_stream(std::string_view key,
@@ -252,6 +261,6 @@ detail::ElementStream JsonDocument::element_stream(std::string_view key,
           }};
 }
 
-JsonValue JsonDocument::root() const { return JsonValue(root_.get(), source_.get(), ""); }
+JsonValue JsonDocument::root() const { return JsonValue(root_.get(), source_.get(), root_path_); }
 
 }  // namespace shadowgen

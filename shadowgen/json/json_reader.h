@@ -209,6 +209,12 @@ class JsonDocument {
   JsonDocument(std::istream& in, JsonSource source, std::string_view streamed_key,
                const ElementTaker& take);
 
+  // Parses `text` as the element at `path` of a larger document (`polygons[12]`), nested
+  // `depth` levels deep in it (an element of a top-level array: 2): its values' paths
+  // start with `path`, and it is refused where that document would be for its nesting.
+  // For the pieces cut_array_member (json/array_member_cut.h) cuts.
+  JsonDocument(std::string_view text, JsonSource source, std::string path, std::size_t depth);
+
   JsonValue root() const;
   const JsonSource& source() const { return *source_; }
 
@@ -219,6 +225,7 @@ class JsonDocument {
 
   std::unique_ptr<nlohmann::json> root_;
   std::unique_ptr<JsonSource> source_;  // values point to it
+  std::string root_path_;               // "" but for an element parsed on its own
 };
 
 }  // namespace shadowgen

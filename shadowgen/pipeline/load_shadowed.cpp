@@ -1,5 +1,8 @@
 #include "shadowgen/pipeline/load_shadowed.h"
 
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
 #include <string>
 #include <system_error>
 #include <utility>
@@ -131,9 +134,16 @@ bool readable_twice(const std::filesystem::path& path) {
                    "\"format\" is \"" + document.format + "\", expected " + expected);
 }
 
-}  // namespace
+// Runs `work` on `threads` threads (0: every hardware thread): the reading as much as
+// the generation (a scene's polygons are read in parallel).
+template <class Work>
+auto on_threads(unsigned threads, Work&& work) {
+  tbb::task_arena arena(threads != 0 ? static_cast<int>(threads)
+                                     : tbb::info::default_concurrency());
+  return arena.execute(std::forward<Work>(work));
+}
 
-ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options) {
+ShadowedScene load(const std::filesystem::path& path, const LoadOptions& options) {
   const ReadOptions read = read_options(options);
   // A scene only: the scene reader's own messages, a wrong "format" included.
   if (options.accept == Accept::kScene) return generated(read_scene(path, read), path, options);
@@ -152,7 +162,7 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
   return generated(parse_scene(document.text, document.path, read), path, options);
 }
 
-Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+Scene scene_of(const std::filesystem::path& path, const LoadOptions& options) {
   if (options.accept == Accept::kSceneOrDatabase && readable_twice(path) &&
       file_format(path) == kShadowedFormat) {
     std::vector<std::string> warnings;
@@ -165,6 +175,16 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) 
     return prepared({std::move(shadowed.scene), std::move(warnings)}, path, options);
   }
   return prepared(read_scene(path, read_options(options)), path, options);
+}
+
+}  // namespace
+
+ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options) {
+  return on_threads(options.threads, [&] { return load(path, options); });
+}
+
+Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+  return on_threads(options.threads, [&] { return scene_of(path, options); });
 }
 
 }  // namespace shadowgen

@@ -30,7 +30,9 @@ struct LoadOptions {
   Accept accept = Accept::kSceneOrDatabase;
   bool strict = false;   // ReadOptions::strict, for a scene and a database alike
   bool verbose = false;  // ReadOptions::verbose
-  unsigned threads = 0;  // GenerateOptions::threads
+  // Threads reading a scene (its polygons, in parallel) and generating its shadows
+  // (GenerateOptions::threads); 0: every hardware thread. The result is the same for any.
+  unsigned threads = 0;
   // GenerateOptions::sun_hours_regions, for a scene.
   bool sun_hours_regions = true;
   // GenerateOptions::shard: a scene's run cut into shards (generate --instants K/N). A
@@ -67,9 +69,9 @@ ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions
 
 // A scene read as load_shadowed reads one (warnings passed on, lights kept, on_scene
 // called), without generating its shadows: for what needs the scene alone (the sun's
-// instants). `threads` and `on_light_done` are not used. With `accept` kSceneOrDatabase, a
-// shadowed database gives the scene it holds (its faces, lights and views, as read and
-// checked); with any other, a database is an error, as for Accept::kScene.
+// instants). `threads` read the scene; `on_light_done` is not used. With `accept` kSceneOrDatabase,
+// a shadowed database gives the scene it holds (its faces, lights and views, as read and checked);
+// with any other, a database is an error, as for Accept::kScene.
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 
 }  // namespace shadowgen

@@ -1,20 +1,24 @@
 #include "shadowgen/scene/scene_reader.h"
 
+#include <exception>
 #include <iterator>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include "detail/face_builder.h"
 #include "detail/group_entry.h"
 #include "detail/json_entities.h"
 #include "detail/lamp_depths.h"
 #include "detail/mesh_entry.h"
+#include "detail/polygon_entries.h"
 #include "detail/site_entry.h"
 #include "detail/sun_light.h"
 #include "detail/warning_summary.h"
 #include "detail/weather_entry.h"
+#include "shadowgen/json/array_member_cut.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
@@ -38,9 +42,12 @@ class SceneParser {
   SceneParser(const std::filesystem::path& path, const ReadOptions& options)
       : path_(path), file_(path.string()), options_(options) {}
 
-  ReadResult run(const std::string& text) {
+  // `cut`: the text cut at its polygons (json/array_member_cut.h), whose elements are then
+  // read in parallel; null to read the document whole, in order.
+  ReadResult run(const std::string& text, const ArrayMemberCut* cut) {
     result_.scene.file = file_;
-    const JsonDocument document(text, {file_, options_.strict, &result_.warnings});
+    const JsonDocument document(cut != nullptr ? cut->rest : text,
+                                {file_, options_.strict, &result_.warnings});
     const JsonValue root = document.root();
     if (!root.is_object()) {
       root.fail("a scene is a JSON object; found " + root.describe());
@@ -50,8 +57,12 @@ class SceneParser {
     check_has_faces(top);
     result_.scene.files.push_back(file_);
     detail::WarningSummary polygon_warnings(file_, "polygons");
-    for_each_entry(top, "polygons",
-                   [&](const JsonValue& entry) { read_polygon_entry(entry, polygon_warnings); });
+    if (cut != nullptr) {
+      read_polygon_texts(cut->elements, polygon_warnings);
+    } else {
+      for_each_entry(top, "polygons",
+                     [&](const JsonValue& entry) { read_polygon_entry(entry, polygon_warnings); });
+    }
     polygon_warnings.append_to(result_.warnings, options_.verbose);
     for_each_entry(top, "meshes", [&](const JsonValue& entry) {
       detail::MeshEntryRead read = detail::read_mesh_entry(entry, path_, options_, face_ids_,
@@ -135,20 +146,33 @@ class SceneParser {
   // have their own. The face's warnings go to `summary`.
   void read_polygon_entry(const JsonValue& value, detail::WarningSummary& summary) {
     JsonObject entry = value.object();
-    const std::string id = detail::read_id(entry);
-    if (id.find('/') != std::string::npos) {
-      throw InputError(file_, id, "a polygon id must not contain '/' (mesh face ids use it)");
-    }
-    face_ids_.claim(id, "polygon '" + id + "'", entry.get("id"));
-    entry.for_face(id);
-    hsr::Polygon3 polygon = detail::read_polygon(entry);
-    entry.finish();
+    const std::string id = detail::read_polygon_id(entry, file_);
+    face_ids_.claim(id, polygon_owner(id), entry.get("id"));
     std::vector<std::string> face_warnings;
-    result_.scene.faces.push_back(detail::build_face(std::move(polygon),
-                                                     {id, file_, detail::FaceKind::kPolygon},
-                                                     options_.strict, face_warnings));
+    result_.scene.faces.push_back(
+        detail::read_polygon_face(entry, id, file_, options_.strict, face_warnings));
     for (std::string& line : face_warnings) summary.add(id, std::move(line));
   }
+
+  // The same for every polygon from its own text, in parallel; their ids claimed in order
+  // afterwards. A clash throws, without the place: the caller reads the document again in
+  // order, which names it.
+  void read_polygon_texts(std::span<const std::string_view> texts,
+                          detail::WarningSummary& summary) {
+    detail::PolygonsRead read = detail::read_polygon_texts(texts, file_, options_.strict);
+    std::vector<Face>& faces = result_.scene.faces;
+    for (std::size_t i = 0; i < read.faces.size(); ++i) {
+      const std::string& id = read.faces[i].id;
+      if (!face_ids_.try_claim(id, polygon_owner(id))) {
+        throw InputError(file_, id, "duplicate id");
+      }
+      for (std::string& line : read.face_warnings[i]) summary.add(id, std::move(line));
+    }
+    std::move(read.warnings.begin(), read.warnings.end(), std::back_inserter(result_.warnings));
+    std::move(read.faces.begin(), read.faces.end(), std::back_inserter(faces));
+  }
+
+  static std::string polygon_owner(const std::string& id) { return "polygon '" + id + "'"; }
 
   const std::filesystem::path path_;
   const std::string file_;
@@ -169,7 +193,19 @@ ReadResult read_scene(const std::filesystem::path& path, const ReadOptions& opti
 
 ReadResult parse_scene(const std::string& json_text, const std::filesystem::path& path,
                        const ReadOptions& options) {
-  return SceneParser(path, options).run(json_text);
+  // The polygons, nearly all of a large scene's text, are parsed and checked in parallel,
+  // each from its own text. Where anything fails, the whole document is read again in
+  // order: what is reported is then what reading in order meets first, as if the
+  // polygons had been read one by one (a syntax error anywhere before any polygon's
+  // problem, the first polygon's problem before a later one's).
+  if (const std::optional<ArrayMemberCut> cut = cut_array_member(json_text, "polygons")) {
+    try {
+      return SceneParser(path, options).run(json_text, &*cut);
+    } catch (const std::exception&) {
+      // read again below
+    }
+  }
+  return SceneParser(path, options).run(json_text, nullptr);
 }
 
 }  // namespace shadowgen

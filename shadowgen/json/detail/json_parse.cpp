@@ -55,8 +55,8 @@ std::string nul_problem_at(LineColumn at) {
 // object members (std::map nodes) never move.
 class DomBuilder {
  public:
-  DomBuilder(Locate locate, Json& root, const ElementStream* stream)
-      : locate_(std::move(locate)), root_(root), stream_(stream) {}
+  DomBuilder(Locate locate, Json& root, const ElementStream* stream, std::size_t depth = 0)
+      : locate_(std::move(locate)), root_(root), stream_(stream), depth_(depth) {}
 
   std::optional<std::string> problem;
 
@@ -135,7 +135,7 @@ class DomBuilder {
   }
 
   bool open(Json container) {
-    if (open_.size() >= kMaxJsonDepth) {
+    if (depth_ + open_.size() >= kMaxJsonDepth) {
       const std::string where = path();
       problem = (where.empty() ? std::string() : where + ": ") + "arrays and objects nested " +
                 "deeper than " + std::to_string(kMaxJsonDepth) + " levels (the limit)";
@@ -190,6 +190,7 @@ class DomBuilder {
   Json* member_ = nullptr;
   std::string member_key_;
   const ElementStream* stream_;
+  std::size_t depth_;  // of the root in the document it stands in
 };
 
 }  // namespace
@@ -263,20 +264,33 @@ std::optional<std::string> nul_problem(std::istream& in, std::size_t end) {
   return nul_problem_at(counter.place());
 }
 
-ParseOutcome parse_json(std::string_view text, Json& root, const ElementStream* stream) {
+namespace {
+
+ParseOutcome parse_text(std::string_view text, Json& root, const ElementStream* stream,
+                        std::size_t depth) {
   // nlohmann's parser takes a NUL byte for the end of the text and would accept whatever
   // came before it, ignoring the rest; JSON text has no NUL byte anywhere.
   if (std::optional<std::string> nul = nul_problem(text)) {
     root = Json();
     return {std::move(nul)};
   }
-  DomBuilder builder([text](std::size_t offset) { return line_column(text, offset); }, root,
-                     stream);
+  DomBuilder builder([text](std::size_t offset) { return line_column(text, offset); }, root, stream,
+                     depth);
   Json::sax_parse(text, &builder);
   ParseOutcome outcome;
   outcome.problem = std::move(builder.problem);
   if (outcome.problem) root = Json();
   return outcome;
+}
+
+}  // namespace
+
+ParseOutcome parse_json(std::string_view text, Json& root, const ElementStream* stream) {
+  return parse_text(text, root, stream, 0);
+}
+
+ParseOutcome parse_json_at_depth(std::string_view text, Json& root, std::size_t depth) {
+  return parse_text(text, root, nullptr, depth);
 }
 
 ParseOutcome parse_json(std::istream& in, Json& root, const ElementStream* stream) {

@@ -42,6 +42,10 @@ struct ElementStream {
 ParseOutcome parse_json(std::string_view text, nlohmann::json& root,
                         const ElementStream* stream = nullptr);
 
+// The same for a value that sits `depth` levels deep in a larger document (an element of
+// a top-level array: 2), refused where that document would be for its nesting.
+ParseOutcome parse_json_at_depth(std::string_view text, nlohmann::json& root, std::size_t depth);
+
 // The same from a stream that can seek (a file), read as it is parsed: the text is
 // never held whole. It is looked through once for a NUL byte first, and read again up to
 // a syntax error to place it by line and column.

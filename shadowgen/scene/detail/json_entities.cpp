@@ -104,6 +104,10 @@ void IdRegistry::claim(const std::string& id, std::string owner, const JsonValue
   if (!fresh) at.fail("duplicate id '" + id + "' (already used by " + it->second + ")");
 }
 
+bool IdRegistry::try_claim(const std::string& id, std::string owner) {
+  return owners_.emplace(id, std::move(owner)).second;
+}
+
 std::string read_id(JsonObject& entry) {
   const JsonValue value = entry.get("id");
   std::string id = value.string();

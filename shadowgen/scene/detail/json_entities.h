@@ -24,6 +24,8 @@ class IdRegistry {
  public:
   // `owner` says who holds `id`, for the message of a later clash. `at` is the id's value.
   void claim(const std::string& id, std::string owner, const JsonValue& at);
+  // The same without a place to fail at: whether `id` was free (and is now `owner`'s).
+  bool try_claim(const std::string& id, std::string owner);
   bool contains(const std::string& id) const { return owners_.count(id) > 0; }
 
  private:
