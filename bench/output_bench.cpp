@@ -22,7 +22,9 @@
 //
 // For timing the command line on the same databases:
 //   output_bench --write-database=city:FACES:PATH   (or suns:COUNT:PATH, cubes:COUNT:PATH)
-// writes the workload's database to PATH (shadowgen-shadowed/1) and exits.
+// writes the workload's database to PATH (shadowgen-shadowed/1) and exits;
+// --write-database=cityscene:FACES:PATH writes the city as a scene under its sun, not
+// generated (shadowgen-scene/1), for timing the command from end to end.
 
 #include <benchmark/benchmark.h>
 
@@ -41,6 +43,9 @@
 #include "bench/scenes/box.h"
 #include "bench/scenes/city.h"
 #include "bench/scenes/cube_grid.h"
+#include "shadowgen/json/document.h"
+#include "shadowgen/json/json_writer.h"
+#include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/database.h"
 #include "shadowgen/output/gltf_export.h"
 #include "shadowgen/output/obj_export.h"
@@ -210,9 +215,47 @@ BENCHMARK(BM_SunsRenderByLight)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 
+// The city of about `faces` faces as a scene under its sun alone, ungenerated: each face a
+// polygon, its id's '/' turned to '.' (a polygon id has none), what `shadowgen report`
+// and `generate` read end to end.
+void write_city_scene(std::size_t faces, const std::string& path) {
+  const Scene scene = city_scene({.lots_per_side = city_lots_for_faces(faces)});
+  JsonWriter out;
+  out.begin_object(JsonWriter::Layout::kLines).key("format").value(kSceneFormat);
+  out.key("polygons").begin_array(JsonWriter::Layout::kLines);
+  for (const Face& face : scene.faces) {
+    for (std::size_t k = 0; k < face.parts.size(); ++k) {
+      std::string id = face.id;
+      if (face.parts.size() > 1) {  // appended piece by piece: g++ 12 warns falsely on "/" + ...
+        id += '/';
+        id += std::to_string(k);
+      }
+      std::replace(id.begin(), id.end(), '/', '.');
+      out.begin_object().key("id").value(id).key("outer").begin_array();
+      for (const glm::dvec3& p : face.parts[k].outer) out.value(p);
+      out.end_array().key("holes").begin_array();
+      for (const hsr::Loop3& hole : face.parts[k].holes) {
+        out.begin_array();
+        for (const glm::dvec3& p : hole) out.value(p);
+        out.end_array();
+      }
+      out.end_array().end_object();
+    }
+  }
+  out.end_array().key("lights").begin_array(JsonWriter::Layout::kLines);
+  for (const Light& light : scene.lights) {
+    if (light.id != "sun") continue;
+    out.begin_object().key("id").value(light.id).key("type").value("directional");
+    out.key("direction").value(light.direction).end_object();
+  }
+  out.end_array().end_object();
+  write_file_atomically(path, out.take());
+}
+
 // --write-database=WORKLOAD:SIZE:PATH, WORKLOAD city (SIZE faces), suns (SIZE suns) or
 // cubes (Thakur, Cheng and Miura's grid of SIZE cubes, 2n × n × n, on a ground, with its
-// sun and lamp: bench/scenes/cube_grid.h).
+// sun and lamp: bench/scenes/cube_grid.h); or cityscene, the city of SIZE faces as a scene
+// under its sun alone (write_city_scene), not generated.
 int write_workload(const std::string& spec) {
   char workload[16] = {};
   std::size_t size = 0;
@@ -220,11 +263,15 @@ int write_workload(const std::string& spec) {
   if (std::sscanf(spec.c_str(), "%15[a-z]:%zu:%n", workload, &size, &path_at) != 2 ||
       path_at == 0 ||
       (std::strcmp(workload, "city") != 0 && std::strcmp(workload, "suns") != 0 &&
-       std::strcmp(workload, "cubes") != 0)) {
+       std::strcmp(workload, "cubes") != 0 && std::strcmp(workload, "cityscene") != 0)) {
     std::fprintf(stderr, "bad --write-database=%s\n", spec.c_str());
     return 2;
   }
   const std::string path = spec.substr(path_at);
+  if (std::strcmp(workload, "cityscene") == 0) {
+    write_city_scene(size, path);
+    return 0;
+  }
   if (std::strcmp(workload, "cubes") == 0) {
     const int n =
         std::max(1, static_cast<int>(std::lround(std::cbrt(static_cast<double>(size) / 2.0))));

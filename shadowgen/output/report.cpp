@@ -11,12 +11,14 @@
 #include <utility>
 #include <vector>
 
+#include "detail/chunked_text.h"
 #include "detail/compensated_sum.h"
 #include "detail/csv_fields.h"
 #include "detail/method_json.h"
 #include "detail/origin_json.h"
 #include "detail/text_table.h"
 #include "hsr/area.h"
+#include "hsr/parallel.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
@@ -118,21 +120,22 @@ std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
   const Scene& scene = shadowed.scene;
   check_lit_shape(shadowed, "report");
   const LitAreas lit_areas(shadowed);
-  std::vector<ReportRow> rows;
-  rows.reserve(scene.faces.size() * scene.lights.size());
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) {
+  const std::size_t lights = scene.lights.size();
+  std::vector<ReportRow> rows(scene.faces.size() * lights);
+  // Faces in parallel, each writing its own rows; the first face in scene order that
+  // fails is the one named.
+  hsr::for_each_in_parallel(scene.faces.size(), [&](std::size_t f) {
     const double face_area = area(scene.faces[f].parts);
-    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-      ReportRow row;
+    for (std::size_t l = 0; l < lights; ++l) {
+      ReportRow& row = rows[f * lights + l];
       row.face = f;
       row.light = l;
       row.area = face_area;
       row.lit_area = clamped_lit_area(lit_areas(f, l), face_area);
       row.lit_fraction = fraction(row.lit_area, face_area);
       check_finite(row, scene);
-      rows.push_back(row);
     }
-  }
+  });
   return rows;
 }
 
@@ -140,18 +143,19 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids,
                        std::span<const groups::FaceGroup> groups) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   std::string out = "face_id,light_id,area,lit_area,lit_fraction\n";
-  for (const ReportRow& row : rows) {
-    append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
-    out += ',';
-    append_csv_field(out, shadowed.scene.lights[row.light].id, ids);
-    out += ',';
-    append_csv_number(out, row.area);
-    out += ',';
-    append_csv_number(out, row.lit_area);
-    out += ',';
-    append_csv_number(out, row.lit_fraction);
-    out += '\n';
-  }
+  detail::append_in_chunks(out, rows.size(), [&](std::string& text, std::size_t i) {
+    const ReportRow& row = rows[i];
+    append_csv_field(text, shadowed.scene.faces[row.face].id, ids);
+    text += ',';
+    append_csv_field(text, shadowed.scene.lights[row.light].id, ids);
+    text += ',';
+    append_csv_number(text, row.area);
+    text += ',';
+    append_csv_number(text, row.lit_area);
+    text += ',';
+    append_csv_number(text, row.lit_fraction);
+    text += '\n';
+  });
   if (groups.empty()) return out;
   out += "\ngroup_id,light_id,faces,area,lit_area,lit_fraction\n";
   for (const GroupLitRow& row : group_lit_rows(rows, shadowed.scene.lights.size(), groups)) {
