@@ -78,6 +78,17 @@ TEST_F(CliThreads, ReportsAndDatabasesAreTheSameBytesOnAnyThreads) {
     }
     EXPECT_GT(outputs[0].size(), format == "table" ? 1000u : 2400u * 20) << format;
     EXPECT_EQ(outputs[1], outputs[0]) << format;
+    if (format != "csv") continue;
+    // Rows face by face in file order, each face's lights in scene order.
+    const std::vector<ReportRow> rows = parse_report(outputs[0]);
+    ASSERT_EQ(rows.size(), 4800u);
+    const char* kinds[] = {"ground", "roof", "south", "east", "north", "west"};
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const std::size_t face = k / 2, lot = face / 6;
+      ASSERT_EQ(rows[k].face, "lot" + std::to_string(lot / 20) + "_" + std::to_string(lot % 20) +
+                                  "." + kinds[face % 6]);
+      ASSERT_EQ(rows[k].light, k % 2 == 0 ? "sun" : "lamp");
+    }
   }
   std::vector<std::string> databases;
   for (const std::string threads : {"1", "2"}) {
