@@ -1,8 +1,8 @@
 #pragma once
 
 // A shadowgen JSON file as the command line meets it: a scene (`shadowgen-scene/1`) or a
-// shadowed database (`shadowgen-shadowed/1`), told apart by the top-level "format" key
-// (docs/scene-format.md).
+// shadowed database (its versions: shadowgen/database/database_format.h), told apart by
+// the top-level "format" key (docs/scene-format.md).
 
 #include <cstddef>
 #include <filesystem>
@@ -14,7 +14,6 @@
 namespace shadowgen {
 
 inline constexpr std::string_view kSceneFormat = "shadowgen-scene/1";
-inline constexpr std::string_view kShadowedFormat = "shadowgen-shadowed/1";
 
 struct Document {
   std::filesystem::path path;

@@ -12,6 +12,8 @@
 
 #include "detail/method_json.h"
 #include "detail/origin_json.h"
+#include "shadowgen/database/database_format.h"
+#include "shadowgen/database/face_vertices.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/output/atomic_file.h"
@@ -22,6 +24,7 @@ namespace {
 using hsr::Loop3;
 using hsr::Polygon3;
 using Layout = JsonWriter::Layout;
+namespace key = database::key;
 
 // What the format cannot hold is refused before a byte is written, so that every file
 // written reads back.
@@ -181,12 +184,12 @@ void write_loop(JsonWriter& out, const Loop3& loop) {
 // {"outer":[...],"holes":[...]}, and "part" after them on a face of several parts.
 void write_polygon(JsonWriter& out, const Polygon3& polygon,
                    std::optional<std::size_t> part = std::nullopt) {
-  out.begin_object().key("outer");
+  out.begin_object().key(key::kOuter);
   write_loop(out, polygon.outer);
-  out.key("holes").begin_array();
+  out.key(key::kHoles).begin_array();
   for (const Loop3& hole : polygon.holes) write_loop(out, hole);
   out.end_array();
-  if (part) out.key("part").value(std::uint64_t{*part});
+  if (part) out.key(key::kPart).value(std::uint64_t{*part});
   out.end_object();
 }
 
@@ -208,7 +211,7 @@ void write_light(JsonWriter& out, const Light& light) {
   if (light.sun) {
     out.key("sun").begin_object().key("entry").value(light.sun->sun_id);
     out.key("time").value(light.sun->time);
-    out.key("step_min").value(std::uint64_t(light.sun->step_min));
+    out.key(key::kStepMin).value(std::uint64_t(light.sun->step_min));
     out.key("azimuth_deg").value(light.sun->azimuth_deg);
     out.key("elevation_deg").value(light.sun->elevation_deg).end_object();
   }
@@ -216,11 +219,11 @@ void write_light(JsonWriter& out, const Light& light) {
 }
 
 void write_sun_path(JsonWriter& out, const SunPathHours& path) {
-  out.begin_object().key("id").value(path.id);
-  out.key("step_min").value(std::uint64_t(path.step_min));
-  out.key("from").value(path.from).key("to").value(path.to);
-  out.key("instant_polygons").value(path.lit_polygons_kept ? "kept" : "dropped");
-  if (!path.regions_kept) out.key("regions").value("dropped");
+  out.begin_object().key(key::kId).value(path.id);
+  out.key(key::kStepMin).value(std::uint64_t(path.step_min));
+  out.key(key::kFrom).value(path.from).key(key::kTo).value(path.to);
+  out.key(key::kInstantPolygons).value(path.lit_polygons_kept ? key::kKept : key::kDropped);
+  if (!path.regions_kept) out.key(key::kRegions).value(key::kDropped);
   out.end_object();
 }
 
@@ -233,7 +236,7 @@ void write_view(JsonWriter& out, const ViewSpec& view) {
 // The scene's site (docs/scene-format.md, "The site"), every key, so that a picture of the
 // database can show north and a model of it where it lies.
 void write_site(JsonWriter& out, const Site& site) {
-  out.key("site").begin_object().key("latitude_deg").value(site.latitude_deg);
+  out.key(key::kSite).begin_object().key("latitude_deg").value(site.latitude_deg);
   out.key("longitude_deg").value(site.longitude_deg).key("elevation_m").value(site.elevation_m);
   out.key("utc_offset_h").value(site.utc_offset_h);
   out.key("north_axis_deg").value(site.north_axis_deg).end_object();
@@ -241,22 +244,82 @@ void write_site(JsonWriter& out, const Site& site) {
 
 // "groups": [{"id": "garden", "faces": ["garden*", "lawn/*"]}, ...], one group per line.
 void write_groups(JsonWriter& out, const std::vector<FaceGroupSpec>& groups) {
-  out.key("groups").begin_array(Layout::kLines);
+  out.key(key::kGroups).begin_array(Layout::kLines);
   for (const FaceGroupSpec& group : groups) {
-    out.begin_object().key("id").value(group.id).key("faces").begin_array();
+    out.begin_object().key(key::kId).value(group.id).key(key::kFaces).begin_array();
     for (const std::string& pattern : group.patterns) out.value(pattern);
     out.end_array().end_object();
   }
   out.end_array();
 }
 
-void write_lit_polygons(JsonWriter& out, std::span<const LitPolygon> lit, bool with_part) {
-  out.begin_array(Layout::kLines);
-  for (const LitPolygon& p : lit) {
-    write_polygon(out, p.polygon, with_part ? std::optional(p.part) : std::nullopt);
+// How a face's lit polygons and regions are written: inline (/1), each with its
+// coordinates, or indexed (/2), as loops of indices into the face's shared vertices,
+// which FaceVertices numbered in the order the polygons are written.
+class LitWriter {
+ public:
+  LitWriter(database::Layout layout, bool with_part) : layout_(layout), with_part_(with_part) {}
+
+  // Numbers the vertices of every polygon the face writes, in the order it writes them
+  // (lit polygons by light, then each path's regions), and writes the face's tables.
+  void write_tables(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
+    if (layout_ != database::Layout::kIndexed) return;
+    database::FaceVertices table;
+    const auto add = [&](std::span<const LitPolygon> lit) {
+      for (const LitPolygon& p : lit) loops_.push_back(table.add(p.polygon));
+    };
+    if (shadowed.method.exact()) {
+      for (std::size_t l = 0; l < shadowed.scene.lights.size(); ++l) add(shadowed.lit[f][l]);
+    }
+    for (const SunPathHours& path : shadowed.sun_paths) {
+      if (!path.regions_kept || !path.nodes.empty()) continue;
+      for (const SunHoursRegion& region : path.regions[f]) add(region.polygons);
+    }
+    if (loops_.empty()) return;
+    out.key(key::kNumbers).begin_array();
+    for (const double n : table.numbers()) out.value(n);
+    out.end_array().key(key::kVertices).begin_array();
+    for (const std::size_t i : table.vertices()) out.value(std::uint64_t{i});
+    out.end_array();
   }
-  out.end_array();
-}
+
+  // The polygons, one a line (/1) or all on one line (/2).
+  void write(JsonWriter& out, std::span<const LitPolygon> lit) {
+    if (layout_ == database::Layout::kInline) {
+      out.begin_array(Layout::kLines);
+      for (const LitPolygon& p : lit) {
+        write_polygon(out, p.polygon, with_part_ ? std::optional(p.part) : std::nullopt);
+      }
+      out.end_array();
+      return;
+    }
+    out.begin_array();
+    for (const LitPolygon& p : lit) {
+      if (with_part_)
+        out.begin_object().key(key::kPart).value(std::uint64_t{p.part}).key(key::kLoops);
+      out.begin_array();
+      for (const std::vector<std::size_t>& loop : loops_.at(next_++)) {
+        out.begin_array();
+        for (const std::size_t i : loop) out.value(std::uint64_t{i});
+        out.end_array();
+      }
+      out.end_array();
+      if (with_part_) out.end_object();
+    }
+    out.end_array();
+  }
+
+  // A region a line in /2, its polygons inline; a polygon a line in /1.
+  Layout region_layout() const {
+    return layout_ == database::Layout::kIndexed ? Layout::kInline : Layout::kLines;
+  }
+
+ private:
+  database::Layout layout_;
+  bool with_part_;
+  std::vector<database::IndexLoops> loops_;
+  std::size_t next_ = 0;
+};
 
 void write_loop(JsonWriter& out, const clipper::Loop2& loop) {
   out.begin_array();
@@ -268,20 +331,23 @@ void write_loop(JsonWriter& out, const clipper::Loop2& loop) {
 // "pieces": [{"outer": [[x, y], ...], "holes": [...]}]}]}]}], the pieces in their part's
 // chart (SunHoursPieces).
 void write_nodes(JsonWriter& out, std::span<const SunHoursNode> nodes) {
-  out.key("nodes").begin_array(Layout::kLines);
+  out.key(key::kNodes).begin_array(Layout::kLines);
   for (const SunHoursNode& node : nodes) {
-    out.begin_object(Layout::kLines).key("block").value(std::uint64_t{node.first_block});
-    out.key("level").value(std::uint64_t{node.level}).key("parts").begin_array(Layout::kLines);
+    out.begin_object(Layout::kLines).key(key::kBlock).value(std::uint64_t{node.first_block});
+    out.key(key::kLevel)
+        .value(std::uint64_t{node.level})
+        .key(key::kParts)
+        .begin_array(Layout::kLines);
     for (const SunHoursPieces::Part& part : node.sums.parts) {
-      out.begin_object(Layout::kLines).key("part").value(std::uint64_t{part.part});
-      out.key("counts").begin_array(Layout::kLines);
+      out.begin_object(Layout::kLines).key(key::kPart).value(std::uint64_t{part.part});
+      out.key(key::kCounts).begin_array(Layout::kLines);
       for (const SunHoursPieces::Count& count : part.counts) {
-        out.begin_object(Layout::kLines).key("count").value(std::uint64_t{count.count});
-        out.key("pieces").begin_array(Layout::kLines);
+        out.begin_object(Layout::kLines).key(key::kCount).value(std::uint64_t{count.count});
+        out.key(key::kPieces).begin_array(Layout::kLines);
         for (const clipper::PolygonWithHoles2& piece : count.pieces) {
-          out.begin_object().key("outer");
+          out.begin_object().key(key::kOuter);
           write_loop(out, piece.outer);
-          out.key("holes").begin_array();
+          out.key(key::kHoles).begin_array();
           for (const clipper::Loop2& hole : piece.holes) write_loop(out, hole);
           out.end_array().end_object();
         }
@@ -297,14 +363,14 @@ void write_nodes(JsonWriter& out, std::span<const SunHoursNode> nodes) {
 // "sun_hours": {"path": {"lit_area": [...], "part_lit_area": [[...], ...] (on a face of
 // several parts), "regions": [{"hours": h, "polygons": [...]}]}}
 void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPathHours>& paths,
-                     bool with_part) {
-  out.key("sun_hours").begin_object(Layout::kLines);
+                     LitWriter& lit_writer) {
+  out.key(key::kSunHours).begin_object(Layout::kLines);
   for (const SunPathHours& path : paths) {
-    out.key(path.id).begin_object(Layout::kLines).key("lit_area").begin_array();
+    out.key(path.id).begin_object(Layout::kLines).key(key::kLitArea).begin_array();
     for (const double a : path.lit_area[face]) out.value(a);
     out.end_array();
     if (!path.part_lit_area[face].empty()) {
-      out.key("part_lit_area").begin_array(Layout::kLines);
+      out.key(key::kPartLitArea).begin_array(Layout::kLines);
       for (const std::vector<double>& areas : path.part_lit_area[face]) {
         out.begin_array();
         for (const double a : areas) out.value(a);
@@ -321,10 +387,11 @@ void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPat
       out.end_object();
       continue;
     }
-    out.key("regions").begin_array(Layout::kLines);
+    out.key(key::kRegions).begin_array(Layout::kLines);
     for (const SunHoursRegion& region : path.regions[face]) {
-      out.begin_object(Layout::kLines).key("hours").value(region.hours).key("polygons");
-      write_lit_polygons(out, region.polygons, with_part);
+      out.begin_object(lit_writer.region_layout()).key(key::kHours).value(region.hours);
+      out.key(key::kPolygons);
+      lit_writer.write(out, region.polygons);
       out.end_object();
     }
     out.end_array().end_object();
@@ -332,34 +399,36 @@ void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPat
   out.end_object();
 }
 
-void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
+void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f,
+                database::Layout layout) {
   const Face& face = shadowed.scene.faces[f];
   const std::vector<Light>& lights = shadowed.scene.lights;
   const LitTable::ConstRow lit = shadowed.lit[f];
   out.begin_object(Layout::kLines);
-  out.key("id").value(face.id).key("source_file").value(face.source_file);
+  out.key(key::kId).value(face.id).key(key::kSourceFile).value(face.source_file);
   detail::write_origin(out, face.origin);
-  out.key("parts").begin_array(Layout::kLines);
+  out.key(key::kParts).begin_array(Layout::kLines);
   for (const Polygon3& part : face.parts) write_polygon(out, part);
   out.end_array();
-  const bool with_part = face.parts.size() > 1;
+  LitWriter lit_writer(layout, face.parts.size() > 1);
+  lit_writer.write_tables(out, shadowed, f);
   if (!shadowed.method.exact()) {  // areas alone, of every light that is no path's instant
-    out.key("lit_area").begin_object();
+    out.key(key::kLitArea).begin_object();
     for (std::size_t l = 0; l < lights.size(); ++l) {
       const std::vector<double>& column = shadowed.estimated_lit_area[l];
       if (!column.empty()) out.key(lights[l].id).value(column[f]);
     }
     out.end_object();
   } else {
-    out.key("lit").begin_object(Layout::kLines);
+    out.key(key::kLit).begin_object(Layout::kLines);
     for (std::size_t l = 0; l < lights.size(); ++l) {
       if (lit[l].empty()) continue;
       out.key(lights[l].id);
-      write_lit_polygons(out, lit[l], with_part);
+      lit_writer.write(out, lit[l]);
     }
     out.end_object();
   }
-  if (!shadowed.sun_paths.empty()) write_sun_hours(out, f, shadowed.sun_paths, with_part);
+  if (!shadowed.sun_paths.empty()) write_sun_hours(out, f, shadowed.sun_paths, lit_writer);
   out.end_object();
 }
 
@@ -367,47 +436,53 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f) {
 
 namespace {
 
-void write_database_to(const ShadowedScene& shadowed, JsonWriter& out) {
+void write_database_to(const ShadowedScene& shadowed, JsonWriter& out, database::Layout layout) {
   check_writable(shadowed);
   const Scene& scene = shadowed.scene;
-  out.begin_object(Layout::kLines).key("format").value(kShadowedFormat);
+  out.begin_object(Layout::kLines).key(key::kFormat);
+  out.value(layout == database::Layout::kIndexed ? database::kIndexedFormat
+                                                 : database::kInlineFormat);
   if (shadowed.shard) {
-    out.key("shard").begin_object().key("index").value(std::uint64_t{shadowed.shard->index + 1});
-    out.key("count").value(std::uint64_t{shadowed.shard->count}).end_object();
+    out.key(key::kShard)
+        .begin_object()
+        .key(key::kShardIndex)
+        .value(std::uint64_t{shadowed.shard->index + 1});
+    out.key(key::kCount).value(std::uint64_t{shadowed.shard->count}).end_object();
   }
   if (!shadowed.method.exact()) detail::write_method(out, shadowed.method);
   if (scene.site) write_site(out, *scene.site);
-  out.key("lights").begin_array(Layout::kLines);
+  out.key(key::kLights).begin_array(Layout::kLines);
   for (const Light& light : scene.lights) write_light(out, light);
   out.end_array();
-  out.key("views").begin_array(Layout::kLines);
+  out.key(key::kViews).begin_array(Layout::kLines);
   for (const ViewSpec& view : scene.views) write_view(out, view);
   out.end_array();
   if (!shadowed.sun_paths.empty()) {
-    out.key("sun_paths").begin_array(Layout::kLines);
+    out.key(key::kSunPaths).begin_array(Layout::kLines);
     for (const SunPathHours& path : shadowed.sun_paths) write_sun_path(out, path);
     out.end_array();
   }
   if (!scene.groups.empty()) write_groups(out, scene.groups);
-  out.key("faces").begin_array(Layout::kLines);
-  for (std::size_t f = 0; f < scene.faces.size(); ++f) write_face(out, shadowed, f);
+  out.key(key::kFaces).begin_array(Layout::kLines);
+  for (std::size_t f = 0; f < scene.faces.size(); ++f) write_face(out, shadowed, f, layout);
   out.end_array();
   out.end_object();
 }
 
 }  // namespace
 
-std::string database_json(const ShadowedScene& shadowed) {
+std::string database_json(const ShadowedScene& shadowed, database::Layout layout) {
   JsonWriter out;
-  write_database_to(shadowed, out);
+  write_database_to(shadowed, out, layout);
   return out.take();
 }
 
-void write_database(const ShadowedScene& shadowed, const std::filesystem::path& path) {
+void write_database(const ShadowedScene& shadowed, const std::filesystem::path& path,
+                    database::Layout layout) {
   // Streamed: a sun path's sums can make hundreds of megabytes of text.
-  stream_file_atomically(path, [&shadowed](const OutputSink& sink) {
+  stream_file_atomically(path, [&shadowed, layout](const OutputSink& sink) {
     JsonWriter out(sink);
-    write_database_to(shadowed, out);
+    write_database_to(shadowed, out, layout);
     out.finish();
   });
 }

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "shadowgen/database/database_format.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/one_line.h"
@@ -70,8 +71,8 @@ std::string method_text(const ShadowedScene& shadowed) {
 
 // `text`: the database's text where it was read whole (standard input); otherwise the
 // file is read as it is parsed (scene/database_reader.h).
-ShadowedScene database(const std::filesystem::path& path, const std::string* text,
-                       const ReadOptions& read, const LoadOptions& options) {
+ShadowedScene read_shadowed(const std::filesystem::path& path, const std::string* text,
+                            const ReadOptions& read, const LoadOptions& options) {
   std::vector<std::string> warnings;
   ShadowedScene shadowed = text != nullptr ? parse_database(*text, path, read, warnings)
                                            : read_database(path, read, warnings);
@@ -117,16 +118,16 @@ bool readable_twice(const std::filesystem::path& path) {
 
 [[noreturn]] void refuse(const Document& document, const LoadOptions& options) {
   if (options.accept == Accept::kShard) {
-    throw InputError(document.path.string(), "",
-                     "\"format\" is \"" + document.format +
-                         "\", expected a shard of a sun-path run (\"" +
-                         std::string(kShadowedFormat) + "\" written by generate --instants K/N)");
+    throw InputError(
+        document.path.string(), "",
+        "\"format\" is \"" + document.format + "\", expected a shard of a sun-path run (\"" +
+            std::string(database::kWrittenFormat) + "\" written by generate --instants K/N)");
   }
   if (options.accept == Accept::kDatabase && document.format == kSceneFormat) {
     throw InputError(document.path.string(), "",
                      "is a scene, not a shadowed database (shadowgen generate makes one)");
   }
-  std::string expected = "\"" + std::string(kShadowedFormat) + "\"";
+  std::string expected = "\"" + std::string(database::kWrittenFormat) + "\"";
   if (options.accept == Accept::kSceneOrDatabase) {
     expected = "\"" + std::string(kSceneFormat) + "\" or " + expected;
   }
@@ -151,10 +152,12 @@ ShadowedScene load(const std::filesystem::path& path, const LoadOptions& options
   // A database file is read as it is parsed, never held whole: only its format first.
   if (readable_twice(path)) {
     const std::string format = file_format(path);
-    if (format == kShadowedFormat) return database(path, nullptr, read, options);
+    if (database::layout_of(format)) return read_shadowed(path, nullptr, read, options);
   }
   const Document document = read_document(path);
-  if (document.format == kShadowedFormat) return database(path, &document.text, read, options);
+  if (database::layout_of(document.format)) {
+    return read_shadowed(path, &document.text, read, options);
+  }
   if (document.format != kSceneFormat || options.accept == Accept::kDatabase ||
       options.accept == Accept::kShard) {
     refuse(document, options);
@@ -164,7 +167,7 @@ ShadowedScene load(const std::filesystem::path& path, const LoadOptions& options
 
 Scene scene_of(const std::filesystem::path& path, const LoadOptions& options) {
   if (options.accept == Accept::kSceneOrDatabase && readable_twice(path) &&
-      file_format(path) == kShadowedFormat) {
+      database::layout_of(file_format(path))) {
     std::vector<std::string> warnings;
     ShadowedScene shadowed = read_database(path, read_options(options), warnings);
     if (shadowed.shard) {

@@ -16,6 +16,7 @@
 #include "detail/coordinate_range.h"
 #include "detail/face_builder.h"
 #include "detail/group_entry.h"
+#include "detail/indexed_polygons.h"
 #include "detail/json_entities.h"
 #include "detail/lit_checks.h"
 #include "detail/site_entry.h"
@@ -23,6 +24,7 @@
 #include "hsr/collinearity.h"
 #include "hsr/parallel.h"
 #include "hsr/plane_chart.h"
+#include "shadowgen/database/database_format.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/input_error.h"
@@ -33,6 +35,8 @@
 
 namespace shadowgen {
 namespace {
+
+namespace key = database::key;
 
 // Shards a run may be cut into: far more than any scheduler runs at once.
 constexpr std::size_t kMaxShards = 1'000'000;
@@ -113,10 +117,10 @@ class DatabaseParser {
              std::optional<std::ifstream>& in, std::optional<JsonDocument>& document) const {
     const JsonSource source{file_, options_.strict, &warnings_};
     if (text != nullptr) {
-      document.emplace(*text, source, "faces", take);
+      document.emplace(*text, source, key::kFaces, take);
     } else {
       in.emplace(open_input_file(path_));
-      document.emplace(*in, source, "faces", take);
+      document.emplace(*in, source, key::kFaces, take);
     }
   }
 
@@ -140,8 +144,8 @@ class DatabaseParser {
   // the sun hours (checked with every face read); the groups, whose patterns must match
   // faces, wherever they stand.
   ShadowedScene finished(JsonObject& top, ShadowedScene shadowed) const {
-    (void)top.get("faces").array();
-    if (const std::optional<JsonValue> groups = top.find("groups")) {
+    (void)top.get(key::kFaces).array();
+    if (const std::optional<JsonValue> groups = top.find(key::kGroups)) {
       shadowed.scene.groups = detail::read_groups(*groups, shadowed.scene.faces);
     }
     top.finish();
@@ -151,8 +155,9 @@ class DatabaseParser {
   }
 
   // The members read before the faces, in this order: which of them the root has.
-  static constexpr const char* kHeader[] = {"format", "shard",     "method", "lights",
-                                            "views",  "sun_paths", "site"};
+  static constexpr const char* kHeader[] = {key::kFormat, key::kShard, key::kMethod,
+                                            key::kLights, key::kViews, key::kSunPaths,
+                                            key::kSite};
   static constexpr std::size_t kFormat = 0, kLights = 3, kViews = 4;  // required ones in it
   static std::vector<bool> header_present(const JsonValue& root) {
     std::vector<bool> present;
@@ -164,37 +169,40 @@ class DatabaseParser {
 
   // Everything but the faces: the format, the shard, the lights and views, the sun paths.
   void read_header(JsonObject& top, ShadowedScene& shadowed) {
-    const JsonValue format = top.get("format");
-    if (format.string() != kShadowedFormat) {
+    const JsonValue format = top.get(key::kFormat);
+    const std::optional<database::Layout> layout = database::layout_of(format.string());
+    if (!layout) {
       format.fail("unsupported format '" + format.string() + "'; this reader reads '" +
-                  std::string(kShadowedFormat) + "'");
+                  std::string(database::kIndexedFormat) + "' and '" +
+                  std::string(database::kInlineFormat) + "'");
     }
-    if (const std::optional<JsonValue> shard = top.find("shard")) {
+    layout_ = *layout;
+    if (const std::optional<JsonValue> shard = top.find(key::kShard)) {
       shadowed.shard = read_shard(*shard);
     }
-    if (const std::optional<JsonValue> method = top.find("method")) {
+    if (const std::optional<JsonValue> method = top.find(key::kMethod)) {
       shadowed.method = read_method(*method);
       if (shadowed.shard && !shadowed.method.exact()) {
         method->fail("a shard is made by the exact method only");
       }
     }
-    if (const std::optional<JsonValue> site = top.find("site")) {
+    if (const std::optional<JsonValue> site = top.find(key::kSite)) {
       shadowed.scene.site = read_site(*site);
     }
-    const JsonArray lights = top.get("lights").array();
+    const JsonArray lights = top.get(key::kLights).array();
     detail::IdRegistry light_ids;
     for (std::size_t i = 0; i < lights.size(); ++i) {
       shadowed.scene.lights.push_back(
           detail::read_light(lights.at(i), light_ids, detail::Source::kDatabase));
       light_index_.emplace(shadowed.scene.lights.back().id, i);
     }
-    const JsonArray views = top.get("views").array();
+    const JsonArray views = top.get(key::kViews).array();
     detail::IdRegistry view_ids;
     for (std::size_t i = 0; i < views.size(); ++i) {
       shadowed.scene.views.push_back(
           detail::read_view(views.at(i), view_ids, detail::Source::kDatabase));
     }
-    if (const std::optional<JsonValue> paths = top.find("sun_paths")) {
+    if (const std::optional<JsonValue> paths = top.find(key::kSunPaths)) {
       read_sun_paths(*paths, shadowed);
     }
     for (const SunPathHours& path : shadowed.sun_paths) {
@@ -203,7 +211,7 @@ class DatabaseParser {
     if (!shadowed.method.exact()) {
       for (const SunPathHours& path : shadowed.sun_paths) {
         if (path.regions_kept || path.lit_polygons_kept) {
-          top.get("sun_paths")
+          top.get(key::kSunPaths)
               .fail("sun path '" + one_line(path.id) +
                     "': a sampled method keeps lit areas alone: \"regions\" "
                     "and \"instant_polygons\" must be \"dropped\"");
@@ -224,19 +232,19 @@ class DatabaseParser {
   // (samples for a sampled method, resolution for the shadow map alone).
   static Method read_method(const JsonValue& value) {
     JsonObject entry = value.object();
-    const JsonValue name = entry.get("name");
+    const JsonValue name = entry.get(key::kMethodName);
     const std::optional<MethodKind> kind = method_kind(name.string());
     if (!kind) name.fail("unknown method '" + name.string() + "' (exact, rays, shadow-map)");
     Method method{*kind};
     if (!method.exact()) {
-      const JsonValue samples = entry.get("samples");
+      const JsonValue samples = entry.get(key::kSamples);
       if (samples.index() < 1 || samples.index() > std::size_t{kMaxSamples}) {
         samples.fail("expected sample points per face from 1 to " + std::to_string(kMaxSamples));
       }
       method.samples = static_cast<int>(samples.index());
     }
     if (method.kind == MethodKind::kShadowMap) {
-      const JsonValue resolution = entry.get("resolution");
+      const JsonValue resolution = entry.get(key::kResolution);
       if (resolution.index() < 1 || resolution.index() > std::size_t{kMaxResolution}) {
         resolution.fail("expected texels per side from 1 to " + std::to_string(kMaxResolution));
       }
@@ -261,7 +269,7 @@ class DatabaseParser {
   // "shard": {"index": K, "count": N}, 1 <= K <= N.
   static ShardPlace read_shard(const JsonValue& value) {
     JsonObject entry = value.object();
-    const JsonValue index = entry.get("index"), count = entry.get("count");
+    const JsonValue index = entry.get(key::kShardIndex), count = entry.get(key::kShardCount);
     if (count.index() < 1 || count.index() > kMaxShards) {
       count.fail("expected a number of shards from 1 to " + std::to_string(kMaxShards));
     }
@@ -284,7 +292,7 @@ class DatabaseParser {
       if (!time) value.fail("expected a local time YYYY-MM-DDTHH:MM (seconds optional)");
       seconds[i] = sun::seconds_since_1970(*time);
     }
-    if (seconds[1] < seconds[0]) entry.get("to").fail("must not be before 'from'");
+    if (seconds[1] < seconds[0]) entry.get(key::kTo).fail("must not be before 'from'");
     return {seconds[0], seconds[1]};
   }
 
@@ -311,22 +319,22 @@ class DatabaseParser {
       JsonObject entry = paths.at(i).object();
       SunPathHours path;
       path.id = detail::read_claimed_id(entry, ids, "sun path");
-      const JsonValue step = entry.get("step_min");
+      const JsonValue step = entry.get(key::kStepMin);
       path.step_min = static_cast<int>(std::min<std::size_t>(step.index(), 1'000'001));
       if (path.step_min <= 0) step.fail("a sun path needs a positive step_min");
       const auto [from, to] = read_span(entry, path);
-      const JsonValue kept = entry.get("instant_polygons");
-      if (kept.string() != "kept" && kept.string() != "dropped") {
+      const JsonValue kept = entry.get(key::kInstantPolygons);
+      if (kept.string() != key::kKept && kept.string() != key::kDropped) {
         kept.fail("expected 'kept' or 'dropped'");
       }
-      path.lit_polygons_kept = kept.string() == "kept";
+      path.lit_polygons_kept = kept.string() == key::kKept;
       if (shadowed.shard && path.lit_polygons_kept) {
         kept.fail(
             "a shard keeps its instants' lit areas alone: \"instant_polygons\" must be "
             "\"dropped\" (generate --instants does not take --keep-instants)");
       }
-      if (const std::optional<JsonValue> regions = entry.find("regions")) {
-        if (regions->string() != "dropped") regions->fail("expected 'dropped' (or no key)");
+      if (const std::optional<JsonValue> regions = entry.find(key::kRegions)) {
+        if (regions->string() != key::kDropped) regions->fail("expected 'dropped' (or no key)");
         path.regions_kept = false;
       }
       const std::int64_t step_s = std::int64_t{path.step_min} * 60;
@@ -347,8 +355,8 @@ class DatabaseParser {
         }
         const std::int64_t at = sun::seconds_since_1970(*time);
         if (at < from || at > to) {
-          entry.get("to").fail(instant + " is at " + sun->time + ", outside its span from " +
-                               path.from + " to " + path.to);
+          entry.get(key::kTo).fail(instant + " is at " + sun->time + ", outside its span from " +
+                                   path.from + " to " + path.to);
         }
         if ((at - from) % step_s != 0) {
           step.fail(instant + " is at " + sun->time + ", not on one of its " +
@@ -400,7 +408,7 @@ class DatabaseParser {
                                   bool shard) {
     std::vector<std::vector<double>>& on_parts = path.part_lit_area.emplace_back();
     if (face.parts.size() < 2) return;
-    const JsonValue parts_value = sum.get("part_lit_area");
+    const JsonValue parts_value = sum.get(key::kPartLitArea);
     const JsonArray parts = parts_value.array();
     if (parts.size() != face.parts.size()) {
       parts_value.fail("expected one list of lit areas per part of the face (" +
@@ -415,12 +423,12 @@ class DatabaseParser {
   // faces[i].sun_hours: every sun path's lit areas and sun-hours regions on this face.
   void read_sun_hours(JsonObject& entry, const Face& face, ShadowedScene& shadowed) {
     if (shadowed.sun_paths.empty()) return;
-    JsonObject sums = entry.get("sun_hours").object();
+    JsonObject sums = entry.get(key::kSunHours).object();
     for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
       SunPathHours& path = shadowed.sun_paths[p];
       JsonObject sum = sums.get(path.id).object();
       const bool shard = shadowed.shard.has_value();
-      path.lit_area.push_back(read_instant_areas(sum.get("lit_area"), path, shard));
+      path.lit_area.push_back(read_instant_areas(sum.get(key::kLitArea), path, shard));
       read_part_lit_areas(sum, face, path, shard);
       if (!path.regions_kept) {  // lit areas alone
         sum.finish();
@@ -428,17 +436,17 @@ class DatabaseParser {
         continue;
       }
       if (shard) {
-        path.nodes.push_back(read_nodes(sum.get("nodes"), path, *shadowed.shard));
+        path.nodes.push_back(read_nodes(sum.get(key::kNodes), path, *shadowed.shard));
         sum.finish();
         path_values_[p].push_back(sum.value().place());
         continue;
       }
-      const JsonValue regions_value = sum.get("regions");
+      const JsonValue regions_value = sum.get(key::kRegions);
       const JsonArray regions = regions_value.array();
       std::vector<SunHoursRegion>& out = path.regions.emplace_back();
       for (std::size_t r = 0; r < regions.size(); ++r) {
         JsonObject region = regions.at(r).object();
-        const JsonValue hours = region.get("hours");
+        const JsonValue hours = region.get(key::kHours);
         const double count = std::round(hours.number() * 60.0 / path.step_min);
         if (!(count >= 0.0 && count <= static_cast<double>(path.instants.size()) &&
               count * path.step_min / 60.0 == hours.number())) {
@@ -448,7 +456,7 @@ class DatabaseParser {
         if (!out.empty() && !(out.back().hours < hours.number())) {
           hours.fail("regions must come in increasing hours");
         }
-        out.push_back({hours.number(), read_lit(region.get("polygons"), face)});
+        out.push_back({hours.number(), read_lit(region.get(key::kPolygons), face)});
         region.finish();
       }
       sum.finish();
@@ -469,7 +477,7 @@ class DatabaseParser {
     std::size_t next = blocks.first;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       JsonObject node = nodes.at(i).object();
-      const JsonValue block = node.get("block"), level = node.get("level");
+      const JsonValue block = node.get(key::kBlock), level = node.get(key::kLevel);
       const std::size_t span = level.index() < 32 ? std::size_t{1} << level.index() : 0;
       if (span == 0 || block.index() != next || block.index() % span != 0 ||
           span > blocks.last - next) {
@@ -481,22 +489,22 @@ class DatabaseParser {
       SunHoursNode& read = out.emplace_back();
       read.first_block = block.index();
       read.level = static_cast<unsigned>(level.index());
-      const JsonArray parts = node.get("parts").array();
+      const JsonArray parts = node.get(key::kParts).array();
       for (std::size_t k = 0; k < parts.size(); ++k) {
         JsonObject part = parts.at(k).object();
         SunHoursPieces::Part& p = read.sums.parts.emplace_back();
-        p.part = part.get("part").index();
-        const JsonArray counts = part.get("counts").array();
+        p.part = part.get(key::kPart).index();
+        const JsonArray counts = part.get(key::kCounts).array();
         for (std::size_t c = 0; c < counts.size(); ++c) {
           JsonObject count = counts.at(c).object();
           SunHoursPieces::Count& n = p.counts.emplace_back();
-          n.count = count.get("count").index();
-          const JsonArray pieces = count.get("pieces").array();
+          n.count = count.get(key::kCount).index();
+          const JsonArray pieces = count.get(key::kPieces).array();
           for (std::size_t q = 0; q < pieces.size(); ++q) {
             JsonObject piece = pieces.at(q).object();
             clipper::PolygonWithHoles2& polygon = n.pieces.emplace_back();
-            polygon.outer = read_chart_loop(piece.get("outer"));
-            const JsonArray holes = piece.get("holes").array();
+            polygon.outer = read_chart_loop(piece.get(key::kOuter));
+            const JsonArray holes = piece.get(key::kHoles).array();
             for (std::size_t h = 0; h < holes.size(); ++h) {
               polygon.holes.push_back(read_chart_loop(holes.at(h)));
             }
@@ -534,7 +542,7 @@ class DatabaseParser {
   static FaceOrigin read_origin(const JsonValue& value) {
     JsonObject object = value.object();
     FaceOrigin origin;
-    const JsonValue format = object.get("format");
+    const JsonValue format = object.get(key::kFormat);
     origin.format = format.string();
     if (origin.format.empty())
       format.fail("must name the format the face comes from, not be empty");
@@ -551,10 +559,10 @@ class DatabaseParser {
     face.id = detail::read_id(entry);
     face_ids_.claim(face.id, "another face", entry.get("id"));
     entry.for_face(face.id);
-    face.source_file = entry.get("source_file").string();
-    if (const std::optional<JsonValue> origin = entry.find("origin"))
+    face.source_file = entry.get(key::kSourceFile).string();
+    if (const std::optional<JsonValue> origin = entry.find(key::kOrigin))
       face.origin = read_origin(*origin);
-    const JsonValue parts_value = entry.get("parts");
+    const JsonValue parts_value = entry.get(key::kParts);
     const JsonArray parts = parts_value.array();
     if (parts.empty()) parts_value.fail("a face needs at least one polygon");
     for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -566,6 +574,7 @@ class DatabaseParser {
     if (!std::isfinite(hsr::area(face.parts))) {
       parts_value.fail("the face's area is not a finite number (coordinates too large)");
     }
+    if (layout_ == database::Layout::kIndexed) vertices_ = detail::read_face_vertices(entry);
     const std::size_t f = shadowed.lit.size();
     shadowed.lit.add_face();
     lists_of_face_.push_back(lists_.size());
@@ -576,7 +585,7 @@ class DatabaseParser {
       shadowed.scene.faces.push_back(std::move(face));
       return;
     }
-    for (const auto& [light_id, list] : entry.get("lit").object().entries()) {
+    for (const auto& [light_id, list] : entry.get(key::kLit).object().entries()) {
       const auto light = light_index_.find(light_id);
       if (light == light_index_.end()) list.fail("no light has this id");
       if (!shadowed.lit.kept(light->second)) {
@@ -604,11 +613,11 @@ class DatabaseParser {
   // instant of a sun path (an instant's area is in the face's "sun_hours"), each from 0 to
   // the face's area.
   void read_estimated(JsonObject& entry, const Face& face, ShadowedScene& shadowed) const {
-    if (const std::optional<JsonValue> lit = entry.find("lit")) {
+    if (const std::optional<JsonValue> lit = entry.find(key::kLit)) {
       lit->fail("a database made by the " + std::string(method_name(shadowed.method.kind)) +
                 " method holds lit areas (\"lit_area\"), not lit polygons");
     }
-    const JsonValue areas_value = entry.get("lit_area");
+    const JsonValue areas_value = entry.get(key::kLitArea);
     const std::size_t face_index = shadowed.scene.faces.size();
     const double face_area = hsr::area(face.parts);
     const double tolerance = detail::LitChecker(face).area_tolerance({});
@@ -678,8 +687,18 @@ class DatabaseParser {
   // lit['id']: the polygons, each on the part its "part" key names. Without the key (a
   // database written before parts were recorded) a polygon lies on the part whose plane
   // is nearest to its outer vertices, the first of equals.
+  // In the indexed layout, loops of indices into the face's vertices (detail/
+  // indexed_polygons.h), "part" required on a face of several parts.
   std::vector<LitPolygon> read_lit(const JsonValue& value, const Face& face) const {
     const JsonArray list = value.array();
+    if (layout_ == database::Layout::kIndexed) {
+      std::vector<LitPolygon> out;
+      out.reserve(list.size());
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        out.push_back(detail::read_indexed_lit(list.at(k), vertices_, face.parts.size()));
+      }
+      return out;
+    }
     std::optional<detail::LitChecker> checker;  // only to place polygons without "part"
     std::vector<LitPolygon> out;
     out.reserve(list.size());
@@ -689,7 +708,7 @@ class DatabaseParser {
       if (const std::optional<std::string> problem = detail::vertex_problem(lit.polygon)) {
         object.value().fail(*problem);
       }
-      if (const std::optional<JsonValue> part = object.find("part")) {
+      if (const std::optional<JsonValue> part = object.find(key::kPart)) {
         lit.part = part->index();
         if (lit.part >= face.parts.size()) {
           part->fail("expected the index of one of the face's " +
@@ -946,6 +965,8 @@ class DatabaseParser {
   std::vector<LitList> lists_;
   std::vector<std::vector<JsonPlace>> path_values_;  // [path][face]: faces[f].sun_hours.<path>
   std::vector<char> instant_;  // a sampled method's: per light, whether it is a path's instant
+  database::Layout layout_ = database::Layout::kIndexed;  // the format's
+  std::vector<glm::dvec3> vertices_;  // the face being read: its shared vertices (indexed)
 };
 
 }  // namespace
