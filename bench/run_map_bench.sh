@@ -37,27 +37,8 @@ fi
 [ -f "$work/city.db.json" ] && [ -n "${REUSE:-}" ] ||
   "$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
 # The scene, and the middle of its bounding box: where the camera looks down from.
-centre=$(python3 - "$work/city.db.json" "$work/scene.json" "$from" "$to" "$step" <<'PY'
-import json, sys
-db = json.load(open(sys.argv[1]))
-polygons = []
-lo = [float("inf")] * 3
-hi = [float("-inf")] * 3
-for face in db["faces"]:
-    for k, part in enumerate(face["parts"]):
-        suffix = "" if len(face["parts"]) == 1 else "/%d" % k
-        polygons.append({"id": (face["id"] + suffix).replace("/", "."), "outer": part["outer"], "holes": part["holes"]})
-        for p in part["outer"]:
-            lo = [min(a, b) for a, b in zip(lo, p)]
-            hi = [max(a, b) for a, b in zip(hi, p)]
-scene = {"format": "shadowgen-scene/1", "polygons": polygons,
-         "site": {"latitude_deg": 51.4779, "longitude_deg": -0.0015, "utc_offset_h": 0},
-         "lights": [{"id": "path", "type": "sun", "from": sys.argv[3], "to": sys.argv[4],
-                     "step_min": int(sys.argv[5])}]}
-json.dump(scene, open(sys.argv[2], "w"))
-print("%r %r %r" % ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, hi[2] + 1 + (hi[0] - lo[0])))
-PY
-)
+centre=$(python3 "$(dirname "$0")/city_sun_scene.py" "$work/city.db.json" "$work/scene.json" \
+  "$from" "$to" "$step")
 read -r cx cy top <<<"$centre"
 instants=$("$build/cli/shadowgen" sun "$work/scene.json" | tail -n +2 | wc -l)
 polygons=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['polygons']))" "$work/scene.json")

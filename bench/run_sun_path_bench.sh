@@ -24,20 +24,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 "$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
-python3 - "$work/city.db.json" "$work/scene.json" "$from" "$to" "$step" <<'PY'
-import json, sys
-db = json.load(open(sys.argv[1]))
-polygons = []
-for face in db["faces"]:
-    for k, part in enumerate(face["parts"]):
-        suffix = "" if len(face["parts"]) == 1 else "/%d" % k
-        polygons.append({"id": (face["id"] + suffix).replace("/", "."), "outer": part["outer"], "holes": part["holes"]})
-scene = {"format": "shadowgen-scene/1", "polygons": polygons,
-         "site": {"latitude_deg": 51.4779, "longitude_deg": -0.0015, "utc_offset_h": 0},
-         "lights": [{"id": "path", "type": "sun", "from": sys.argv[3], "to": sys.argv[4],
-                     "step_min": int(sys.argv[5])}]}
-json.dump(scene, open(sys.argv[2], "w"))
-PY
+python3 "$(dirname "$0")/city_sun_scene.py" "$work/city.db.json" "$work/scene.json" "$from" "$to" \
+  "$step" >/dev/null
 instants=$("$build/cli/shadowgen" sun "$work/scene.json" | tail -n +2 | wc -l)
 echo "city of $faces faces (as read: $(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['polygons']))" "$work/scene.json") polygons), sun path $from to $to every $step min: $instants instants with the sun up"
 echo

@@ -88,7 +88,7 @@ void add_reading_options(CLI::App& command, ReadingArgs& args, bool progress, bo
 void add_input_option(CLI::App& command, std::string& path) {
   command
       .add_option("input", path,
-                  "scene (shadowgen-scene/1) or shadowed database (shadowgen-shadowed/1)")
+                  "scene (shadowgen-scene/1) or shadowed database (shadowgen-shadowed/2 or /1)")
       ->required();
 }
 

@@ -22,7 +22,7 @@ namespace {
 constexpr CommandText kGenerateText{
     "generate",
     "Compute the lit detail polygons of every (face, light) of a scene and write the "
-    "shadowed database (shadowgen-shadowed/1). Several scenes are done in turn, each "
+    "shadowed database (shadowgen-shadowed/2). Several scenes are done in turn, each "
     "written before the next is read; a bad one stops the run with exit code 1, leaving "
     "the databases already written. On a terminal a progress line is shown on stderr."};
 

@@ -293,7 +293,7 @@ void add_camera_options(CLI::App& command, RenderArgs& args) {
 }
 
 void add_render_options(CLI::App& command, RenderArgs& args) {
-  command.add_option("database", args.database, "shadowed database (shadowgen-shadowed/1)")
+  command.add_option("database", args.database, "shadowed database (shadowgen-shadowed/2 or /1)")
       ->required();
   add_camera_options(command, args);
   args.parser = &command;

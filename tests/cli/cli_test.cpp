@@ -55,7 +55,7 @@ TEST_F(Cli, GenerateThenReport) {
   EXPECT_EQ(generated.out, "");
   EXPECT_EQ(generated.err, "");
   EXPECT_EQ(files(), (std::vector<std::string>{"db.json", "scene.json"}));
-  EXPECT_EQ(nlohmann::json::parse(contents(db))["format"], "shadowgen-shadowed/1");
+  EXPECT_EQ(nlohmann::json::parse(contents(db))["format"], "shadowgen-shadowed/2");
 
   const Outcome from_db = run({"report", db.string()});
   ASSERT_EQ(from_db.code, 0) << from_db.err;
@@ -148,7 +148,7 @@ TEST_F(Cli, AnOutputThatIsAnInputIsRefused) {
   const Outcome render =
       run({"render", db.string(), "--eye", "0,0,10", "--target", "0,0,0", "--svg", db.string()});
   EXPECT_EQ(render.code, 2) << render.err;
-  EXPECT_EQ(nlohmann::json::parse(contents(db))["format"], "shadowgen-shadowed/1");
+  EXPECT_EQ(nlohmann::json::parse(contents(db))["format"], "shadowgen-shadowed/2");
 }
 
 // The mesh files a scene reads are inputs too: no run writes over one (they were once

@@ -313,7 +313,7 @@ TEST_P(ExampleCli, GenerateReportExportRender) {
   EXPECT_EQ(generated.out, "");
   EXPECT_EQ(generated.err, "");
   ASSERT_TRUE(fs::is_regular_file(db));
-  EXPECT_EQ(nlohmann::json::parse(contents(db)).at("format"), "shadowgen-shadowed/1");
+  EXPECT_EQ(nlohmann::json::parse(contents(db)).at("format"), "shadowgen-shadowed/2");
 
   // report: the same CSV, byte for byte, from the scene and from the database.
   const Outcome from_db = run({"report", db.string(), "--format", "csv"});

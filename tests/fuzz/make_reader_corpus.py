@@ -17,8 +17,10 @@ This script writes the seeds it can make on its own, named <kind>-<what>:
     strided accessors, quantized positions, a mirrored node, a cut .glb, a node cycle);
   - databases: a few written here (sun paths among them: instants at one time, out of
     order or off the path's steps, a path with no instant, members after "faces"), a
-    polar night's scene, and, with --shadowgen BIN, the database BIN generates
-    from examples/scenes/courtyard.json and shards 1 of 1 and 2 of 2 of a small sun path.
+    polar night's scene, databases in the indexed layout (shadowgen-shadowed/2: shared
+    vertices, a face of two parts, regions, an index out of its table), and, with
+    --shadowgen BIN, the databases BIN generates from examples/scenes/courtyard.json and
+    garden.json (its sun path's regions) and shards 1 of 1 and 2 of 2 of a small sun path.
 The seeds named <kind>-test-* and <kind>-cli-* hold the malformed inputs of the tables in
 tests/shadowgen/scene/scene_reader_test.cpp and tests/cli/malformed_cli_test.cpp (each
 scene with the mesh file it names attached); they were dumped from those tables once and
@@ -358,6 +360,24 @@ end_header
       "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}],
       "lit": {"sun": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": [[[0, 0, 0]]]}]}}"""))
     out["database-duplicate-face"] = seed(DATABASE, db_faces(DB_GOOD_FACE))
+    # The indexed layout (shadowgen-shadowed/2): lit polygons and regions as loops of
+    # indices into the face's shared vertices, a face of two parts naming each polygon's.
+    out["database-indexed-lit"] = seed(DATABASE, """{"format": "shadowgen-shadowed/2",
+ "lights": [{"id": "sun", "type": "directional", "direction": [0, 0, -1], "intensity": [1, 1, 1]}],
+ "views": [],
+ "faces": [{"id": "floor", "source_file": "s.json",
+   "parts": [{"outer": [[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 0]], "holes": []}],
+   "numbers": [0.0, 4.0, 2.0, -0.0], "vertices": [0,0,0, 1,0,0, 1,2,0, 0,2,3],
+   "lit": {"sun": [[[0, 1, 2, 3]]]}},
+  {"id": "bent", "source_file": "s.json",
+   "parts": [{"outer": [[0, 0, 1], [1, 0, 1], [0, 1, 1.5]], "holes": []},
+             {"outer": [[1, 0, 1], [1, 1, 1], [0, 1, 1.5]], "holes": []}],
+   "numbers": [1.0, 0.0, 1.5], "vertices": [0,1,0, 0,0,0, 1,0,2],
+   "lit": {"sun": [{"part": 1, "loops": [[0, 1, 2]]}]}}]}""")
+    out["database-indexed-bad-index"] = seed(DATABASE, db_faces("""{"id": "w", "source_file": "s.json",
+      "parts": [{"outer": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "holes": []}],
+      "numbers": [0.0, 1.0], "vertices": [0,0,0, 1,0,0, 0,1,0],
+      "lit": {"sun": [[[0, 1, 3]]]}}""").replace("shadowgen-shadowed/1", "shadowgen-shadowed/2"))
     out["database-range-without-exponent"] = seed(DATABASE, """{"format": "shadowgen-shadowed/1",
  "views": [], "faces": [], "lights": [{"id": "lamp", "type": "point", "position": [0, 0, 1],
  "intensity": [1, 1, 1], "range": {"falloff_start": 1, "end": 2}}]}""")
@@ -531,6 +551,31 @@ POLAR_NIGHT_SCENE = """{"format": "shadowgen-scene/1",
 """
 
 
+# sun_path_db's face with its sun-hours regions kept, in the indexed layout: four strips
+# 1 x 1 lit at none, three (two strips) and four of the instants, sharing their sides.
+INDEXED_REGIONS_DB = """{"format": "shadowgen-shadowed/2",
+ "lights": [{"id": "p@0", "type": "directional", "direction": [0.0, 0.5, -0.5], "intensity": [1.0, 1.0, 1.0],
+             "sun": {"entry": "p", "time": "2026-03-21T10:00", "step_min": 30, "azimuth_deg": 180.0, "elevation_deg": 30.0}},
+            {"id": "p@1", "type": "directional", "direction": [0.0, 0.5, -0.5], "intensity": [1.0, 1.0, 1.0],
+             "sun": {"entry": "p", "time": "2026-03-21T11:00", "step_min": 30, "azimuth_deg": 180.0, "elevation_deg": 30.0}},
+            {"id": "p@2", "type": "directional", "direction": [0.0, 0.5, -0.5], "intensity": [1.0, 1.0, 1.0],
+             "sun": {"entry": "p", "time": "2026-03-21T12:00", "step_min": 30, "azimuth_deg": 180.0, "elevation_deg": 30.0}},
+            {"id": "p@3", "type": "directional", "direction": [0.0, 0.5, -0.5], "intensity": [1.0, 1.0, 1.0],
+             "sun": {"entry": "p", "time": "2026-03-21T13:00", "step_min": 30, "azimuth_deg": 180.0, "elevation_deg": 30.0}}],
+ "views": [],
+ "sun_paths": [{"id": "p", "step_min": 30, "from": "2026-03-21T10:00", "to": "2026-03-21T13:00",
+                "instant_polygons": "dropped"}],
+ "faces": [{"id": "g", "source_file": "s.json",
+   "parts": [{"outer": [[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [4.0, 1.0, 0.0], [0.0, 1.0, 0.0]], "holes": []}],
+   "numbers": [0.0, 1.0, 2.0, 3.0, 4.0],
+   "vertices": [0,0,0, 1,0,0, 1,1,0, 0,1,0, 2,0,0, 2,1,0, 3,0,0, 3,1,0, 4,0,0, 4,1,0],
+   "lit": {},
+   "sun_hours": {"p": {"lit_area": [3.0, 3.0, 3.0, 1.0],
+     "regions": [{"hours": 0.0, "polygons": [[[0, 1, 2, 3]]]},
+                 {"hours": 1.5, "polygons": [[[1, 4, 5, 2]], [[4, 6, 7, 5]]]},
+                 {"hours": 2.0, "polygons": [[[6, 8, 9, 7]]]}]}}}]}"""
+
+
 def sun_path_seeds():
     """Databases with sun paths: valid, their instants at one time, out of order or off the
     path's steps, a path with no instant, and members after "faces"."""
@@ -545,6 +590,7 @@ def sun_path_seeds():
         "database-lights-after-faces": sun_path_db(order=late),
         "database-method-after-faces": sun_path_db(method=True, order=late),
         "database-shard-after-faces": sun_path_db(shard=True, order=late),
+        "database-indexed-sun-path-regions": seed(DATABASE, INDEXED_REGIONS_DB),
         "scene-sun-path-polar-night": seed(SCENE + GENERATE, POLAR_NIGHT_SCENE),
     }
 
@@ -687,12 +733,12 @@ def model_seeds():
     }
 
 
-def database_from_cli(shadowgen):
+def database_from_cli(shadowgen, scene="examples/scenes/courtyard.json"):
     with tempfile.TemporaryDirectory() as work:
-        target = pathlib.Path(work) / "courtyard.shadowed.json"
+        target = pathlib.Path(work) / "shadowed.json"
         # From the root, so that the database names its source file as the repository does.
         subprocess.run([str(pathlib.Path(shadowgen).resolve()), "generate",
-                        "examples/scenes/courtyard.json", "-o", str(target), "--quiet"],
+                        scene, "-o", str(target), "--quiet"],
                        check=True, cwd=ROOT)
         return seed(DATABASE, target.read_bytes())
 
@@ -739,6 +785,8 @@ def main():
         return 1 if stale else 0
     if args.shadowgen:
         wanted["database-example-courtyard"] = database_from_cli(args.shadowgen)
+        wanted["database-example-garden-sun-path"] = database_from_cli(
+            args.shadowgen, "examples/scenes/garden.json")
         wanted.update(shards_from_cli(args.shadowgen))
     CORPUS.mkdir(parents=True, exist_ok=True)
     for name, data in wanted.items():

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 #include <limits>
@@ -27,6 +28,7 @@
 
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/scene/database_reader.h"
+#include "tests/shadowgen/hand_scenes.h"
 
 namespace shadowgen {
 namespace {
@@ -234,6 +236,79 @@ TEST(Database, RoundTripIsAFixedPoint) {
   EXPECT_EQ(database_json(parse_database(text, "db.json")), text);
 }
 
+// The indexed layout, by hand: the four strips of sun_path_by_hand share their sides, so
+// the 16 corners of its regions are 10 vertices, and their 48 coordinates 5 numbers, each
+// written once, in the order of first use.
+TEST(Database, RegionsShareTheFacesVerticesAndNumbers) {
+  const nlohmann::json face =
+      nlohmann::json::parse(database_json(test::sun_path_by_hand()))["faces"][0];
+  EXPECT_EQ(face["numbers"], nlohmann::json::parse("[0.0, 1.0, 2.0, 3.0, 4.0]"));
+  EXPECT_EQ(face["vertices"], nlohmann::json::parse(R"([0,0,0, 1,0,0, 1,1,0, 0,1,0, 2,0,0,
+                                                        2,1,0, 3,0,0, 3,1,0, 4,0,0, 4,1,0])"));
+  EXPECT_EQ(face["sun_hours"]["p"]["regions"], nlohmann::json::parse(R"([
+      {"hours": 0.0, "polygons": [[[0, 1, 2, 3]]]},
+      {"hours": 1.5, "polygons": [[[1, 4, 5, 2]], [[4, 6, 7, 5]]]},
+      {"hours": 2.0, "polygons": [[[6, 8, 9, 7]]]}])"));
+}
+
+// Both layouts hold the same scene: read back, each gives what was written, bit for bit,
+// and writing it again gives the same text whichever layout it was read from.
+TEST(Database, BothLayoutsReadBackTheSameScene) {
+  for (const ShadowedScene& s : {sample(), test::sun_path_by_hand()}) {
+    const std::string indexed = database_json(s);
+    const std::string inlined = database_json(s, database::Layout::kInline);
+    EXPECT_EQ(nlohmann::json::parse(indexed)["format"], "shadowgen-shadowed/2");
+    EXPECT_EQ(nlohmann::json::parse(inlined)["format"], "shadowgen-shadowed/1");
+    EXPECT_LT(indexed.size(), inlined.size());
+    const ShadowedScene from_indexed = parse_database(indexed, "new.json");
+    const ShadowedScene from_inline = parse_database(inlined, "old.json");
+    expect_same(s, from_indexed);
+    expect_same(s, from_inline);
+    EXPECT_EQ(database_json(from_inline), indexed);
+    EXPECT_EQ(database_json(from_indexed, database::Layout::kInline), inlined);
+  }
+}
+
+// Numbers are told apart by their bits: 0.0 and -0.0 are two numbers of the table, and a
+// vertex keeps its signed zero.
+TEST(Database, SignedZerosStayApartInTheSharedNumbers) {
+  ShadowedScene s = sample();
+  Polygon3 signed_zeros{{{-0.0, 0.0, 0.0}, {1.0, -0.0, 0.0}, {1.0, 1.0, -0.0}}, {}};
+  s.lit.at(0, 0).push_back({0, signed_zeros});
+  const nlohmann::json face = nlohmann::json::parse(database_json(s))["faces"][0];
+  std::size_t zeros = 0;
+  for (const nlohmann::json& n : face["numbers"]) zeros += n.get<double>() == 0.0 ? 1 : 0;
+  EXPECT_EQ(zeros, 2u);
+  expect_same(s, round_trip(s));
+}
+
+TEST(Database, IndicesOutOfTheirTablesAreErrors) {
+  const std::string text = database_json(test::sun_path_by_hand());
+  const auto changed = [&](const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json db = nlohmann::json::parse(text);
+    change(db["faces"][0]);
+    return error_of(db.dump());
+  };
+  EXPECT_EQ(changed([](nlohmann::json& face) {
+              face["sun_hours"]["p"]["regions"][2]["polygons"][0][0][1] = 10;
+            }),
+            "broken.json: face 'g': faces[0].sun_hours.p.regions[2].polygons[0][0][1]: expected "
+            "the index of one of the face's 10 vertices");
+  EXPECT_EQ(changed([](nlohmann::json& face) { face["vertices"][4] = 5; }),
+            "broken.json: face 'g': faces[0].vertices[4]: expected the index of one of the "
+            "face's 5 numbers");
+  EXPECT_EQ(changed([](nlohmann::json& face) { face["vertices"].erase(29); }),
+            "broken.json: face 'g': faces[0].vertices: expected three numbers per vertex, found "
+            "29 indices");
+  EXPECT_EQ(changed([](nlohmann::json& face) { face.erase("numbers"); }),
+            "broken.json: face 'g': faces[0]: \"numbers\" and \"vertices\" come together");
+  EXPECT_EQ(changed([](nlohmann::json& face) {
+              face["sun_hours"]["p"]["regions"][0]["polygons"][0] = nlohmann::json::array();
+            }),
+            "broken.json: face 'g': faces[0].sun_hours.p.regions[0].polygons[0]: a polygon needs "
+            "its outer loop");
+}
+
 // Numbers where the format takes any finite value: light positions and directions. (The
 // JSON layer's own round trip, random bit patterns included: tests/shadowgen/json.)
 TEST(Database, ExtremeDoublesRoundTrip) {
@@ -318,7 +393,7 @@ TEST(Database, NumbersAlwaysReadAsFloatingPoint) {
 TEST(Database, EmptyLitRegionsAreLeftOut) {
   const ShadowedScene s = sample();
   const nlohmann::json json = nlohmann::json::parse(database_json(s));
-  EXPECT_EQ(json["format"], "shadowgen-shadowed/1");
+  EXPECT_EQ(json["format"], "shadowgen-shadowed/2");
   ASSERT_EQ(json["faces"].size(), 2u);
   EXPECT_EQ(json["faces"][0]["id"], "ground");
   EXPECT_TRUE(json["faces"][0]["lit"].contains("sun"));
@@ -430,7 +505,7 @@ TEST(Database, MalformedFilesNameTheFileTheFaceThePathAndTheProblem) {
   EXPECT_EQ(error_of("[]"), "broken.json: a shadowed database is a JSON object; found an array");
   EXPECT_EQ(error_of(R"({"format": "shadowgen-scene/1"})"),
             "broken.json: format: unsupported format 'shadowgen-scene/1'; this reader reads "
-            "'shadowgen-shadowed/1'");
+            "'shadowgen-shadowed/2' and 'shadowgen-shadowed/1'");
   EXPECT_EQ(error_of(R"({"format": "shadowgen-shadowed/1", "views": [], "faces": []})"),
             "broken.json: missing 'lights'");
 

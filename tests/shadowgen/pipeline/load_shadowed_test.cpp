@@ -106,12 +106,12 @@ TEST_F(LoadShadowed, EachCallerGetsOnlyWhatItAccepts) {
   EXPECT_NE(input_problem(scene, accepting(Accept::kDatabase)).find("is a scene"),
             std::string::npos);
   // A scene only: the scene reader's own message about the format.
-  EXPECT_NE(input_problem(db, accepting(Accept::kScene)).find("shadowgen-shadowed/1"),
+  EXPECT_NE(input_problem(db, accepting(Accept::kScene)).find("shadowgen-shadowed/2"),
             std::string::npos);
   const std::string either = input_problem(other, accepting(Accept::kSceneOrDatabase));
   EXPECT_NE(either.find("something-else/3"), std::string::npos) << either;
   EXPECT_NE(either.find("shadowgen-scene/1"), std::string::npos) << either;
-  EXPECT_NE(either.find("shadowgen-shadowed/1"), std::string::npos) << either;
+  EXPECT_NE(either.find("shadowgen-shadowed/2"), std::string::npos) << either;
   const std::string database_only = input_problem(other, accepting(Accept::kDatabase));
   EXPECT_NE(database_only.find("something-else/3"), std::string::npos) << database_only;
   EXPECT_EQ(database_only.find("shadowgen-scene/1"), std::string::npos) << database_only;
