@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "shadowgen/output/database.h"
+#include "shadowgen/scene/database_reader.h"
 #include "tests/cli/cli_harness.h"
 #include "tests/support/gltf_file.h"
 #include "tests/support/obj_text.h"
@@ -59,7 +61,9 @@ struct Region {
   double area = 0.0;
 };
 
-// The regions of path `path` by face id, and each face's area, from the database's JSON.
+// The regions of path `path` by face id, and each face's area, from the database's JSON,
+// written again with its polygons' coordinates inline (shadowgen-shadowed/1) so that
+// their areas are computed here from the numbers themselves.
 struct DatabaseRegions {
   std::map<std::string, std::vector<Region>> of_face;
   std::map<std::string, double> face_area;
@@ -67,7 +71,8 @@ struct DatabaseRegions {
 
 DatabaseRegions database_regions(const fs::path& db, const std::string& path) {
   DatabaseRegions out;
-  const nlohmann::json database = nlohmann::json::parse(contents(db));
+  const nlohmann::json database =
+      nlohmann::json::parse(database_json(read_database(db), database::Layout::kInline));
   for (const auto& face : database.at("faces")) {
     const std::string id = face.at("id");
     for (const auto& part : face.at("parts")) out.face_area[id] += polygon_area(part);

@@ -273,7 +273,7 @@ TEST(Database, BothLayoutsReadBackTheSameScene) {
 // vertex keeps its signed zero.
 TEST(Database, SignedZerosStayApartInTheSharedNumbers) {
   ShadowedScene s = sample();
-  Polygon3 signed_zeros{{{-0.0, 0.0, 0.0}, {1.0, -0.0, 0.0}, {1.0, 1.0, -0.0}}, {}};
+  Polygon3 signed_zeros{{{7.0, 0.0, -0.0}, {8.0, -0.0, 0.0}, {8.0, 1.0, -0.0}}, {}};
   s.lit.at(0, 0).push_back({0, signed_zeros});
   const nlohmann::json face = nlohmann::json::parse(database_json(s))["faces"][0];
   std::size_t zeros = 0;
