@@ -1,0 +1,101 @@
+# The command line of the scripts that make the examples' outputs (render_examples.sh,
+# view_examples.sh, export_models.sh), read in one place. Sourced, not run:
+#
+#   example_options=(--out=FOLDER --databases=FOLDER)  # the options it takes, with their value
+#   example_required=(--out)                           # those it cannot do without
+#   source "$(dirname "${BASH_SOURCE[0]}")/example_args.sh" "$@"
+#
+# reads SHADOWGEN [OPTION VALUE ...] [NAME ...] (options and names in any order) into
+#   examples        this folder, absolute
+#   shadowgen       the executable, absolute, checked to be one
+#   option_values   the value given to each option, by option ("--out" -> FOLDER)
+#   names           the scenes asked for (NAME: scenes/NAME.json, or district: the CityJSON
+#                   district, cityjson/district.json), each checked to exist; every scene in
+#                   scenes/ where none is named
+#   every_scene     true where no name was given, else false
+#   sun_hours_maps  the scenes whose sun path gets a sun-hours map, and the path's id
+# and gives scene_file NAME (the scene's file) and databases_folder FOLDER (FOLDER made,
+# or where FOLDER is empty a temporary folder removed when the script ends). A usage
+# mistake prints the usage line and exits 2; a missing executable or scene exits 1.
+
+examples=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+
+declare -A sun_hours_maps=([garden]=march21 [roof]=dec21 [district]=march21)
+
+example_usage() {
+  local line="usage: $0 SHADOWGEN"
+  local spec
+  for spec in "${example_options[@]}"; do
+    if [[ " ${example_required[*]} " == *" ${spec%%=*} "* ]]; then
+      line+=" ${spec%%=*} ${spec#*=}"
+    else
+      line+=" [${spec%%=*} ${spec#*=}]"
+    fi
+  done
+  echo "$line [NAME ...]" >&2
+  exit 2
+}
+
+scene_file() {
+  if [[ $1 == district ]]; then
+    echo "$examples/cityjson/district.json"
+  else
+    echo "$examples/scenes/$1.json"
+  fi
+}
+
+# Sets `databases` to FOLDER (made) or, where FOLDER is empty, to a temporary folder that
+# is removed when the script ends.
+databases_folder() {
+  if [[ -n $1 ]]; then
+    databases=$1
+    mkdir -p "$databases"
+  else
+    databases=$(mktemp -d)
+    trap 'rm -rf "$databases"' EXIT
+  fi
+}
+
+shadowgen=
+declare -A option_values=()
+names=()
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    -*)
+      [[ " ${example_options[*]} " == *" $1="* && $# -ge 2 ]] || example_usage
+      option_values[$1]=$2
+      shift 2
+      ;;
+    *)
+      if [[ -z $shadowgen ]]; then
+        shadowgen=$1
+      else
+        names+=("$1")
+      fi
+      shift
+      ;;
+  esac
+done
+[[ -n $shadowgen ]] || example_usage
+for option in "${example_required[@]}"; do
+  [[ -n ${option_values[$option]:-} ]] || example_usage
+done
+shadowgen=$(realpath "$shadowgen")
+if [[ ! -x $shadowgen ]]; then
+  echo "$0: $shadowgen is not an executable (build the target shadowgen first)" >&2
+  exit 1
+fi
+
+every_scene=false
+if [[ ${#names[@]} -eq 0 ]]; then
+  every_scene=true
+  for scene in "$examples"/scenes/*.json; do
+    names+=("$(basename "$scene" .json)")
+  done
+fi
+for name in "${names[@]}"; do
+  if [[ ! -f $(scene_file "$name") ]]; then
+    echo "$0: no scene $(scene_file "$name")" >&2
+    exit 1
+  fi
+done
