@@ -54,6 +54,26 @@ std::vector<std::string> light_ids(const Scene& scene, std::span<const std::size
 
 std::string as_is(std::string_view name) { return std::string(name); }
 
+// Every face part's loops, each edge as a pair of points (GltfOptions::outlines); none
+// unless asked for.
+std::vector<glm::dvec3> outline_points(const Scene& scene, const GltfOptions& options) {
+  std::vector<glm::dvec3> points;
+  if (!options.outlines) return points;
+  const auto add_loop = [&](const hsr::Loop3& loop) {
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      points.push_back(loop[i]);
+      points.push_back(loop[(i + 1) % loop.size()]);
+    }
+  };
+  for (const Face& face : scene.faces) {
+    for (const hsr::Polygon3& part : face.parts) {
+      add_loop(part.outer);
+      for (const hsr::Loop3& hole : part.holes) add_loop(hole);
+    }
+  }
+  return points;
+}
+
 }  // namespace
 
 std::optional<GltfForm> gltf_form_of(std::string_view file_name) {
@@ -68,17 +88,24 @@ std::optional<GltfForm> gltf_form_of(std::string_view file_name) {
   return std::nullopt;
 }
 
-std::string gltf_export(const ShadowedScene& shadowed, GltfForm form) {
+std::string gltf_export(const ShadowedScene& shadowed, GltfForm form, const GltfOptions& options) {
+  return light_set_gltf(shadowed, form, options).bytes;
+}
+
+LightSetGltf light_set_gltf(const ShadowedScene& shadowed, GltfForm form,
+                            const GltfOptions& options) {
   const Scene& scene = shadowed.scene;
   const detail::SceneRegions regions = detail::scene_regions(shadowed, "gltf_export");
   const detail::LightSetNames names = detail::light_set_names(scene, regions.sets, as_is);
 
+  LightSetGltf out;
   std::vector<GltfMaterial> materials;
   std::map<LightSet, std::size_t, LightSetLess> material_of;
   for (const auto& [set, name] : names) {
     material_of.emplace(set, materials.size());
     materials.push_back(
         {name, light_set_colour(scene, set), {{"lights", light_ids(scene, set)}}, {}});
+    out.materials.push_back({set, name});
   }
 
   std::vector<double> lit(scene.faces.size(), 0.0);
@@ -102,11 +129,14 @@ std::string gltf_export(const ShadowedScene& shadowed, GltfForm form) {
   std::vector<std::size_t> all(scene.lights.size());
   for (std::size_t l = 0; l < all.size(); ++l) all[l] = l;
   extras["lights"] = light_ids(scene, all);
-  return detail::gltf_file(materials, origin, extras, form);
+  out.bytes =
+      detail::gltf_file(materials, outline_points(scene, options), origin, extras, form, options);
+  return out;
 }
 
 std::string sun_hours_gltf_export(const ShadowedScene& shadowed, const SunPathHours& path,
-                                  const HourBands& bands, GltfForm form) {
+                                  const HourBands& bands, GltfForm form,
+                                  const GltfOptions& options) {
   const Scene& scene = shadowed.scene;
   require_regions(path, scene.file, "an export by hour bands");
   if (path.regions.size() != scene.faces.size()) {
@@ -139,7 +169,8 @@ std::string sun_hours_gltf_export(const ShadowedScene& shadowed, const SunPathHo
                         {"instants", path.instants.size()},
                         {"most_hours", bands.most_hours},
                         {"caption", bands.caption()}};
-  return detail::gltf_file(materials, origin, extras, form);
+  return detail::gltf_file(materials, outline_points(scene, options), origin, extras, form,
+                           options);
 }
 
 }  // namespace shadowgen

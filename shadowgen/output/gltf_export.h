@@ -58,9 +58,11 @@
 //                   to first_triangle[k + 1] (the last piece's to the primitive's end);
 //                   area is its area in the database (double), hours its sun hours.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/output/hour_bands.h"
@@ -72,6 +74,30 @@ enum class GltfForm {
   kText,    // .gltf: JSON, the buffer embedded as a base64 data URI
 };
 
+// What a file may hold beyond the layout above, for a reader that shows it (the viewer
+// page, shadowgen/viewer/viewer_model.h); `export` writes neither.
+struct GltfOptions {
+  // Every triangle mesh's vertices carry a float32 attribute _FACE, the index in the scene
+  // of the face they lie on (exact below 2^24 faces), so that a reader names the face
+  // under a point without the pieces' extras. In a view of its own after the indices'.
+  bool face_attribute = false;
+  // One more mesh after the materials' (mode LINES, no material, not indexed; its node,
+  // "outlines", a child of the root): every face part's outer loop and holes, each edge a
+  // pair of vertices, in the same axes and relative to the same root as the triangles.
+  bool outlines = false;
+};
+
+// A light-set export's bytes, and its materials' light sets (the indices of their lights
+// in the scene, ascending) and names, in the materials' order: what a legend lists.
+struct LightSetGltf {
+  struct Material {
+    std::vector<std::size_t> lights;
+    std::string name;
+  };
+  std::string bytes;
+  std::vector<Material> materials;
+};
+
 // The form a file name asks for by its extension, ".glb" or ".gltf" (in any case);
 // nullopt for any other name.
 std::optional<GltfForm> gltf_form_of(std::string_view file_name);
@@ -79,13 +105,17 @@ std::optional<GltfForm> gltf_form_of(std::string_view file_name);
 // The file's bytes. Throws std::invalid_argument when `lit` is not shaped [face][light],
 // GenerationError naming the face should a region fail to triangulate (valid regions do
 // not), and std::length_error for a model of more than 2^32 − 1 vertices or 4 GiB.
-std::string gltf_export(const ShadowedScene& shadowed, GltfForm form);
+std::string gltf_export(const ShadowedScene& shadowed, GltfForm form,
+                        const GltfOptions& options = {});
+LightSetGltf light_set_gltf(const ShadowedScene& shadowed, GltfForm form,
+                            const GltfOptions& options = {});
 
 // The bytes of `path`'s sun-hours regions by band (`bands`, its hour bands). `path` is one
 // of shadowed.sun_paths, its regions shaped [face] (std::invalid_argument otherwise); throws
 // InputError where the path kept no regions (generate --areas-only), and otherwise as
 // gltf_export.
 std::string sun_hours_gltf_export(const ShadowedScene& shadowed, const SunPathHours& path,
-                                  const HourBands& bands, GltfForm form);
+                                  const HourBands& bands, GltfForm form,
+                                  const GltfOptions& options = {});
 
 }  // namespace shadowgen

@@ -162,6 +162,38 @@ std::vector<GltfTriangle> mesh_triangles(GltfFile& file, std::size_t mesh) {
   return triangles;
 }
 
+std::vector<double> mesh_scalars(GltfFile& file, std::size_t mesh, const std::string& attribute) {
+  const nlohmann::json& attributes = primitive(file, mesh).at("attributes");
+  std::vector<double> out;
+  if (!attributes.contains(attribute)) {
+    file.errors.push_back("mesh " + std::to_string(mesh) + " has no " + attribute);
+    return out;
+  }
+  std::size_t count = 0;
+  const unsigned char* bytes = accessor_bytes(file, attributes[attribute], 5126, "SCALAR", count);
+  if (bytes == nullptr) return out;
+  for (std::size_t i = 0; i < count; ++i) {
+    float v = 0.0f;
+    std::memcpy(&v, bytes + 4 * i, 4);
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::vector<std::array<glm::dvec3, 2>> mesh_lines(GltfFile& file, std::size_t mesh) {
+  const nlohmann::json& p = primitive(file, mesh);
+  std::vector<std::array<glm::dvec3, 2>> lines;
+  if (p.value("mode", 4) != 1 || p.contains("indices")) {
+    file.errors.push_back("a primitive not of LINES without indices");
+    return lines;
+  }
+  const std::vector<glm::dvec3> positions = vec3s(file, p.at("attributes").at("POSITION"));
+  for (std::size_t i = 0; i + 1 < positions.size(); i += 2) {
+    lines.push_back({positions[i], positions[i + 1]});
+  }
+  return lines;
+}
+
 glm::dvec3 mesh_translation(GltfFile& file, std::size_t mesh) {
   const nlohmann::json& nodes = file.json.at("nodes");
   // The path from the node holding the mesh up to a root.
@@ -199,6 +231,7 @@ std::map<std::string, double> material_areas(GltfFile& file) {
   std::map<std::string, double> areas;
   if (!file.json.contains("meshes")) return areas;
   for (std::size_t m = 0; m < file.json["meshes"].size(); ++m) {
+    if (primitive(file, m).value("mode", 4) == 1) continue;  // lines
     const int material = primitive(file, m).at("material");
     const std::string name = file.json.at("materials").at(material).at("name");
     double area = 0.0;

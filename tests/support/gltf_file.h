@@ -4,8 +4,9 @@
 // tests: independent of the writer (no tinygltf), it takes the JSON and the buffer apart
 // itself, from a .glb's chunks or a .gltf's base64 data URI, and reads the triangles back
 // from the bytes as the file holds them. Only what the export writes is understood:
-// TRIANGLES with uint32 indices and float32 POSITION, node translations (no rotation or
-// scale). Anything else is an error, reported, not thrown.
+// TRIANGLES with uint32 indices and float32 POSITION (and float32 scalar attributes), LINES
+// of float32 POSITION, node translations (no rotation or scale). Anything else is an error,
+// reported, not thrown.
 
 #include <array>
 #include <cstddef>
@@ -33,6 +34,14 @@ GltfFile parse_gltf(const std::string& bytes);
 // its node (the float32 positions widened to double).
 std::vector<GltfTriangle> mesh_triangles(GltfFile& file, std::size_t mesh);
 
+// The float32 SCALAR attribute `attribute` (e.g. "_FACE") of mesh `mesh`'s first
+// primitive, one value per vertex, widened to double; empty (and an error) where it has none.
+std::vector<double> mesh_scalars(GltfFile& file, std::size_t mesh, const std::string& attribute);
+
+// The segments of mesh `mesh`'s first primitive, LINES without indices, each a pair of
+// points in the file's coordinates relative to its node.
+std::vector<std::array<glm::dvec3, 2>> mesh_lines(GltfFile& file, std::size_t mesh);
+
 // The translation of the node holding mesh `mesh`, its parents' added: where the mesh's
 // positions are relative to.
 glm::dvec3 mesh_translation(GltfFile& file, std::size_t mesh);
@@ -40,7 +49,8 @@ glm::dvec3 mesh_translation(GltfFile& file, std::size_t mesh);
 // Area of a triangle, in double.
 double triangle_area(const GltfTriangle& t);
 
-// Per material name, the area of the triangles of the meshes drawn in it.
+// Per material name, the area of the triangles of the meshes drawn in it (meshes of lines
+// left out).
 std::map<std::string, double> material_areas(GltfFile& file);
 
 // Saves `bytes` for the Khronos validator (web/validate_gltf.mjs) where the environment

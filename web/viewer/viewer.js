@@ -290,15 +290,20 @@ window.shadowgenViewer = {
 };
 
 new GLTFLoader().parse(decodeBase64(model.glb), '', (gltf) => {
-  // The nodes carry the origin as their translation; taking it off again in the scene's
-  // root keeps the coordinates three.js multiplies small.
+  // The file's root node carries the origin as its translation; taking it off again in the
+  // scene's root keeps the coordinates three.js multiplies small.
   const root = gltf.scene;
   root.position.set(-meta.origin[0], -meta.origin[2], meta.origin[1]);
+  // The file's materials are the page's groups, in order (a mesh per material that has
+  // pieces); the mesh of lines is the outlines.
   root.traverse((object) => {
-    if (object.isMesh && object.userData.group !== undefined) {
-      const group = meta.groups[object.userData.group];
+    const association = object.isMesh ? gltf.parser.associations.get(object.material) : undefined;
+    if (association && association.materials !== undefined) {
+      const g = association.materials;
+      const group = meta.groups[g];
+      object.userData.group = g;
       object.material = new THREE.MeshBasicMaterial({ color: srgb(group.colour), side: THREE.DoubleSide });
-      groupMeshes[object.userData.group] = object;
+      groupMeshes[g] = object;
     } else if (object.isLineSegments) {
       object.material = new THREE.LineBasicMaterial({ color: 0x333333 });
       outlines = object;

@@ -31,6 +31,7 @@ bool GltfMesh::add_piece(const Face& face, std::size_t face_index,
       }
       it->second = static_cast<std::uint32_t>(positions_.size());
       positions_.push_back(p);
+      vertex_faces_.push_back(face_index);
     }
     return it->second;
   };

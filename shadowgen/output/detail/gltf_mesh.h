@@ -41,11 +41,13 @@ class GltfMesh {
 
   bool empty() const { return indices_.empty(); }
   const std::vector<glm::dvec3>& positions() const { return positions_; }
-  const std::vector<std::uint32_t>& indices() const { return indices_; }  // 3 per triangle
+  const std::vector<std::uint32_t>& indices() const { return indices_; }          // 3 per triangle
+  const std::vector<std::size_t>& vertex_faces() const { return vertex_faces_; }  // per vertex
   const GltfPieces& pieces() const { return pieces_; }
 
  private:
   std::vector<glm::dvec3> positions_;
+  std::vector<std::size_t> vertex_faces_;  // the face index of each vertex
   std::vector<std::uint32_t> indices_;
   GltfPieces pieces_;
   // The vertices of the face added last, by point, and that face.

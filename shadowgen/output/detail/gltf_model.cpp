@@ -21,6 +21,7 @@ constexpr int kUnsignedInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
 constexpr int kArrayBuffer = TINYGLTF_TARGET_ARRAY_BUFFER;
 constexpr int kElementArrayBuffer = TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
 constexpr int kTriangles = TINYGLTF_MODE_TRIANGLES;
+constexpr int kLines = TINYGLTF_MODE_LINE;
 
 constexpr const char* kUnlit = "KHR_materials_unlit";
 
@@ -78,21 +79,22 @@ nlohmann::json pieces_json(const GltfPieces& pieces) {
 struct MeshData {
   std::vector<float> positions;        // x, y, z relative to the origin, in glTF's axes
   std::vector<std::uint32_t> indices;  // 3 per triangle, into each mesh's own positions
+  std::vector<float> faces;            // per triangle meshes' vertex, its face (_FACE)
   struct Span {
     std::size_t first_vertex = 0, vertices = 0, first_index = 0, count = 0;
     std::vector<double> least, most;  // of the float32 positions, as glTF's min and max
   };
   std::vector<Span> spans;  // per mesh written
 
-  void add(const GltfMesh& mesh, const glm::dvec3& origin) {
+  // The positions of `points` as one span, without indices.
+  Span& add_positions(std::span<const glm::dvec3> points, const glm::dvec3& origin) {
     Span span;
     span.first_vertex = positions.size() / 3;
-    span.vertices = mesh.positions().size();
+    span.vertices = points.size();
     span.first_index = indices.size();
-    span.count = mesh.indices().size();
     span.least.assign(3, std::numeric_limits<double>::infinity());
     span.most.assign(3, -std::numeric_limits<double>::infinity());
-    for (const glm::dvec3& p : mesh.positions()) {
+    for (const glm::dvec3& p : points) {
       const glm::dvec3 q = gltf_axes(p - origin);
       for (int c = 0; c < 3; ++c) {
         const auto v = static_cast<float>(q[c]);
@@ -101,8 +103,15 @@ struct MeshData {
         span.most[c] = std::max(span.most[c], static_cast<double>(v));
       }
     }
-    indices.insert(indices.end(), mesh.indices().begin(), mesh.indices().end());
     spans.push_back(std::move(span));
+    return spans.back();
+  }
+
+  void add(const GltfMesh& mesh, const glm::dvec3& origin) {
+    Span& span = add_positions(mesh.positions(), origin);
+    span.count = mesh.indices().size();
+    indices.insert(indices.end(), mesh.indices().begin(), mesh.indices().end());
+    for (const std::size_t f : mesh.vertex_faces()) faces.push_back(static_cast<float>(f));
   }
 };
 
@@ -155,8 +164,10 @@ tinygltf::Material material_of(const GltfMaterial& m) {
 
 }  // namespace
 
-std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dvec3& origin,
-                      const nlohmann::json& scene_extras, GltfForm form) {
+std::string gltf_file(const std::vector<GltfMaterial>& materials,
+                      std::span<const glm::dvec3> outline_points, const glm::dvec3& origin,
+                      const nlohmann::json& scene_extras, GltfForm form,
+                      const GltfOptions& options) {
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "shadowgen";
@@ -173,11 +184,16 @@ std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dve
   for (const GltfMaterial& m : materials) {
     if (!m.mesh.empty()) data.add(m.mesh, origin);
   }
+  const bool outlines = options.outlines && !outline_points.empty();
+  if (outlines) data.add_positions(outline_points, origin);
   // Vertex views shared by several accessors state their stride ("Buffers and Buffer
   // Views"); a view of indices has none.
   const int positions = data.spans.empty() ? -1 : add_view(model, data.positions, kArrayBuffer, 12);
   const int indices =
-      data.spans.empty() ? -1 : add_view(model, data.indices, kElementArrayBuffer, 0);
+      data.indices.empty() ? -1 : add_view(model, data.indices, kElementArrayBuffer, 0);
+  const int faces = options.face_attribute && !data.faces.empty()
+                        ? add_view(model, data.faces, kArrayBuffer, 4)
+                        : -1;
   std::size_t next = 0;
   for (const GltfMaterial& m : materials) {
     model.materials.push_back(material_of(m));
@@ -188,6 +204,10 @@ std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dve
                                                     kFloat, TINYGLTF_TYPE_VEC3, span.vertices);
     model.accessors.back().minValues = span.least;
     model.accessors.back().maxValues = span.most;
+    if (faces >= 0) {
+      primitive.attributes["_FACE"] = add_accessor(model, faces, 4 * span.first_vertex, kFloat,
+                                                   TINYGLTF_TYPE_SCALAR, span.vertices);
+    }
     primitive.indices = add_accessor(model, indices, 4 * span.first_index, kUnsignedInt,
                                      TINYGLTF_TYPE_SCALAR, span.count);
     primitive.material = static_cast<int>(model.materials.size() - 1);
@@ -198,6 +218,23 @@ std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dve
 
     tinygltf::Node node;
     node.name = m.name;
+    node.mesh = static_cast<int>(model.meshes.size() - 1);
+    model.nodes.push_back(std::move(node));
+    model.nodes.front().children.push_back(static_cast<int>(model.nodes.size() - 1));
+  }
+  if (outlines) {
+    const MeshData::Span& span = data.spans.back();
+    tinygltf::Primitive primitive;
+    primitive.attributes["POSITION"] = add_accessor(model, positions, 12 * span.first_vertex,
+                                                    kFloat, TINYGLTF_TYPE_VEC3, span.vertices);
+    model.accessors.back().minValues = span.least;
+    model.accessors.back().maxValues = span.most;
+    primitive.mode = kLines;
+    tinygltf::Mesh mesh;
+    mesh.primitives.push_back(std::move(primitive));
+    model.meshes.push_back(std::move(mesh));
+    tinygltf::Node node;
+    node.name = "outlines";
     node.mesh = static_cast<int>(model.meshes.size() - 1);
     model.nodes.push_back(std::move(node));
     model.nodes.front().children.push_back(static_cast<int>(model.nodes.size() - 1));

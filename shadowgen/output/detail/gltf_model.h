@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,12 @@ struct GltfMaterial {
 
 // The file's bytes: `materials` in order, each with a node and a mesh where it has
 // triangles; the root node at `origin` (scene coordinates); the pieces' columns as the
-// meshes' extras; `scene_extras` (an object) as the scene's. Throws std::length_error for
-// a buffer of 4 GiB or more.
-std::string gltf_file(const std::vector<GltfMaterial>& materials, const glm::dvec3& origin,
-                      const nlohmann::json& scene_extras, GltfForm form);
+// meshes' extras; `scene_extras` (an object) as the scene's. With options.face_attribute,
+// the vertices' faces as _FACE; with options.outlines, `outline_points` (pairs, scene
+// coordinates) as a mesh of lines. Throws std::length_error for a buffer of 4 GiB or more.
+std::string gltf_file(const std::vector<GltfMaterial>& materials,
+                      std::span<const glm::dvec3> outline_points, const glm::dvec3& origin,
+                      const nlohmann::json& scene_extras, GltfForm form,
+                      const GltfOptions& options);
 
 }  // namespace shadowgen::detail

@@ -213,6 +213,47 @@ TEST(GltfExport, ExtrasListFacesAndEachMeshsPieces) {
   EXPECT_EQ(square, 16.0);
 }
 
+// What a page asks for beyond the export (GltfOptions): each vertex's face as _FACE, and the
+// faces' outlines as a mesh of lines after the materials'; neither unless asked.
+TEST(GltfExport, TheFaceAttributeAndTheOutlinesAreWrittenWhenAsked) {
+  const ShadowedScene s = generated(kTwoLights);
+  GltfFile plain = read_back(gltf_export(s, GltfForm::kBinary), GltfForm::kBinary);
+  ASSERT_EQ(plain.json["meshes"].size(), 4u);
+  for (const nlohmann::json& mesh : plain.json["meshes"]) {
+    EXPECT_FALSE(mesh["primitives"][0]["attributes"].contains("_FACE"));
+  }
+  for (const GltfForm form : kForms) {
+    const LightSetGltf made = light_set_gltf(s, form, {.face_attribute = true, .outlines = true});
+    GltfFile file = read_back(made.bytes, form);
+    // The materials, listed with their light sets: shadow, down, slant, down+slant.
+    ASSERT_EQ(made.materials.size(), 4u);
+    EXPECT_EQ(made.materials[3].lights, (std::vector<std::size_t>{0, 1}));
+    EXPECT_EQ(made.materials[3].name, "down+slant");
+    ASSERT_EQ(file.json["meshes"].size(), 5u);
+    // Mesh "down+slant" holds the ground's region, then the square's: each vertex names
+    // its face, those of the square's triangles face 1.
+    const std::vector<double> faces = test::mesh_scalars(file, 3, "_FACE");
+    const std::vector<test::GltfTriangle> triangles = test::mesh_triangles(file, 3);
+    EXPECT_EQ(std::set<double>(faces.begin(), faces.end()), (std::set<double>{0.0, 1.0}));
+    EXPECT_EQ(
+        faces.size(),
+        file.json["accessors"][file.json["meshes"][3]["primitives"][0]["attributes"]["POSITION"]
+                                   .get<int>()]["count"]
+            .get<std::size_t>());
+    // The outlines: the ground's and the square's four edges each, in glTF's axes around
+    // the root at the centre (5, 5, 0.5): the ground's corner (0, 0, 0) is (−5, −0.5, 5).
+    EXPECT_EQ(file.json["nodes"].back()["name"], "outlines");
+    EXPECT_FALSE(file.json["meshes"][4]["primitives"][0].contains("material"));
+    const std::vector<std::array<glm::dvec3, 2>> lines = test::mesh_lines(file, 4);
+    ASSERT_EQ(lines.size(), 8u);
+    EXPECT_EQ(lines[0][0], glm::dvec3(-5.0, -0.5, 5.0));
+    EXPECT_EQ(test::mesh_translation(file, 4), glm::dvec3(5.0, 0.5, -5.0));
+    // The materials' areas are those of the plain file.
+    EXPECT_EQ(test::material_areas(file), test::material_areas(plain));
+    EXPECT_TRUE(file.errors.empty()) << file.errors.front();
+  }
+}
+
 // The scene's (x, y, z) is glTF's (x, z, −y): a wall in the plane y = 0 facing −y, from
 // (0, 0, 0) to (4, 0, 2), stands in glTF in the plane z = 0 facing +z, from (0, 0, 0) to
 // (4, 2, 0); the root node stands at the centre (2, 0, 1), in glTF (2, 1, 0).

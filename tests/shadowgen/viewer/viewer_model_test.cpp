@@ -1,7 +1,8 @@
 // The viewer's model (shadowgen/viewer/viewer_model.h) read back as a glTF reader reads
-// it: the GLB container, the triangles of each group against the hand-computed areas of
-// its light set or band, the faces they name, the axes and origin, and the page's
-// description; and the page's folder (viewer_page.h).
+// it (tests/support/gltf_file.h; each file kept for the Khronos validator): the triangles
+// of each group against the hand-computed areas of its light set or band, the faces they
+// name, the outlines, the axes and origin, and the page's description; and the page's
+// folder (viewer_page.h).
 
 #include "shadowgen/viewer/viewer_model.h"
 
@@ -23,9 +24,9 @@
 
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/viewer/detail/base64.h"
-#include "shadowgen/viewer/detail/glb_file.h"
 #include "shadowgen/viewer/viewer_page.h"
 #include "tests/shadowgen/hand_scenes.h"
+#include "tests/support/gltf_file.h"
 #include "tests/support/relative_error.h"
 #include "tests/support/temp_folder.h"
 
@@ -34,91 +35,37 @@ namespace {
 
 using test::relative_error;
 
-// A GLB read back: its JSON and its binary chunk.
-struct Glb {
-  nlohmann::json json;
-  std::string bin;
-};
-
-std::uint32_t u32(const std::string& bytes, std::size_t at) {
-  std::uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = v << 8 | static_cast<unsigned char>(bytes[at + i]);
-  return v;
+// The model read back by the tests' own glTF reader, kept for the Khronos validator (CTest's
+// gltf.validator), with no reading error.
+test::GltfFile read_model(const ViewerModel& model) {
+  test::keep_for_validator(model.glb, ".glb");
+  test::GltfFile file = test::parse_gltf(model.glb);
+  EXPECT_TRUE(file.errors.empty()) << file.errors.front();
+  EXPECT_EQ(model.glb.compare(0, 4, "glTF"), 0);  // binary
+  return file;
 }
 
-Glb read_glb(const std::string& bytes) {
-  Glb glb;
-  EXPECT_GE(bytes.size(), 28u);
-  EXPECT_EQ(u32(bytes, 0), 0x46546C67u);  // "glTF"
-  EXPECT_EQ(u32(bytes, 4), 2u);
-  EXPECT_EQ(u32(bytes, 8), bytes.size());
-  const std::uint32_t json_length = u32(bytes, 12);
-  EXPECT_EQ(json_length % 4, 0u);
-  EXPECT_EQ(u32(bytes, 16), 0x4E4F534Au);  // "JSON"
-  glb.json = nlohmann::json::parse(bytes.substr(20, json_length));
-  const std::size_t bin_at = 20 + json_length;
-  const std::uint32_t bin_length = u32(bytes, bin_at);
-  EXPECT_EQ(bin_length % 4, 0u);
-  EXPECT_EQ(u32(bytes, bin_at + 4), 0x004E4942u);  // "BIN\0"
-  EXPECT_EQ(bin_at + 8 + bin_length, bytes.size());
-  glb.bin = bytes.substr(bin_at + 8, bin_length);
-  return glb;
-}
-
-// The floats of accessor `a`.
-std::vector<float> floats(const Glb& glb, std::size_t a) {
-  const nlohmann::json& accessor = glb.json["accessors"][a];
-  const nlohmann::json& view = glb.json["bufferViews"][accessor["bufferView"].get<std::size_t>()];
-  EXPECT_EQ(accessor["componentType"], 5126);
-  std::vector<float> out(view["byteLength"].get<std::size_t>() / sizeof(float));
-  std::memcpy(out.data(), glb.bin.data() + view["byteOffset"].get<std::size_t>(),
-              out.size() * sizeof(float));
-  return out;
-}
-
-// The unsigned integers of accessor `a`.
-std::vector<std::uint32_t> uints(const Glb& glb, std::size_t a) {
-  const nlohmann::json& accessor = glb.json["accessors"][a];
-  const nlohmann::json& view = glb.json["bufferViews"][accessor["bufferView"].get<std::size_t>()];
-  EXPECT_EQ(accessor["componentType"], 5125);
-  std::vector<std::uint32_t> out(view["byteLength"].get<std::size_t>() / sizeof(std::uint32_t));
-  std::memcpy(out.data(), glb.bin.data() + view["byteOffset"].get<std::size_t>(),
-              out.size() * sizeof(std::uint32_t));
-  return out;
-}
-
-// Per group of the page: the area of its triangles, and the faces they belong to.
+// Per group of the page (the file's material), the area of its triangles and the faces
+// their vertices name (_FACE).
 struct GroupTriangles {
   double area = 0.0;
   std::set<std::size_t> faces;
 };
 
-std::map<std::size_t, GroupTriangles> group_triangles(const Glb& glb) {
+std::map<std::size_t, GroupTriangles> group_triangles(test::GltfFile& file) {
   std::map<std::size_t, GroupTriangles> groups;
-  for (const nlohmann::json& node : glb.json["nodes"]) {
-    if (!node.contains("extras") || !node["extras"].contains("group")) continue;
-    const nlohmann::json& primitive =
-        glb.json["meshes"][node["mesh"].get<std::size_t>()]["primitives"][0];
-    EXPECT_EQ(primitive["mode"], 4);
-    const std::vector<float> p = floats(glb, primitive["attributes"]["POSITION"]);
-    const std::vector<float> f = floats(glb, primitive["attributes"]["_FACE"]);
-    const std::vector<std::uint32_t> index = uints(glb, primitive["indices"]);
-    EXPECT_EQ(p.size(), 3 * f.size());
-    EXPECT_EQ(index.size() % 3, 0u);
-    GroupTriangles& group = groups[node["extras"]["group"].get<std::size_t>()];
-    const auto vertex = [&](std::uint32_t i) {
-      return glm::dvec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
-    };
-    for (std::size_t t = 0; t + 2 < index.size(); t += 3) {
-      const std::uint32_t i = index[t], j = index[t + 1], k = index[t + 2];
-      EXPECT_LT(std::max({i, j, k}), f.size());
-      if (std::max({i, j, k}) >= f.size()) return groups;
-      const glm::dvec3 n = glm::cross(vertex(j) - vertex(i), vertex(k) - vertex(i));
-      group.area += 0.5 * std::sqrt(glm::dot(n, n));
-      EXPECT_EQ(f[i], f[j]);
-      EXPECT_EQ(f[i], f[k]);
-      group.faces.insert(static_cast<std::size_t>(f[i]));
+  for (std::size_t m = 0; m < file.json["meshes"].size(); ++m) {
+    const nlohmann::json& primitive = file.json["meshes"][m]["primitives"][0];
+    if (primitive.value("mode", 4) != 4) continue;
+    GroupTriangles& group = groups[primitive["material"].get<std::size_t>()];
+    for (const test::GltfTriangle& t : test::mesh_triangles(file, m)) {
+      group.area += test::triangle_area(t);
     }
+    const std::vector<double> faces = test::mesh_scalars(file, m, "_FACE");
+    EXPECT_EQ(faces.size(),
+              file.json["accessors"][primitive["attributes"]["POSITION"].get<int>()]["count"]
+                  .get<std::size_t>());
+    for (const double f : faces) group.faces.insert(static_cast<std::size_t>(f));
   }
   return groups;
 }
@@ -135,7 +82,7 @@ TEST(ViewerModel, EachLightSetsTrianglesAddUpToItsHandComputedArea) {
   ASSERT_EQ(meta["groups"].size(), 4u);
   const std::vector<std::string> names = {"shadow", "down", "slant", "down+slant"};
   const std::vector<double> areas = {12.0, 4.0, 4.0, 96.0};
-  const Glb glb = read_glb(model.glb);
+  test::GltfFile glb = read_model(model);
   const std::map<std::size_t, GroupTriangles> groups = group_triangles(glb);
   ASSERT_EQ(groups.size(), 4u);
   for (std::size_t g = 0; g < 4; ++g) {
@@ -181,21 +128,19 @@ TEST(ViewerModel, PositionsAreRelativeToTheSceneCentreInGltfAxes) {
   const ViewerModel model = viewer_model(test::generated(test::kTwoLights));
   const nlohmann::json meta = nlohmann::json::parse(model.description);
   EXPECT_EQ(meta["origin"], nlohmann::json({5.0, 5.0, 0.5}));
-  const Glb glb = read_glb(model.glb);
-  for (const nlohmann::json& node : glb.json["nodes"]) {
-    EXPECT_EQ(node["translation"], nlohmann::json({5.0, 0.5, -5.0}));
+  test::GltfFile glb = read_model(model);
+  for (std::size_t m = 0; m < glb.json["meshes"].size(); ++m) {
+    EXPECT_EQ(test::mesh_translation(glb, m), glm::dvec3(5.0, 0.5, -5.0));
   }
-  // The outlines: each face part's loop as pairs of points, the ground's first edge from
-  // (0,0,0) to (10,0,0).
-  const nlohmann::json& outline_node = glb.json["nodes"].back();
-  EXPECT_EQ(outline_node["extras"]["outline"], true);
-  const nlohmann::json& lines =
-      glb.json["meshes"][outline_node["mesh"].get<std::size_t>()]["primitives"][0];
-  EXPECT_EQ(lines["mode"], 1);
-  const std::vector<float> p = floats(glb, lines["attributes"]["POSITION"]);
-  ASSERT_EQ(p.size(), 2u * 3u * 8u);  // two faces of four edges
-  EXPECT_EQ(std::vector<float>(p.begin(), p.begin() + 6),
-            (std::vector<float>{-5.0f, -0.5f, 5.0f, 5.0f, -0.5f, 5.0f}));
+  // The outlines, the last mesh: each face part's loop as pairs of points, the ground's
+  // first edge from (0,0,0) to (10,0,0).
+  const std::size_t last = glb.json["meshes"].size() - 1;
+  EXPECT_EQ(glb.json["nodes"].back()["name"], "outlines");
+  const std::vector<std::array<glm::dvec3, 2>> lines = test::mesh_lines(glb, last);
+  ASSERT_EQ(lines.size(), 8u);  // two faces of four edges
+  EXPECT_EQ(lines[0][0], glm::dvec3(-5.0, -0.5, 5.0));
+  EXPECT_EQ(lines[0][1], glm::dvec3(5.0, -0.5, 5.0));
+  EXPECT_TRUE(glb.errors.empty()) << glb.errors.front();
 }
 
 TEST(ViewerModel, TheNorthAxisIsTheSitesOrElseWhatASunInstantSays) {
@@ -231,9 +176,11 @@ TEST(ViewerModel, SunHoursBandsHoldTheirRegionsAndFacesTheirMeanHours) {
   EXPECT_EQ(meta["caption"][0], "Sun hours: p");
   EXPECT_EQ(meta["faces"][0]["hours"], 1.25);
   EXPECT_FALSE(meta["faces"][0].contains("lit"));
-  const std::map<std::size_t, GroupTriangles> groups = group_triangles(read_glb(model.glb));
+  test::GltfFile glb = read_model(model);
+  const std::map<std::size_t, GroupTriangles> groups = group_triangles(glb);
   EXPECT_EQ(groups.at(0).area, 1.0);
   EXPECT_EQ(groups.at(1).area, 3.0);
+  EXPECT_EQ(glb.json["materials"][1]["name"], "1h+");
 }
 
 TEST(ViewerModel, ASunPathWithoutRegionsIsRefusedNamingTheFile) {
@@ -266,23 +213,6 @@ TEST(Base64, EncodesTheTestVectorsOfRfc4648) {
   EXPECT_EQ(detail::base64("fooba"), "Zm9vYmE=");
   EXPECT_EQ(detail::base64("foobar"), "Zm9vYmFy");
   EXPECT_EQ(detail::base64(std::string("\xff\xfe\x00", 3)), "//4A");
-}
-
-TEST(GlbFile, AMeshWithoutWholeVerticesIsACallersMistake) {
-  detail::GlbMesh mesh;
-  mesh.name = "empty";
-  EXPECT_THROW(detail::glb_file({&mesh, 1}, glm::dvec3(0.0)), std::invalid_argument);
-  mesh.positions = {0.0f, 0.0f};
-  EXPECT_THROW(detail::glb_file({&mesh, 1}, glm::dvec3(0.0)), std::invalid_argument);
-}
-
-TEST(GlbFile, NoMeshIsOneEmptySceneWithoutABinaryChunk) {
-  const std::string glb = detail::glb_file({}, glm::dvec3(0.0));
-  ASSERT_EQ(u32(glb, 8), glb.size());
-  EXPECT_EQ(glb.size(), 20 + u32(glb, 12));
-  const nlohmann::json json = nlohmann::json::parse(glb.substr(20));
-  EXPECT_EQ(json["scenes"], nlohmann::json::parse(R"([{"nodes": []}])"));
-  EXPECT_FALSE(json.contains("buffers"));
 }
 
 std::string read_text(const std::filesystem::path& path) {
