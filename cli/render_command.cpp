@@ -68,6 +68,7 @@ struct RenderArgs {
   SunHoursArgs sun_hours;            // --sun-hours: a sun-hours map of that path instead
   bool by_light = false;             // --by-light: the SVG in layers by light
   bool pieces = false;               // --pieces: one SVG path per piece, not per colour
+  bool full_precision = false;       // --full-precision: exact coordinates, not 1/1000 px
   bool quiet = false;                // --quiet: no reading warnings, no progress line
   const CLI::App* parser = nullptr;  // the subcommand, whose options say what was given
 };
@@ -180,6 +181,11 @@ RenderArgs with_outputs(const RenderArgs& given) {
         "--pieces draws the SVG picture one path per piece: it needs -o FILE.svg (or "
         "--svg)");
   }
+  if (args.full_precision && args.svg.empty()) {
+    throw UsageError(
+        "--full-precision writes the SVG picture's coordinates exactly: it needs -o FILE.svg "
+        "(or --svg)");
+  }
   // A sun-hours map's pixels are its pieces' (picture_raster.h): no view method.
   if (!args.sun_hours.path.empty()) {
     for (const char* option : {"--shadows", "--resolution"}) {
@@ -227,14 +233,15 @@ void run_render(const RenderArgs& given) {
       // One map, as SVG and as its pixels (picture_raster.h).
       progress.stage("drawing the sun-hours map");
       const Picture picture = render_sun_hours(shadowed, *map->path, map->bands, camera, options);
-      if (!args.svg.empty()) svg = svg_document(picture, {.pieces = args.pieces});
+      if (!args.svg.empty())
+        svg = svg_document(picture, {.pieces = args.pieces, .full_precision = args.full_precision});
       if (!args.png.empty()) png = png_bytes(rasterize_picture(picture));
     } else {
       if (!args.svg.empty()) {
         progress.stage("drawing " + args.svg);
         const Picture picture = args.by_light ? render_by_light(shadowed, camera, options)
                                               : render(shadowed, camera, options);
-        svg = svg_document(picture, {.pieces = args.pieces});
+        svg = svg_document(picture, {.pieces = args.pieces, .full_precision = args.full_precision});
       }
       if (!args.png.empty()) {
         progress.stage("drawing " + args.png);
@@ -345,6 +352,10 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
                    "with an SVG picture: one path per piece, with its face id (data-face) and its "
                    "light set or hours, instead of one path per colour (the faces then named by "
                    "the outlines)");
+  command.add_flag("--full-precision", args.full_precision,
+                   "with an SVG picture: every coordinate of the paths per colour and the "
+                   "outlines as the double it is (the shortest decimal that reads back to it), "
+                   "instead of to 1/1000 of a pixel; one path per piece always has them so");
 }
 
 }  // namespace

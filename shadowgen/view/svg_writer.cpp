@@ -5,10 +5,12 @@
 #include <charconv>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <string_view>
 #include <vector>
 
 #include "detail/colour_hex.h"
+#include "detail/path_data.h"
 #include "detail/xml_text.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/output/atomic_file.h"
@@ -26,16 +28,6 @@ void append_attribute_value(std::string& out, std::string_view text) {
 }
 
 void append_number(std::string& out, double value) { append_shortest(out, value); }
-
-void append_loop(std::string& out, const clipper::Loop2& loop) {
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    out += i == 0 ? (out.back() == '"' ? "M" : " M") : (i == 1 ? " L" : " ");
-    append_shortest(out, loop[i].x);
-    out += ',';
-    append_shortest(out, loop[i].y);
-  }
-  out += " Z";
-}
 
 // The legend's layout, in pixels: a strip of kLegendWidth to the right of the picture.
 constexpr int kLegendWidth = 220;
@@ -94,9 +86,15 @@ void append_legend(std::string& out, const Legend& legend, int left) {
   out += "</g>\n";
 }
 
-void append_path_data(std::string& out, const clipper::PolygonWithHoles2& shape) {
-  append_loop(out, shape.outer);
-  for (const clipper::Loop2& hole : shape.holes) append_loop(out, hole);
+// A map's shapes (paths per colour, outlines) on the grid of detail/path_data.h, or exact
+// with SvgOptions::full_precision.
+void append_map_path_data(std::string& out, std::span<const clipper::PolygonWithHoles2> shapes,
+                          const SvgOptions& options) {
+  if (options.full_precision) {
+    detail::append_exact_path_data(out, shapes);
+  } else {
+    detail::append_grid_path_data(out, shapes);
+  }
 }
 
 // Opens the group of layer `layer` where it differs from the one open, closing that.
@@ -117,7 +115,7 @@ void append_pieces(std::string& out, const std::vector<Piece>& pieces) {
   for (const Piece& piece : pieces) {
     switch_layer(out, open_layer, piece.layer, piece.light_set);
     out += "<path d=\"";
-    append_path_data(out, piece.shape);
+    detail::append_exact_path_data(out, {&piece.shape, 1});
     out += "\" fill=\"";
     append_colour(out, piece.colour);
     out += "\" fill-rule=\"evenodd\" data-face=";
@@ -144,12 +142,13 @@ void append_pieces(std::string& out, const std::vector<Piece>& pieces) {
 // background, at most ((1 − h)/2)² = 1/64 for h = 3/4 (1/4 without a stroke; rsvg's
 // pictures in the tests show at most 0.5 %). The layers, which a viewer adds up, are not
 // stroked (a stroke would be added twice).
-void append_colour_paths(std::string& out, const std::vector<ColourPath>& paths) {
+void append_colour_paths(std::string& out, const std::vector<ColourPath>& paths,
+                         const SvgOptions& options) {
   std::size_t open_layer = 0;
   for (const ColourPath& path : paths) {
     switch_layer(out, open_layer, path.layer, path.light_set);
     out += "<path d=\"";
-    for (const clipper::PolygonWithHoles2& polygon : path.shape) append_path_data(out, polygon);
+    append_map_path_data(out, path.shape, options);
     out += "\" fill=\"";
     append_colour(out, path.colour);
     out += '"';
@@ -172,16 +171,15 @@ void append_colour_paths(std::string& out, const std::vector<ColourPath>& paths)
   if (open_layer != 0) out += "</g>\n";
 }
 
-void append_outlines(std::string& out, const std::vector<Outline>& outlines) {
+void append_outlines(std::string& out, const std::vector<Outline>& outlines,
+                     const SvgOptions& options) {
   if (outlines.empty()) return;
   out += "<g fill=\"none\" stroke=\"" + std::string(kOutlineColour) + "\" stroke-width=\"" +
          std::string(kOutlineWidth) + "\" stroke-linejoin=\"round\" data-outlines=\"\">\n";
   for (const Outline& outline : outlines) {
     if (outline.shape.empty()) continue;
     out += "<path d=\"";
-    for (const clipper::PolygonWithHoles2& polygon : outline.shape) {
-      append_path_data(out, polygon);
-    }
+    append_map_path_data(out, outline.shape, options);
     out += '"';
     if (outline.object.empty()) {
       out += " data-face=";
@@ -285,9 +283,9 @@ std::string svg_document(const Picture& picture, const SvgOptions& options) {
   if (options.pieces) {
     append_pieces(out, picture.pieces);
   } else {
-    append_colour_paths(out, colour_paths(picture));
+    append_colour_paths(out, colour_paths(picture), options);
   }
-  append_outlines(out, picture.outlines);
+  append_outlines(out, picture.outlines, options);
   if (picture.north) append_north_arrow(out, *picture.north, picture.width);
   if (picture.scale_bar) append_scale_bar(out, *picture.scale_bar, picture.height);
   if (legend) append_legend(out, picture.legend, picture.width);

@@ -6,7 +6,8 @@
 //   <svg xmlns="http://www.w3.org/2000/svg" version="1.1" width="W" height="H"
 //        viewBox="0 0 W H" data-pixels-per-unit="S">       the last for orthographic views
 //   <rect x="0" y="0" width="W" height="H" fill="#rrggbb"/>  the background
-//   <path d="M x,y L x,y ... Z M ... Z" fill="#rrggbb" stroke="#rrggbb" stroke-width="1.5"
+//   <path d="M x,y l dx,dy h dx v dy ... z m ... z" fill="#rrggbb" stroke="#rrggbb"
+//   stroke-width="1.5"
 //         stroke-linejoin="round" fill-rule="evenodd" data-lights="sun+lamp"/>
 //                                       one per colour (colour_paths.h), in picture order,
 //                                       its pieces joined where they touch, stroked in its
@@ -46,9 +47,13 @@
 // (Browsers blend so; a viewer that does not, Inkscape for one, shows each layer's own
 // colours over the base: hide the layers but one to see what that light reaches.)
 //
-// A path holds the piece's outer loop and its holes as closed subpaths; even-odd filling
-// makes the holes. Coordinates are pixels, y down, printed in the shortest form that reads
-// back to the same double (std::to_chars), so the picture is exact at any zoom. A piece
+// A path holds its polygons' outer loops and holes as closed subpaths; even-odd filling
+// makes the holes. Coordinates are pixels, y down. The paths per colour and the outlines
+// have them on a grid of 1/1000 pixel, relative and with no more digits than they need
+// (detail/path_data.h: a map of a district in a few megabytes, each vertex within 0.0005
+// pixel of the picture's in x and in y, and the shape's area within the bound it states);
+// with SvgOptions::full_precision, and always in one path per piece, in the shortest form
+// that reads back to the same double (std::to_chars), so the picture is exact at any zoom. A piece
 // seen from its face's back side also carries data-side="back". Attribute values are
 // XML-escaped; bytes that are not valid UTF-8 or not allowed in XML become U+FFFD.
 
@@ -63,6 +68,9 @@ struct SvgOptions {
   // One path per piece, with its face (data-face) and its light set or hours, instead of
   // one path per colour.
   bool pieces = false;
+  // The paths per colour and the outlines with every coordinate as the double it is, not
+  // on the grid of 1/1000 pixel.
+  bool full_precision = false;
 };
 
 std::string svg_document(const Picture& picture, const SvgOptions& options = {});

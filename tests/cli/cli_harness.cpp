@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 namespace shadowgen::test {
@@ -160,21 +161,60 @@ std::vector<ReportRow> parse_report(const std::string& csv) {
 
 std::vector<std::vector<std::pair<double, double>>> svg_path_loops(const std::string& d) {
   std::vector<std::vector<std::pair<double, double>>> loops;
-  std::vector<double> numbers;
-  auto flush = [&] {
-    if (numbers.empty()) return;
-    loops.emplace_back();
-    for (std::size_t i = 0; i + 1 < numbers.size(); i += 2) {
-      loops.back().emplace_back(numbers[i], numbers[i + 1]);
+  double x = 0.0, y = 0.0;              // the current point
+  double start_x = 0.0, start_y = 0.0;  // the subpath's first point
+  char command = '\0';
+  std::vector<double> numbers;  // those of the command being read
+  const auto take = [&]() {     // the command's numbers read so far, if it has them all
+    const bool pair = command != 'h' && command != 'H' && command != 'v' && command != 'V';
+    if (numbers.size() < (pair ? 2u : 1u)) return;
+    const bool relative = command >= 'a' && command <= 'z';
+    switch (command) {
+      case 'M':
+      case 'm':
+        x = (relative ? x : 0.0) + numbers[0];
+        y = (relative ? y : 0.0) + numbers[1];
+        start_x = x;
+        start_y = y;
+        loops.emplace_back();
+        command = relative ? 'l' : 'L';  // the pairs after a move are lines
+        break;
+      case 'L':
+      case 'l':
+        x = (relative ? x : 0.0) + numbers[0];
+        y = (relative ? y : 0.0) + numbers[1];
+        break;
+      case 'H':
+      case 'h':
+        x = (relative ? x : 0.0) + numbers[0];
+        break;
+      case 'V':
+      case 'v':
+        y = (relative ? y : 0.0) + numbers[0];
+        break;
+      default:
+        ADD_FAILURE() << "a number after command '" << command << "'";
+        numbers.clear();
+        return;
     }
     numbers.clear();
+    if (!loops.empty()) loops.back().emplace_back(x, y);
   };
   const char* p = d.data();
   const char* end = p + d.size();
   while (p < end) {
-    if (*p == 'M') flush();
-    if (*p == 'M' || *p == 'L' || *p == 'Z' || *p == ' ' || *p == ',') {
+    if (*p == ' ' || *p == ',') {
       ++p;
+      continue;
+    }
+    if (std::string_view("MmLlHhVvZz").find(*p) != std::string_view::npos) {
+      if (!numbers.empty()) ADD_FAILURE() << "a command cut short before '" << *p << "'";
+      numbers.clear();
+      command = *p++;
+      if (command == 'Z' || command == 'z') {
+        x = start_x;
+        y = start_y;
+      }
       continue;
     }
     double v = 0.0;
@@ -185,8 +225,12 @@ std::vector<std::vector<std::pair<double, double>>> svg_path_loops(const std::st
     }
     numbers.push_back(v);
     p = next;
+    take();
   }
-  flush();
+  // A closed loop does not repeat its first point.
+  for (auto& loop : loops) {
+    if (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
+  }
   return loops;
 }
 

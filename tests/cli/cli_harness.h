@@ -68,12 +68,13 @@ struct ReportRow {
 // (the row is skipped).
 std::vector<ReportRow> parse_report(const std::string& csv);
 
-// Area of the region of an SVG <path>'s data `d` ("M x,y L x,y ... Z M ..."): its first
-// subpath is the outer loop, the others holes. A number it cannot read fails the test.
+// Area of the region of an SVG <path>'s data `d` ("M x,y L x,y ... Z M ...", or relative:
+// "M x y h dx v dy l dx dy z m ..."): its first subpath is the outer loop, the others
+// holes. A number it cannot read fails the test.
 double svg_path_area(const std::string& d);
 
-// The subpaths of an SVG <path>'s data `d`, each a loop of (x, y); a number it cannot read
-// fails the test.
+// The subpaths of an SVG <path>'s data `d` (polygons: M, L, H, V, Z and their relative
+// forms), each a loop of (x, y); a number it cannot read fails the test.
 std::vector<std::vector<std::pair<double, double>>> svg_path_loops(const std::string& d);
 
 // Area of a path of several polygons with holes (a picture's path per colour): the sum of

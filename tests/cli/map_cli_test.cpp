@@ -87,6 +87,43 @@ void ExpectAreasNear(const std::map<std::string, double>& drawn,
   }
 }
 
+// How far a map's grid (1/1000 pixel, shadowgen/view/detail/path_data.h) may move each
+// label's area, from the exact paths (render --full-precision): each vertex moves by at
+// most δ = √2 / 2000 pixel, so a loop of n vertices and perimeter P by at most
+// δ·P + n·δ²/2; in scene units, over the scale squared.
+std::map<std::string, double> grid_bounds_by_label(const std::vector<FillPath>& exact,
+                                                   double scale) {
+  const double delta = std::sqrt(2.0) / 2000.0;
+  std::map<std::string, double> bounds;
+  for (const FillPath& path : exact) {
+    for (const auto& loop : svg_path_loops(path.d)) {
+      double perimeter = 0.0;
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const auto& [x0, y0] = loop[i];
+        const auto& [x1, y1] = loop[(i + 1) % loop.size()];
+        perimeter += std::hypot(x1 - x0, y1 - y0);
+      }
+      bounds[path.label] +=
+          (delta * perimeter + 0.5 * static_cast<double>(loop.size()) * delta * delta) /
+          (scale * scale);
+    }
+  }
+  return bounds;
+}
+
+// The map's areas on the grid against the database's: within the grid's bound (above) and
+// the exact paths' 1e-9.
+void ExpectAreasWithin(const std::map<std::string, double>& drawn,
+                       const std::map<std::string, double>& database,
+                       const std::map<std::string, double>& bounds) {
+  ASSERT_EQ(drawn.size(), database.size());
+  for (const auto& [label, area] : database) {
+    ASSERT_EQ(drawn.count(label), 1u) << label;
+    EXPECT_LE(std::abs(drawn.at(label) - area), bounds.at(label) + 1e-9 * area)
+        << label << ": drawn " << drawn.at(label) << ", database " << area;
+  }
+}
+
 // The first match of `pattern`'s group 1 in `text`, or "" where none.
 std::string first_match(const std::string& text, const std::string& pattern) {
   std::smatch m;
@@ -132,10 +169,14 @@ TEST_F(MapCli, PathsPerColourHoldTheDatabasesAreaOfEachLightSetBeforeAndAfterMer
     database["sun"] += row.lit_area;
     database["shadow"] += row.area - row.lit_area;
   }
+  // Exact coordinates: the database's areas to 1e-9; on the grid, within its bound.
+  const std::vector<FillPath> exact = fill_paths(top_view(db, {"--full-precision"}), "data-lights");
+  EXPECT_EQ(exact.size(), 2u);  // one path per colour: the horizontal faces are all alike
+  ExpectAreasNear(areas_by_label(exact, 20), database);
   const std::string merged = top_view(db, {});
   const std::vector<FillPath> paths = fill_paths(merged, "data-lights");
-  EXPECT_EQ(paths.size(), 2u);  // one path per colour: the horizontal faces are all alike
-  ExpectAreasNear(areas_by_label(paths, 20), database);
+  EXPECT_EQ(paths.size(), 2u);
+  ExpectAreasWithin(areas_by_label(paths, 20), database, grid_bounds_by_label(exact, 20));
   const std::string pieces = top_view(db, {"--pieces"});
   const std::vector<FillPath> piece_paths = fill_paths(pieces, "data-lights");
   EXPECT_GT(piece_paths.size(), paths.size());
@@ -181,9 +222,12 @@ TEST_F(MapCli, PathsPerColourHoldTheDatabasesAreaOfEachHourBandBeforeAndAfterMer
       if (at_least[b] - at_least[b + 1] > 0.0) database[labels[b]] += at_least[b] - at_least[b + 1];
     }
   }
+  const std::vector<FillPath> exact =
+      fill_paths(top_view(db, {"--sun-hours", "day", "--full-precision"}), "data-band");
+  ExpectAreasNear(areas_by_label(exact, 20), database);
   const std::string merged = top_view(db, {"--sun-hours", "day"});
   const std::vector<FillPath> paths = fill_paths(merged, "data-band");
-  ExpectAreasNear(areas_by_label(paths, 20), database);
+  ExpectAreasWithin(areas_by_label(paths, 20), database, grid_bounds_by_label(exact, 20));
   std::set<std::string> fills;
   for (const FillPath& path : paths) EXPECT_TRUE(fills.insert(path.fill).second) << path.fill;
 
@@ -422,6 +466,14 @@ TEST_F(MapCli, OptionsAMapCannotTakeAreUsageErrors) {
                              0),
             0u)
       << pieces.err;
+  const Outcome full =
+      run({"render", db.string(), "--view", "main", "-o", png, "--full-precision"});
+  EXPECT_EQ(full.code, 2);
+  EXPECT_EQ(full.err.rfind("shadowgen: --full-precision writes the SVG picture's coordinates "
+                           "exactly: it needs -o FILE.svg (or --svg)\n",
+                           0),
+            0u)
+      << full.err;
   EXPECT_FALSE(fs::exists(png));
   EXPECT_FALSE(fs::exists(svg));
 }

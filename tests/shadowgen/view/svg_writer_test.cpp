@@ -229,16 +229,22 @@ Picture three_squares() {
 
 TEST(SvgWriter, PiecesOfOneColourThatTouchAreOnePathStrokedInItsColour) {
   const std::string svg = svg_document(three_squares());
-  EXPECT_NE(svg.find("<path d=\"M10,10 L12,10 12,11 10,11 Z\" fill=\"#ff0000\" "
+  // On the grid, relative (detail/path_data.h).
+  EXPECT_NE(svg.find("<path d=\"M10 10h2v1h-2z\" fill=\"#ff0000\" "
                      "stroke=\"#ff0000\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
                      "fill-rule=\"evenodd\" data-lights=\"sun\"/>\n"),
             std::string::npos)
       << svg;
-  EXPECT_NE(svg.find("<path d=\"M12,10 L13,10 13,11 12,11 Z\" fill=\"#0000ff\" "
+  EXPECT_NE(svg.find("<path d=\"M12 10h1v1h-1z\" fill=\"#0000ff\" "
                      "stroke=\"#0000ff\" stroke-width=\"1.5\" stroke-linejoin=\"round\" "
                      "fill-rule=\"evenodd\" data-lights=\"shadow\"/>\n"),
             std::string::npos)
       << svg;
+  // With full precision, each coordinate as the double it is, absolute.
+  const std::string exact = svg_document(three_squares(), {.full_precision = true});
+  EXPECT_NE(exact.find("<path d=\"M10,10 L12,10 12,11 10,11 Z\" fill=\"#ff0000\" "),
+            std::string::npos)
+      << exact;
   // No face on a path of several faces: the outlines name them.
   EXPECT_EQ(svg.find("data-face"), std::string::npos) << svg;
   Picture sun_hours = three_squares();
@@ -261,8 +267,8 @@ TEST(SvgWriter, OutlinesNorthArrowAndScaleBarAreDrawnOverTheFills) {
   const std::string svg = svg_document(picture);
   const std::size_t outlines = svg.find(
       "<g fill=\"none\" stroke=\"#262626\" stroke-width=\"0.75\" stroke-linejoin=\"round\" "
-      "data-outlines=\"\">\n<path d=\"M10,10 L11,10 11,11 10,11 Z\" data-face=\"a\"/>\n"
-      "<path d=\"M11,10 L13,10 13,11 11,11 Z\" data-object=\"block 7\"/>\n</g>\n");
+      "data-outlines=\"\">\n<path d=\"M10 10h1v1h-1z\" data-face=\"a\"/>\n"
+      "<path d=\"M11 10h2v1h-2z\" data-object=\"block 7\"/>\n</g>\n");
   ASSERT_NE(outlines, std::string::npos) << svg;
   EXPECT_GT(outlines, svg.rfind("data-lights"));
   // The arrow in the top right corner of the 64 × 48 picture, turned about its centre
