@@ -14,6 +14,7 @@
 #                   scenes/ where none is named
 #   every_scene     true where no name was given, else false
 #   sun_hours_maps  the scenes whose sun path gets a sun-hours map, and the path's id
+#   sun_hours_plans those of them whose map is also drawn as a plan, and its centre
 # and gives scene_file NAME (the scene's file) and databases_folder FOLDER (FOLDER made,
 # or where FOLDER is empty a temporary folder removed when the script ends). A usage
 # mistake prints the usage line and exits 2; a missing executable or scene exits 1.
@@ -21,6 +22,10 @@
 examples=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
 declare -A sun_hours_maps=([garden]=march21 [roof]=dec21 [district]=march21)
+# The scenes whose sun-hours map is also drawn as a plan, from straight above in an
+# orthographic view (north arrow and scale bar): the point X,Y,Z the plan looks down on,
+# the middle of the scene's box.
+declare -A sun_hours_plans=([garden]=5,9,0 [roof]=5,2.5,0)
 
 example_usage() {
   local line="usage: $0 SHADOWGEN"

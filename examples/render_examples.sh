@@ -2,7 +2,8 @@
 # Makes the example pictures: for each scene in examples/scenes, generate its shadowed
 # database and draw its `main` view to <name>.svg; for a scene listed in sun_hours_maps
 # (example_args.sh), also the sun-hours map of its sun path from that view,
-# <name>-sun-hours.svg (render --sun-hours). The one way the pictures are made: the build
+# <name>-sun-hours.svg (render --sun-hours), and for one in sun_hours_plans that map as a
+# plan from straight above, <name>-sun-hours-plan.svg (render --ortho). The one way the pictures are made: the build
 # target `example_pictures` runs it into examples/, and the end-to-end test
 # (tests/cli/examples_cli_test.cpp) runs it into a temporary folder and compares the bytes
 # with the pictures checked in.
@@ -37,5 +38,11 @@ for name in "${names[@]}"; do
     "$shadowgen" render "$database" --view main --sun-hours "${sun_hours_maps[$name]}" \
       --svg "$pictures/$name-sun-hours.svg"
     echo "$name: $pictures/$name-sun-hours.svg"
+  fi
+  if [[ -n ${sun_hours_plans[$name]:-} ]]; then
+    centre=${sun_hours_plans[$name]}
+    "$shadowgen" render "$database" --sun-hours "${sun_hours_maps[$name]}" --ortho \
+      --target "$centre" --eye "${centre%,*},1000" --svg "$pictures/$name-sun-hours-plan.svg"
+    echo "$name: $pictures/$name-sun-hours-plan.svg"
   fi
 done

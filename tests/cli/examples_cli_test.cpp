@@ -67,10 +67,13 @@ std::vector<std::string> picture_names() {
   return names;
 }
 
-// The scene a picture is of: the picture's name, less "-sun-hours" for a sun-hours map.
+// The scene a picture is of: the picture's name, less "-sun-hours" for a sun-hours map
+// and "-sun-hours-plan" for its plan.
 std::string scene_of(const std::string& picture) {
-  const std::string map = "-sun-hours";
-  return picture.ends_with(map) ? picture.substr(0, picture.size() - map.size()) : picture;
+  for (const std::string map : {"-sun-hours-plan", "-sun-hours"}) {
+    if (picture.ends_with(map)) return picture.substr(0, picture.size() - map.size());
+  }
+  return picture;
 }
 
 // The pictures checked in of the scene `name`, as file names, sorted.
@@ -170,10 +173,22 @@ TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
        {"chairs", "courtyard", "garden", "house", "pergola", "roof", "room"}) {
     EXPECT_TRUE(std::find(names.begin(), names.end(), expected) != names.end()) << expected;
   }
-  // The garden's sun path of 21 March also has its sun-hours map.
+  // The garden's sun path of 21 March also has its sun-hours map, and that map as a plan.
   EXPECT_EQ(pictures_of("garden"),
-            (std::vector<std::string>{"garden-sun-hours.svg", "garden.svg"}));
-  EXPECT_EQ(pictures_of("roof"), (std::vector<std::string>{"roof-sun-hours.svg", "roof.svg"}));
+            (std::vector<std::string>{"garden-sun-hours-plan.svg", "garden-sun-hours.svg",
+                                      "garden.svg"}));
+  EXPECT_EQ(pictures_of("roof"), (std::vector<std::string>{"roof-sun-hours-plan.svg",
+                                                           "roof-sun-hours.svg", "roof.svg"}));
+  // A plan is seen from straight above: it has the site's north arrow and, being
+  // orthographic, a scale bar; a perspective map has the arrow and no bar.
+  for (const std::string name : {"garden", "roof"}) {
+    const std::string plan = contents(kExamples / (name + "-sun-hours-plan.svg"));
+    EXPECT_NE(plan.find("data-north-arrow"), std::string::npos) << name;
+    EXPECT_NE(plan.find("data-scale-bar="), std::string::npos) << name;
+    const std::string map = contents(kExamples / (name + "-sun-hours.svg"));
+    EXPECT_NE(map.find("data-north-arrow"), std::string::npos) << name;
+    EXPECT_EQ(map.find("data-scale-bar="), std::string::npos) << name;
+  }
   for (const std::string& name : names) {
     const nlohmann::json scene =
         nlohmann::json::parse(contents(kExamples / "scenes" / (name + ".json")));
