@@ -19,6 +19,7 @@
 #include "cli/run_progress.h"
 #include "shadowgen/groups/face_groups.h"
 #include "shadowgen/output/atomic_file.h"
+#include "shadowgen/sky/sky_subdivision.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -41,6 +42,7 @@ struct ReportArgs {
   std::vector<double> thresholds{2.0};  // sun-hours: hours the areas are counted at
   std::string weather;                  // irradiation: an EPW file, else the scene's
   std::vector<std::string> group_by;    // groups/face_groups.h rules; none: the scene's groups
+  int sky_subdivisions = api::SkyReportSettings{}.subdivisions;  // sky: Reinhart MF:N (--sky)
   ReadingArgs reading;
   MethodArgs method;  // a scene's (LoadOptions::method)
 };
@@ -76,10 +78,39 @@ void check_groups(const api::Scene& scene, const ReportArgs& args) {
   }
 }
 
+// The sky view factors of the input's scene (a database's, as it holds it): its own lights
+// are not generated, the sky's patches are.
+std::string sky_report_text(const ReportArgs& args, const RunFiles& files) {
+  api::LoadSettings settings = load_settings(args.reading, files);
+  RunProgress progress(args.input, progress_stream(args.reading.quiet));
+  progress.watch(settings);
+  const std::string report =
+      api::sky_report(args.input, settings, {args.sky_subdivisions, args.csv_safe});
+  progress.finish();
+  return report;
+}
+
+void write_report(const ReportArgs& args, const std::string& report) {
+  if (args.output.empty()) {
+    std::cout << report << std::flush;
+    if (!std::cout) throw std::runtime_error("cannot write the report to standard output");
+  } else {
+    write_file_atomically(args.output, report);
+  }
+}
+
 void run_report(const ReportArgs& args) {
   RunFiles files{{args.input}, {}};
   if (!args.weather.empty()) files.reads.push_back(args.weather);
   if (!args.output.empty()) files.writes.push_back({"-o", args.output});
+  if (args.format == "sky") {
+    if (args.method.name != "exact") {
+      throw UsageError("--format sky takes the exact lit areas of every sky patch; --method " +
+                       args.method.name + " does not apply");
+    }
+    write_report(args, sky_report_text(args, files));
+    return;
+  }
   api::LoadSettings settings = load_settings(args.reading, files);
   // From a scene, a sun path's regions are made only for the report that reads them.
   settings.generate.sun_hours_regions = is_sun_hours(args.format);
@@ -112,12 +143,7 @@ void run_report(const ReportArgs& args) {
   tbb::task_arena arena(args.reading.threads ? static_cast<int>(args.reading.threads)
                                              : tbb::info::default_concurrency());
   const std::string report = arena.execute([&] { return api::report(shadows, report_settings); });
-  if (args.output.empty()) {
-    std::cout << report << std::flush;
-    if (!std::cout) throw std::runtime_error("cannot write the report to standard output");
-  } else {
-    write_file_atomically(args.output, report);
-  }
+  write_report(args, report);
 }
 
 }  // namespace
@@ -136,9 +162,11 @@ Command add_report_command(CLI::App& app) {
                    "(the sunlit fraction of every face at every time step of one sun path, "
                    "as EnergyPlus's Schedule:File:Shading reads it) or sun-hours-table (per "
                    "sun path and group, or face, the share of its area with at least each "
-                   "--threshold, passing at 50 %: the BRE 209 test)")
-      ->check(CLI::IsMember(
-          {"csv", "json", "table", "sun-hours", "sun-hours-table", "irradiation", "energyplus"}));
+                   "--threshold, passing at 50 %: the BRE 209 test) or sky (per face: the sky view "
+                   "factor with exact obstruction and the view factor of the ground, from the "
+                   "sky's patches as lights, --sky)")
+      ->check(CLI::IsMember({"csv", "json", "table", "sun-hours", "sun-hours-table", "irradiation",
+                             "energyplus", "sky"}));
   CLI::Option* group_by =
       command
           ->add_option("--group-by", args->group_by,
@@ -155,6 +183,23 @@ Command add_report_command(CLI::App& app) {
       command->add_option("--weather", args->weather,
                           "with --format irradiation: EnergyPlus weather file (EPW) whose hourly "
                           "direct normal irradiance is used (default: the scene's \"weather\")");
+  CLI::Option* sky_option =
+      command
+          ->add_option_function<std::string>(
+              "--sky",
+              [args](const std::string& name) {
+                args->sky_subdivisions = *sky::subdivisions_named(name);
+              },
+              "with --format sky: the sky's patches, tregenza (145) or reinhart:N (Reinhart's "
+              "MF:N, 144 N² + 1 patches, N from 1 to 64; default " +
+                  sky::subdivision_name(api::SkyReportSettings{}.subdivisions) + ")")
+          ->check(CLI::Validator(
+              [](std::string& name) -> std::string {
+                return sky::subdivisions_named(name)
+                           ? ""
+                           : "'" + name + "' names no sky: tregenza or reinhart:N, N from 1 to 64";
+              },
+              "tregenza|reinhart:N", "sky"));
   CLI::Option* threshold =
       command
           ->add_option("--threshold", args->thresholds,
@@ -178,7 +223,10 @@ Command add_report_command(CLI::App& app) {
   add_reading_options(*command, args->reading, /*progress=*/true);
   add_method_options(*command, args->method);
   // Run at the end of parsing, so that the error is reported as a parse error is.
-  command->callback([args, top, csv_safe, threshold, weather, group_by] {
+  command->callback([args, top, csv_safe, threshold, weather, group_by, sky_option] {
+    if (sky_option->count() > 0 && args->format != "sky") {
+      throw CLI::ValidationError("--sky", "applies only to --format sky");
+    }
     if (weather->count() > 0 && args->format != "irradiation") {
       throw CLI::ValidationError("--weather", "applies only to --format irradiation");
     }
@@ -203,9 +251,9 @@ Command add_report_command(CLI::App& app) {
       throw CLI::ValidationError("--top", "applies only to --format table");
     }
     if (csv_safe->count() > 0 && args->format != "csv" && args->format != "sun-hours" &&
-        args->format != "irradiation") {
+        args->format != "irradiation" && args->format != "sky") {
       throw CLI::ValidationError("--csv-safe",
-                                 "applies only to --format csv, sun-hours and irradiation");
+                                 "applies only to --format csv, sun-hours, irradiation and sky");
     }
   });
   return {command, [args] { run_report(*args); }};

@@ -16,8 +16,12 @@
 #include "shadowgen/output/irradiation_report.h"
 #include "shadowgen/output/obj_export.h"
 #include "shadowgen/output/report.h"
+#include "shadowgen/output/sky_report.h"
 #include "shadowgen/output/sun_hours_report.h"
 #include "shadowgen/output/sun_hours_table.h"
+#include "shadowgen/pipeline/load_shadowed.h"
+#include "shadowgen/sky/sky_exposure.h"
+#include "shadowgen/sky/sky_lights.h"
 #include "shadowgen/view/camera.h"
 #include "shadowgen/view/render.h"
 #include "shadowgen/view/svg_writer.h"
@@ -101,6 +105,36 @@ void require_exact(const ShadowedScene& shadowed, const std::string& what) {
 }
 
 }  // namespace
+
+static_assert(SkyReportSettings{}.subdivisions == sky::kDefaultSubdivisions,
+              "the library's default sky is the sky room's");
+
+std::string sky_report(const std::string& path, const LoadSettings& settings,
+                       const SkyReportSettings& sky_settings) {
+  return detail::translated([&] {
+    LoadOptions options;
+    options.strict = settings.read.strict;
+    options.verbose = settings.read.verbose;
+    options.on_warning = settings.read.on_warning;
+    const shadowgen::Scene scene = load_scene(path, options);
+    sky::SkyOptions sky_options;
+    sky_options.subdivisions = sky_settings.subdivisions;
+    sky_options.threads = settings.generate.threads;
+    if (settings.on_scene) {
+      settings.on_scene(detail::scene_view(
+          sky::sky_scene(scene, sky::reinhart_patches(sky_options.subdivisions))));
+    }
+    if (settings.generate.on_light_done) {
+      sky_options.on_light_done = [&settings](std::size_t patch, const LightStats& stats) {
+        settings.generate.on_light_done(
+            {patch, stats.faces_considered, stats.lit_polygons, stats.seconds});
+      };
+    }
+    const sky::SkyExposure exposure = sky::sky_exposure(scene, sky_options);
+    return sky_view_factor_csv(scene, exposure,
+                               sky_settings.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
+  });
+}
 
 std::string report(const Shadows& shadows, const ReportSettings& settings) {
   return detail::translated([&] { return report_text(detail::model(shadows), settings); });

@@ -45,6 +45,19 @@ struct ReportSettings {
 // The report's text, as `shadowgen report` writes it, byte for byte.
 std::string report(const Shadows& shadows, const ReportSettings& settings = {});
 
+struct SkyReportSettings {
+  int subdivisions = 8;   // Reinhart MF:N (1: Tregenza's 145 patches), 1 to 64
+  bool csv_safe = false;  // a ' before ids a spreadsheet would run as formulas
+};
+
+// `shadowgen report --format sky` (docs/sky.md), byte for byte: every face's sky view
+// factor with exact obstruction and its ground view factor, as CSV, for the scene at `path`
+// or the scene a database holds; neither's own lights are generated, the sky's patches
+// are, one light each. Of `settings`: read; generate.threads and generate.on_light_done
+// (light k is patch k); on_scene, called with the scene whose lights are the patches.
+std::string sky_report(const std::string& path, const LoadSettings& settings = {},
+                       const SkyReportSettings& sky = {});
+
 // The shadowed database (shadowgen-shadowed/1), which load() reads back.
 void write_database(const Shadows& shadows, const std::string& path);
 

@@ -144,6 +144,13 @@ std::vector<std::string> csv_fields(const std::string& line) {
   return fields;
 }
 
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) rows.push_back(csv_fields(line));
+  return rows;
+}
+
 std::vector<ReportRow> parse_report(const std::string& csv) {
   std::vector<ReportRow> rows;
   std::istringstream in(csv);

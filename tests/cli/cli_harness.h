@@ -58,6 +58,10 @@ std::vector<std::string> sorted_names(const fs::path& folder, const fs::path& le
 // One CSV record split into fields, with RFC 4180 quoting undone.
 std::vector<std::string> csv_fields(const std::string& line);
 
+// Every line of `text` split into fields as csv_fields splits one (no field holds a line
+// break).
+std::vector<std::vector<std::string>> csv_rows(const std::string& text);
+
 // A row of `shadowgen report`'s CSV.
 struct ReportRow {
   std::string face, light;

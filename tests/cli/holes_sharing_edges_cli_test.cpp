@@ -9,7 +9,6 @@
 
 #include <map>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,13 +47,6 @@ const std::string kPlain = scene_with(R"(
 const std::vector<std::string> kPieces = {"left", "right", "top"};
 constexpr double kArea = 30.0 - 5.0 - 2.0;
 constexpr double kTolerance = 1e-9;
-
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) rows.push_back(csv_fields(line));
-  return rows;
-}
 
 class HolesSharingEdgesCli : public CliFolderTest<> {
  protected:
