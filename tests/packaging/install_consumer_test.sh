@@ -5,12 +5,17 @@
 #  - examples/library, copied out of the source tree and built against the prefix alone
 #    (CMAKE_PREFIX_PATH), prints the report CSV of an example scene byte for byte as
 #    `shadowgen report` does;
-#  - a one-file program built with `pkg-config --cflags --libs shadowgen` runs.
-# Usage: install_consumer_test.sh SOURCE_DIR BUILD_DIR VERSION
+#  - a one-file program built with `pkg-config --cflags --libs shadowgen` runs;
+#  - where the Python module is built (PYTHON and its folder under the prefix given), it
+#    imports from the prefix alone and examples/python/lit_areas.py, copied out of the
+#    source tree, prints the same CSV as `shadowgen report`.
+# Usage: install_consumer_test.sh SOURCE_DIR BUILD_DIR VERSION [PYTHON PYTHON_DIR]
 set -euo pipefail
 source_dir=$(realpath "$1")
 build_dir=$(realpath "$2")
 version=$3
+python=${4:-}
+python_dir=${5:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
@@ -60,4 +65,18 @@ flags=$(PKG_CONFIG_PATH="$prefix/$libdir/pkgconfig" pkg-config --cflags --libs s
 # shellcheck disable=SC2086
 c++ -o "$work/version" "$work/version.cpp" $flags
 [[ $("$work/version") == "$version" ]] || fail "the pkg-config program's version"
-echo "install, consumer and pkg-config: ok"
+
+# The Python module, from the prefix alone (-s: no user site; the build folder is not on
+# the path).
+if [[ -z $python ]]; then
+  echo "install, consumer and pkg-config: ok (no Python module built)"
+  exit 0
+fi
+module_dir=$prefix/$python_dir
+find "$module_dir" -maxdepth 1 -name 'shadowgen.*.so' | grep -q . || fail "no Python module in $python_dir"
+[[ $(PYTHONPATH=$module_dir "$python" -s -c 'import shadowgen; print(shadowgen.__file__)') == "$module_dir"/* ]] ||
+  fail "the module imported is not the prefix's"
+cp "$source_dir/examples/python/lit_areas.py" "$work/lit_areas.py"
+PYTHONPATH=$module_dir "$python" -s "$work/lit_areas.py" "$scene" > "$work/python.csv"
+cmp "$work/python.csv" "$work/command.csv" || fail "the Python example's CSV differs from shadowgen report's"
+echo "install, consumer, pkg-config and Python module: ok"
