@@ -1,9 +1,6 @@
 // `shadowgen report`: area, lit area and lit fraction per (face, light), and over groups of
 // faces (shadowgen/groups/face_groups.h).
 
-#include <tbb/info.h>
-#include <tbb/task_arena.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <iostream>
@@ -139,10 +136,8 @@ void run_report(const ReportArgs& args) {
   report_settings.on_warning = [&args](const std::string& warning) {
     std::cerr << "shadowgen: warning: " << args.input << ": " << warning << '\n';
   };
-  // The rows are written on the same threads as the shadows were made.
-  tbb::task_arena arena(args.reading.threads ? static_cast<int>(args.reading.threads)
-                                             : tbb::info::default_concurrency());
-  const std::string report = arena.execute([&] { return api::report(shadows, report_settings); });
+  // The rows are written on the threads the shadows were made with.
+  const std::string report = api::report(shadows, report_settings);
   write_report(args, report);
 }
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "detail/handles.h"
+#include "detail/on_threads.h"
 #include "detail/translated.h"
 #include "shadowgen/groups/face_groups.h"
 #include "shadowgen/model/input_error.h"
@@ -137,15 +138,15 @@ std::string sky_report(const std::string& path, const LoadSettings& settings,
 }
 
 std::string report(const Shadows& shadows, const ReportSettings& settings) {
-  return detail::translated([&] { return report_text(detail::model(shadows), settings); });
+  return detail::on_threads(shadows, [&] { return report_text(detail::model(shadows), settings); });
 }
 
 void write_database(const Shadows& shadows, const std::string& path) {
-  detail::translated([&] { shadowgen::write_database(detail::model(shadows), path); });
+  detail::on_threads(shadows, [&] { shadowgen::write_database(detail::model(shadows), path); });
 }
 
 void write_obj(const Shadows& shadows, const std::string& path, ObjLayout layout) {
-  detail::translated([&] {
+  detail::on_threads(shadows, [&] {
     const ShadowedScene& shadowed = detail::model(shadows);
     require_exact(shadowed, "for an OBJ");
     const std::filesystem::path obj_path = path;
@@ -164,7 +165,7 @@ void write_obj(const Shadows& shadows, const std::string& path, ObjLayout layout
 }
 
 void write_gltf(const Shadows& shadows, const std::string& path) {
-  detail::translated([&] {
+  detail::on_threads(shadows, [&] {
     const std::optional<GltfForm> form = gltf_form_of(path);
     if (!form) {
       throw std::invalid_argument(path + ": a glTF file's name ends in \".glb\" or \".gltf\"");
@@ -177,7 +178,7 @@ void write_gltf(const Shadows& shadows, const std::string& path) {
 
 void write_svg(const Shadows& shadows, const std::string& path, const std::string& view_id,
                int width, int height) {
-  detail::translated([&] {
+  detail::on_threads(shadows, [&] {
     const ShadowedScene& shadowed = detail::model(shadows);
     require_exact(shadowed, "to draw");
     const ViewSpec* spec = nullptr;

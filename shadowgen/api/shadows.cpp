@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "detail/handles.h"
+#include "detail/on_threads.h"
 #include "detail/translated.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/method.h"
@@ -78,7 +79,9 @@ std::string Shadows::method() const { return method_label(detail::model(*this).m
 std::vector<LitArea> Shadows::lit_areas() const {
   const ShadowedScene& shadowed = detail::model(*this);
   std::vector<LitArea> rows;
-  for (const ReportRow& row : report_rows(shadowed)) {
+  const std::vector<ReportRow> report =
+      detail::on_threads(*this, [&] { return report_rows(shadowed); });
+  for (const ReportRow& row : report) {
     rows.push_back({row.face, row.light, shadowed.scene.faces[row.face].id,
                     shadowed.scene.lights[row.light].id, row.area, row.lit_area, row.lit_fraction});
   }
@@ -106,7 +109,7 @@ std::vector<PolygonData> Shadows::lit_polygons(std::size_t face, std::size_t lig
 }
 
 std::vector<SunHours> Shadows::sun_hours(const std::vector<double>& thresholds) const {
-  return detail::translated([&] {
+  return detail::on_threads(*this, [&] {
     const ShadowedScene& shadowed = detail::model(*this);
     std::vector<SunHours> rows;
     for (SunHoursRow& row : sun_hours_rows(shadowed, thresholds)) {
@@ -123,7 +126,8 @@ Shadows generate(const Scene& scene, const GenerateSettings& settings) {
     const shadowgen::Scene& model = detail::model(scene);
     try {
       return detail::shadows_handle(
-          shadows_by_method(model, method_of(settings), generate_options(settings)).shadowed);
+          shadows_by_method(model, method_of(settings), generate_options(settings)).shadowed,
+          settings.threads);
     } catch (const shadowgen::GenerationError& e) {
       throw shadowgen::GenerationError(model.file, e.face_id(), e.light_id(), e.problem());
     }
@@ -149,7 +153,7 @@ Shadows load(const std::string& path, const LoadSettings& settings) {
         settings.on_scene(detail::scene_view(scene));
       };
     }
-    return detail::shadows_handle(load_shadowed(path, options));
+    return detail::shadows_handle(load_shadowed(path, options), options.threads);
   });
 }
 
@@ -157,9 +161,9 @@ const char* version() { return SHADOWGEN_VERSION; }
 
 namespace detail {
 
-Shadows shadows_handle(ShadowedScene shadowed) {
+Shadows shadows_handle(ShadowedScene shadowed, unsigned threads) {
   auto owned = std::make_shared<const ShadowedScene>(std::move(shadowed));
-  return Shadows(std::make_shared<const Shadows::Impl>(Shadows::Impl{std::move(owned)}));
+  return Shadows(std::make_shared<const Shadows::Impl>(Shadows::Impl{std::move(owned), threads}));
 }
 
 }  // namespace detail

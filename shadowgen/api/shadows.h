@@ -48,7 +48,9 @@ struct GenerateSettings {
   Method method = Method::kExact;
   int samples = 256;      // kRays, kShadowMap: points per face, 1 to 2^20
   int resolution = 2048;  // kShadowMap: texels a side, 1 to 2^15
-  unsigned threads = 0;   // 0: one per hardware thread; the result is the same for any
+  // 0: one per hardware thread; the result is the same for any. Also the threads that
+  // lit_areas(), sun_hours(), reports and files of these shadows run on.
+  unsigned threads = 0;
   // Sun paths summed into sun-hours regions per face; false keeps each instant's lit
   // areas alone (linear in the instants: what shading schedules and irradiation need).
   bool sun_hours_regions = true;

@@ -18,6 +18,7 @@ struct Scene::Impl {
 
 struct Shadows::Impl {
   std::shared_ptr<const ShadowedScene> shadowed;
+  unsigned threads = 0;  // GenerateSettings::threads of the generation or load
 };
 
 }  // namespace shadowgen::api
@@ -28,7 +29,7 @@ namespace shadowgen::api::detail {
 Scene scene_handle(shadowgen::Scene scene);
 // A handle that only refers to `scene`, which must outlive it (LoadSettings::on_scene).
 Scene scene_view(const shadowgen::Scene& scene);
-Shadows shadows_handle(ShadowedScene shadowed);
+Shadows shadows_handle(ShadowedScene shadowed, unsigned threads);
 
 inline const shadowgen::Scene& model(const Scene& scene) { return *scene.impl().scene; }
 inline const ShadowedScene& model(const Shadows& shadows) { return *shadows.impl().shadowed; }

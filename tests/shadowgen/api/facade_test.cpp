@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -182,6 +185,52 @@ TEST(Facade, LightsChosenAreTheOnlyOnes) {
   EXPECT_EQ(make_scene(data, read).light_ids(), std::vector<std::string>{"lamp"});
   read.lights = {"moon"};
   EXPECT_THROW(make_scene(data, read), InputError);
+}
+
+// A scene file of 400 unit squares side by side under a sun straight overhead: enough
+// faces for their reading and a report's rows to be spread over threads.
+std::filesystem::path tiles_scene() {
+  const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / "tiles.json";
+  std::ofstream out(path);
+  out << R"({"format": "shadowgen-scene/1", "polygons": [)";
+  for (int i = 0; i < 400; ++i) {
+    const int x = i % 20, y = i / 20;
+    out << (i ? "," : "") << R"({"id": "tile)" << i << R"(", "outer": [[)" << x << ',' << y
+        << ",0],[" << x + 1 << ',' << y << ",0],[" << x + 1 << ',' << y + 1 << ",0],[" << x << ','
+        << y + 1 << ",0]]}";
+  }
+  out << R"(], "lights": [{"id": "noon", "type": "directional", "direction": [0, 0, -1]}]})";
+  return path;
+}
+
+std::size_t process_threads() {  // Linux: one entry per thread of this process
+  const std::filesystem::directory_iterator tasks("/proc/self/task");
+  return static_cast<std::size_t>(std::distance(begin(tasks), end(tasks)));
+}
+
+// Loads the tiles on `threads` threads, then reads and writes the results; exits with 0
+// when that started no thread, 1 when it did. Run in a fresh process (a death test), which
+// holds no worker of an earlier test. On a machine of one hardware thread both runs exit
+// with 0: the test is meaningful on two or more.
+[[noreturn]] void load_and_write_on(unsigned threads) {
+  const std::filesystem::path scene = tiles_scene();
+  const std::filesystem::path database = scene.parent_path() / "tiles.shadowed.json";
+  const std::size_t before = process_threads();
+  const Shadows shadows = load(scene.string(), {.generate = {.threads = threads}});
+  std::size_t rows = shadows.lit_areas().size();
+  rows += report(shadows).size() + report(shadows, {.format = ReportFormat::kJson}).size();
+  write_database(shadows, database.string());
+  const bool more = process_threads() != before;
+  std::filesystem::remove(scene);
+  std::filesystem::remove(database);
+  std::exit(rows > 0 && !more ? 0 : 1);
+}
+
+TEST(FacadeDeathTest, ResultsRunOnTheThreadsTheShadowsWereMadeWith) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(load_and_write_on(1), ::testing::ExitedWithCode(0), "");
+  // The check can fail: on two threads, the work starts a worker.
+  EXPECT_EXIT(load_and_write_on(2), ::testing::ExitedWithCode(1), "");
 }
 
 TEST(Facade, VersionIsTheHeadersOwn) { EXPECT_STREQ(version(), SHADOWGEN_VERSION); }

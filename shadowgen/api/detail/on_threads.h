@@ -1,0 +1,26 @@
+#pragma once
+
+// Work on shadows runs on the threads they were made with (GenerateSettings::threads; 0:
+// every hardware thread): what sums or writes in parallel (a report's rows, a database's
+// chunks) takes no more threads than the caller gave the generation, whichever thread
+// calls. The result is the same for any number. Its errors are translated (translated.h).
+
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <utility>
+
+#include "detail/handles.h"
+#include "detail/translated.h"
+
+namespace shadowgen::api::detail {
+
+template <class Work>
+decltype(auto) on_threads(const Shadows& shadows, Work&& work) {
+  const unsigned threads = shadows.impl().threads;
+  tbb::task_arena arena(threads != 0 ? static_cast<int>(threads)
+                                     : tbb::info::default_concurrency());
+  return arena.execute([&]() -> decltype(auto) { return translated(std::forward<Work>(work)); });
+}
+
+}  // namespace shadowgen::api::detail
