@@ -321,6 +321,28 @@ void define_module(py::module_& module) {
              "The report's text, as `shadowgen report --format FORMAT` writes it, byte for "
              "byte.");
   module.def(
+      "sky_report",
+      [](const py::object& path, int subdivisions, bool csv_safe, int threads,
+         const py::object& lights, bool strict) {
+        Warnings warnings;
+        api::LoadSettings settings;
+        settings.read = read_settings(strict, lights, warnings);
+        settings.generate = generate_settings("exact", 256, 2048, threads, false, false);
+        const std::string file = path_of(path);
+        std::string text;
+        {
+          const py::gil_scoped_release unlocked;
+          text = api::sky_report(file, settings, {subdivisions, csv_safe});
+        }
+        warnings.issue();
+        return text;
+      },
+      "path"_a, py::kw_only(), "subdivisions"_a = api::SkyReportSettings{}.subdivisions,
+      "csv_safe"_a = false, "threads"_a = 0, "lights"_a = py::none(), "strict"_a = false,
+      "`shadowgen report --format sky` of the scene (or database) at `path`, byte for byte: "
+      "each face's sky view factor with exact obstruction, the sky's patches (Reinhart MF:N, "
+      "1: Tregenza's 145) generated as lights.");
+  module.def(
       "write_database",
       [](const api::Shadows& shadows, const py::object& path) {
         write_file(path, [&](const std::string& file) { api::write_database(shadows, file); });

@@ -171,3 +171,9 @@ def test_a_database_written_reads_back_with_the_same_lit_areas(scenes, tmp_path)
     again = shadowgen.load(tmp_path / "courtyard.shadowed.json")
     assert list(again.lit_areas()) == list(shadows.lit_areas())
     assert again.exact and again.method == "exact"
+
+
+@pytest.mark.parametrize("subdivisions,sky", [(1, "tregenza"), (2, "reinhart:2")])
+def test_the_sky_report_is_the_commands_byte_for_byte(scenes, subdivisions, sky):
+    assert shadowgen.sky_report(scenes / "courtyard.json", subdivisions=subdivisions) == \
+        run_shadowgen("report", scenes / "courtyard.json", "--format", "sky", "--sky", sky)
