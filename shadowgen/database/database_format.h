@@ -37,6 +37,8 @@
 //       {
 //         "id": "wall",
 //         "source_file": "scenes/room.json",    the file the face came from
+//         "vertex_rounding": r,                 a model's face only, where r > 0: its parts
+//                                               are planar within 2r (Face::vertex_rounding)
 //         "parts": [                            one polygon, or the triangles of a
 //           POLYGON, ...                        non-planar one
 //         ],
@@ -126,6 +128,7 @@ inline constexpr char kDropped[] = "dropped";
 // A face.
 inline constexpr char kSourceFile[] = "source_file";
 inline constexpr char kOrigin[] = "origin";
+inline constexpr char kVertexRounding[] = "vertex_rounding";
 inline constexpr char kParts[] = "parts";
 inline constexpr char kNumbers[] = "numbers";
 inline constexpr char kVertices[] = "vertices";

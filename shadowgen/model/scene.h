@@ -27,6 +27,10 @@ struct Face {
   std::vector<hsr::Polygon3> parts;
   std::string source_file;  // the scene or mesh file it came from, for messages
   FaceOrigin origin = {};   // where a model file's face comes from; empty otherwise
+  // How far its source's written precision lets a vertex stray (SourceFace::
+  // vertex_rounding, in scene coordinates): a part within twice this of its plane is
+  // planar. 0 for a scene's own polygons and meshes' faces.
+  double vertex_rounding = 0.0;
 };
 
 enum class LightType { kDirectional, kPoint };

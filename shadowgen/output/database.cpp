@@ -407,6 +407,7 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f,
   out.begin_object(Layout::kLines);
   out.key(key::kId).value(face.id).key(key::kSourceFile).value(face.source_file);
   detail::write_origin(out, face.origin);
+  if (face.vertex_rounding > 0.0) out.key(key::kVertexRounding).value(face.vertex_rounding);
   out.key(key::kParts).begin_array(Layout::kLines);
   for (const Polygon3& part : face.parts) write_polygon(out, part);
   out.end_array();

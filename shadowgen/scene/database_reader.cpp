@@ -563,6 +563,10 @@ class DatabaseParser {
     face.source_file = entry.get(key::kSourceFile).string();
     if (const std::optional<JsonValue> origin = entry.find(key::kOrigin))
       face.origin = read_origin(*origin);
+    if (const std::optional<JsonValue> rounding = entry.find(key::kVertexRounding)) {
+      face.vertex_rounding = rounding->number();
+      if (!(face.vertex_rounding >= 0.0)) rounding->fail("a vertex rounding cannot be negative");
+    }
     const JsonValue parts_value = entry.get(key::kParts);
     const JsonArray parts = parts_value.array();
     if (parts.empty()) parts_value.fail("a face needs at least one polygon");
@@ -570,7 +574,8 @@ class DatabaseParser {
       JsonObject part = parts.at(k).object();
       hsr::Polygon3 polygon = detail::read_polygon(part);
       part.finish();
-      face.parts.push_back(checked_part(std::move(polygon), part.value(), face.id));
+      face.parts.push_back(
+          checked_part(std::move(polygon), part.value(), face.id, face.vertex_rounding));
     }
     if (!std::isfinite(hsr::area(face.parts))) {
       parts_value.fail("the face's area is not a finite number (coordinates too large)");
@@ -658,10 +663,11 @@ class DatabaseParser {
   }
 
   // A part gets the checks a scene's face gets (strict: a part is planar, it was written
-  // from a face already split into planar parts). A part without area is kept as it is,
-  // as the scene reader keeps a degenerate face; it warned when it read it.
-  hsr::Polygon3 checked_part(hsr::Polygon3 polygon, const JsonValue& at,
-                             const std::string& face_id) {
+  // from a face already split into planar parts; planar within twice the face's vertex
+  // rounding, as the scene reader took a model's face). A part without area is kept as it
+  // is, as the scene reader keeps a degenerate face; it warned when it read it.
+  hsr::Polygon3 checked_part(hsr::Polygon3 polygon, const JsonValue& at, const std::string& face_id,
+                             double vertex_rounding) {
     if (const std::optional<std::string> problem = detail::coordinate_problem(polygon)) {
       at.fail(*problem);
     }
@@ -676,8 +682,9 @@ class DatabaseParser {
     std::vector<std::string> warnings;
     Face face;
     try {
-      face = detail::build_face(std::move(polygon), {face_id, file_, detail::FaceKind::kPolygon},
-                                true, warnings);
+      face = detail::build_face(std::move(polygon),
+                                {face_id, file_, detail::FaceKind::kPolygon, vertex_rounding}, true,
+                                warnings);
     } catch (const InputError& e) {
       at.fail(e.problem());
     }

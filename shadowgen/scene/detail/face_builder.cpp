@@ -116,7 +116,7 @@ class FaceBuilder {
         outer_name_(mesh_ ? "the face" : "the outer loop") {}
 
   Face build(hsr::Polygon3 polygon) {
-    Face face{source_.id, {}, source_.file, source_.origin};
+    Face face{source_.id, {}, source_.file, source_.origin, source_.vertex_rounding};
     check_vertex_counts(polygon);
     if (const std::optional<std::string> problem = coordinate_problem(polygon)) fail(*problem);
     if (degenerate(polygon)) {  // kept as given

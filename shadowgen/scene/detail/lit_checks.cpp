@@ -77,6 +77,7 @@ LitChecker::LitChecker(const Face& face) : several_parts_(face.parts.size() > 1)
     part.lo = lo;
     part.hi = hi;
     part.reach = kRoundingReach * (part.extent + std::max({magnitude.x, magnitude.y, magnitude.z}));
+    part.vertex_reach = 2.0 * face.vertex_rounding;
     part.perimeter = hsr::perimeter(polygon);
     const double area = hsr::area(polygon);
     part.tilt_reach =
@@ -155,7 +156,8 @@ std::optional<LitProblem> LitChecker::check_loops_and_planes(
     }
     const Part& part = parts_[lit[k].part];
     if (!part.flat) continue;
-    const double tolerance = kPlanarityTolerance * part.extent + part.reach + part.tilt_reach;
+    const double tolerance =
+        kPlanarityTolerance * part.extent + part.reach + part.tilt_reach + part.vertex_reach;
     double worst = 0.0;
     auto visit = [&](const hsr::Loop3& loop) {
       for (const glm::dvec3& p : loop) worst = std::max(worst, distance_to_plane(part, p));

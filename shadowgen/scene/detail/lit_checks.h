@@ -81,6 +81,10 @@ class LitChecker {
     // sliver's plane is known only to that tilt, times extent (kRoundingReach × extent³ /
     // (2 × area)). A sliver triangle's own corners once lay 2.2e-5 off it.
     double tilt_reach = 0.0;
+    // How far the part's own vertices may lie off its plane: twice its face's vertex
+    // rounding (Face::vertex_rounding), the planarity the scene reader allowed a model's
+    // face; 0 for a scene's own polygons.
+    double vertex_reach = 0.0;
     double perimeter = 0.0;
     hsr::PlaneChart chart;
     clipper::PolygonWithHoles2 flat_polygon;  // in the chart, relative to origin

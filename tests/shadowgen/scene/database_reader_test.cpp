@@ -165,6 +165,30 @@ TEST(DatabaseReader, FacePartsGetTheScenesFaceChecks) {
                           "the face's area of 0"));
 }
 
+// A model's face is planar within twice its vertex rounding (a CityJSON roof stored to
+// the millimetre, one corner a step above the others' plane: 0.25 mm from the best-fit
+// plane, far beyond the relative tolerance). Its database keeps the rounding, so the part
+// reads back planar, and so does what is lit on it; without it, or with a rounding too
+// small for it, it is refused.
+TEST(DatabaseReader, AModelFacePlanarWithinItsVertexRoundingReadsBack) {
+  const std::string roof = R"({"outer": [[0,0,9],[10,0,9],[10,10,9.001],[0,10,9]]})";
+  // Lit whole: the lit polygon is the roof itself, as far off the plane as its corner.
+  nlohmann::ordered_json db = nlohmann::ordered_json::parse(database(roof, roof));
+  EXPECT_TRUE(starts_with(wall_problem(db.dump()), "faces[0].parts[0]: not planar"));
+  db["faces"][0]["vertex_rounding"] = 0.000866;
+  const ShadowedScene read = parse_database(db.dump(), "db.json");
+  ASSERT_EQ(read.scene.faces.size(), 1u);
+  EXPECT_EQ(read.scene.faces[0].vertex_rounding, 0.000866);
+  const std::string written = database_json(read);
+  EXPECT_NE(written.find("\"vertex_rounding\": 0.000866,"), std::string::npos) << written;
+  EXPECT_EQ(database_json(parse_database(written, "again.json")), written);
+  db["faces"][0]["vertex_rounding"] = 0.0001;  // twice it is 0.2 mm: not enough
+  EXPECT_TRUE(starts_with(wall_problem(db.dump()), "faces[0].parts[0]: not planar"));
+  db["faces"][0]["vertex_rounding"] = -1;
+  EXPECT_EQ(wall_problem(db.dump()),
+            "faces[0].vertex_rounding: a vertex rounding cannot be negative");
+}
+
 TEST(DatabaseReader, LightsAndViewsGetTheScenesChecks) {
   std::string zero = database("");
   zero.replace(zero.find("[0.0, 0.0, -1.0]"), 16, "[0, 0, 0]");
