@@ -12,6 +12,7 @@
 #include "clipper/predicates.h"
 #include "clipper/triangulate.h"
 #include "coordinate_range.h"
+#include "face_plane.h"
 #include "hsr/area.h"
 #include "hsr/collinearity.h"
 #include "hsr/plane_chart.h"
@@ -23,87 +24,6 @@
 namespace shadowgen::detail {
 
 namespace {
-
-// A chart for a loop whose Newell normal came out zero (its signed areas cancel, as in a
-// figure-eight, or underflow): any chart in which it is not collinear; validation then
-// finds what is wrong with it.
-hsr::PlaneChart chart_without_normal(const hsr::Loop3& loop) {
-  for (int axis : {2, 0, 1}) {
-    const hsr::PlaneChart chart{axis};
-    const clipper::Point2 a = chart(loop[0]);
-    for (std::size_t i = 1; i < loop.size(); ++i) {
-      const clipper::Point2 b = chart(loop[i]);
-      if (b == a) continue;
-      for (std::size_t j = i + 1; j < loop.size(); ++j) {
-        if (clipper::orient2d(a, b, chart(loop[j])) != clipper::Orientation::kCollinear) {
-          return chart;
-        }
-      }
-      break;
-    }
-  }
-  return {};
-}
-
-// Orthonormal coordinates on the plane through `origin` with unit normal n, oriented so
-// that a loop counter-clockwise seen from the side n points to stays counter-clockwise.
-// The coordinates are rounded (a construction, unlike a chart).
-class PlaneFrame {
- public:
-  PlaneFrame(const glm::dvec3& origin, const glm::dvec3& n) : origin_(origin) {
-    const glm::dvec3 a = glm::abs(n);
-    const glm::dvec3 axis = a.x <= a.y && a.x <= a.z ? glm::dvec3(1, 0, 0)
-                            : a.y <= a.z             ? glm::dvec3(0, 1, 0)
-                                                     : glm::dvec3(0, 0, 1);
-    u_ = glm::normalize(glm::cross(n, axis));
-    v_ = glm::cross(n, u_);
-  }
-
-  clipper::Loop2 project(const hsr::Loop3& loop) const {
-    clipper::Loop2 out;
-    out.reserve(loop.size());
-    for (const glm::dvec3& p : loop) {
-      const glm::dvec3 d = p - origin_;
-      out.push_back({glm::dot(d, u_), glm::dot(d, v_)});
-    }
-    return out;
-  }
-
-  // The point of the plane at frame coordinates q.
-  glm::dvec3 lift(const clipper::Point2& q) const { return origin_ + q.x * u_ + q.y * v_; }
-
- private:
-  glm::dvec3 origin_, u_, v_;
-};
-
-struct Planarity {
-  double deviation = 0.0;  // largest distance of a vertex from the best-fit plane
-  double extent = 0.0;     // largest side of the bounding box
-};
-
-// Distances are taken relative to the outer loop's first vertex, so a face far from the
-// origin is measured as precisely as one at it.
-Planarity planarity(const hsr::Polygon3& polygon, const glm::dvec3& normal) {
-  const glm::dvec3 o = polygon.outer[0];
-  glm::dvec3 centroid(0.0);
-  for (const glm::dvec3& p : polygon.outer) centroid += p - o;
-  centroid /= static_cast<double>(polygon.outer.size());
-  Planarity result;
-  glm::dvec3 lo = o;
-  glm::dvec3 hi = o;
-  auto visit = [&](const hsr::Loop3& loop) {
-    for (const glm::dvec3& p : loop) {
-      result.deviation = std::max(result.deviation, std::abs(glm::dot(normal, (p - o) - centroid)));
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  };
-  visit(polygon.outer);
-  for (const hsr::Loop3& hole : polygon.holes) visit(hole);
-  const glm::dvec3 size = hi - lo;
-  result.extent = std::max({size.x, size.y, size.z});
-  return result;
-}
 
 // The steps of build_face, sharing what it reports to.
 class FaceBuilder {
