@@ -72,7 +72,10 @@ for _ in $(seq "$repetitions"); do
     timed "$which" "$binary"
   done
 done
-[ -n "${OLD:-}" ] && cmp "$work/old.db.json" "$work/new.db.json" && echo "databases: same bytes"
+if [ -n "${OLD:-}" ]; then
+  cmp "$work/old.db.json" "$work/new.db.json" # a difference ends the run, with its place
+  echo "databases: same bytes"
+fi
 
 python3 - "$work" "$instants" "$year_instants" "${binaries[@]}" <<'PY'
 import statistics, sys
