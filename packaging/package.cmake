@@ -25,7 +25,7 @@ set(CPACK_DEBIAN_PACKAGE_MAINTAINER "shadowgen maintainers <shadowgen@localhost>
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "libproj-dev, libopenmesh-dev, libembree-dev, libtinygltf-dev, libpng-dev, libtbb-dev")
+    "libproj-dev, libopenmesh-dev, libembree-dev, libtinygltf-dev, libpng-dev, libtbb-dev, zlib1g-dev")
 if(TARGET shadowgen_python)
   string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS ", ${SHADOWGEN_PYTHON_DEPENDS}")
 endif()

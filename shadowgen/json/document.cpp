@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "detail/json_parse.h"
+#include "shadowgen/compressed/decompressed_input.h"
 #include "shadowgen/model/input_error.h"
 
 namespace shadowgen {
@@ -201,7 +202,7 @@ std::string document_format(const std::string& json_text, const std::filesystem:
 }
 
 std::string file_format(const std::filesystem::path& path) {
-  std::ifstream in = open_input_file(path);
+  compressed::DecompressedInput in(open_input_file(path), path.string());
   FormatScanner scanner([&in](std::size_t offset) { return detail::line_column(in, offset); });
   Json::sax_parse(in, &scanner);
   if (!scanner.format) refuse(scanner, in, path);
@@ -211,7 +212,7 @@ std::string file_format(const std::filesystem::path& path) {
 Document read_document(const std::filesystem::path& path) {
   Document document;
   document.path = path;
-  document.text = read_text_file(path);
+  document.text = compressed::decompressed_text(read_text_file(path), path.string());
   document.format = document_format(document.text, path);
   return document;
 }

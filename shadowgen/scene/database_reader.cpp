@@ -19,6 +19,7 @@
 #include "detail/json_entities.h"
 #include "detail/lit_checks.h"
 #include "hsr/area.h"
+#include "shadowgen/compressed/decompressed_input.h"
 #include "shadowgen/database/database_format.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
@@ -70,7 +71,7 @@ class DatabaseParser {
       if (!skipping && !too_early) guarded(too_early, [&] { read_face(face, shadowed); });
       return true;  // dropped: read, or left for the second pass
     };
-    std::optional<std::ifstream> in;
+    std::optional<compressed::DecompressedInput> in;
     std::optional<JsonDocument> document;
     parse(text, take, in, document);
     const JsonValue root = document->root();
@@ -104,12 +105,13 @@ class DatabaseParser {
   // Parses the database, from `text` or where it is null from the file (opened in `in`),
   // into `document`, handing each face to `take` as it comes.
   void parse(const std::string* text, const JsonDocument::ElementTaker& take,
-             std::optional<std::ifstream>& in, std::optional<JsonDocument>& document) const {
+             std::optional<compressed::DecompressedInput>& in,
+             std::optional<JsonDocument>& document) const {
     const JsonSource source{file_, options_.strict, &warnings_};
     if (text != nullptr) {
       document.emplace(*text, source, key::kFaces, take);
     } else {
-      in.emplace(open_input_file(path_));
+      in.emplace(open_input_file(path_), file_);
       document.emplace(*in, source, key::kFaces, take);
     }
   }
@@ -124,7 +126,7 @@ class DatabaseParser {
       read_face(face, shadowed);
       return true;
     };
-    std::optional<std::ifstream> in;
+    std::optional<compressed::DecompressedInput> in;
     std::optional<JsonDocument> document;
     parse(text, take, in, document);
     return finished(top, std::move(shadowed));
@@ -313,7 +315,10 @@ ShadowedScene parse_database(const std::string& json_text, const std::filesystem
 
 ShadowedScene read_database(const std::filesystem::path& path, const ReadOptions& options,
                             std::vector<std::string>& warnings) {
-  if (path == "-") return parse_database(read_text_file(path), path, options, warnings);
+  if (path == "-") {
+    return parse_database(compressed::decompressed_text(read_text_file(path), path.string()), path,
+                          options, warnings);
+  }
   return DatabaseParser(path, options, warnings).run(nullptr);
 }
 

@@ -1,0 +1,92 @@
+// Files written compressed as their name asks (shadowgen/output/compressed_output.h): a
+// path ending in ".gz" gets gzip members that decompress to the plain file's bytes, any
+// other the plain text; a failure leaves nothing behind.
+
+#include "shadowgen/output/compressed_output.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "shadowgen/compressed/decompressed_input.h"
+#include "shadowgen/compressed/gzip_members.h"
+
+namespace shadowgen {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CompressedOutput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(::testing::TempDir()) /
+           ("shadowgen-compressed-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string contents(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  // Writes `text` to `path` in pieces of 1000 bytes.
+  static void write(const fs::path& path, const std::string& text) {
+    stream_file_compressed_as_named(path, [&text](const OutputSink& sink) {
+      for (std::size_t at = 0; at < text.size(); at += 1000) {
+        sink(std::string_view(text).substr(at, 1000));
+      }
+    });
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CompressedOutput, NamesEndingInGzAreCompressed) {
+  EXPECT_TRUE(gzip_named("db.json.gz"));
+  EXPECT_TRUE(gzip_named("out/db.gz"));
+  EXPECT_FALSE(gzip_named("db.json"));
+  EXPECT_FALSE(gzip_named("db.json.gzip"));
+  EXPECT_FALSE(gzip_named("db.GZ"));
+  EXPECT_FALSE(gzip_named("-"));
+}
+
+TEST_F(CompressedOutput, GzFileHoldsTheMembersOfThePlainText) {
+  std::string text;
+  for (int i = 0; text.size() < 3 * compressed::kGzipMemberBytes / 2; ++i) {
+    text += "{\"id\":\"f" + std::to_string(i) + "\",\"xyz\":[" + std::to_string(i % 977) + "]}\n";
+  }
+  write(dir_ / "a.json", text);
+  write(dir_ / "a.json.gz", text);
+  EXPECT_EQ(contents(dir_ / "a.json"), text);
+  const std::string gzip = contents(dir_ / "a.json.gz");
+  // Two members: the first kGzipMemberBytes of the text, then the rest.
+  EXPECT_EQ(
+      gzip,
+      compressed::gzip_member(text.substr(0, compressed::kGzipMemberBytes), kDatabaseGzipLevel) +
+          compressed::gzip_member(text.substr(compressed::kGzipMemberBytes), kDatabaseGzipLevel));
+  EXPECT_EQ(compressed::decompressed_text(gzip, "a.json.gz"), text);
+}
+
+TEST_F(CompressedOutput, FailureLeavesNothingBehind) {
+  write(dir_ / "old.json.gz", "old");
+  EXPECT_THROW(stream_file_compressed_as_named(dir_ / "old.json.gz",
+                                               [](const OutputSink& sink) {
+                                                 sink(std::string(5000000, 'x'));
+                                                 throw std::runtime_error("stopped");
+                                               }),
+               std::runtime_error);
+  EXPECT_EQ(compressed::decompressed_text(contents(dir_ / "old.json.gz"), "old"), "old");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+}  // namespace
+}  // namespace shadowgen
