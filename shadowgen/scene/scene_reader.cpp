@@ -18,6 +18,7 @@
 #include "detail/sun_light.h"
 #include "detail/warning_summary.h"
 #include "detail/weather_entry.h"
+#include "shadowgen/compressed/decompressed_input.h"
 #include "shadowgen/json/array_member_cut.h"
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_reader.h"
@@ -188,7 +189,11 @@ class SceneParser {
 }  // namespace
 
 ReadResult read_scene(const std::filesystem::path& path, const ReadOptions& options) {
-  return parse_scene(read_text_file(path, "scene file"), path, options);
+  // gzip by its magic bytes, as a database is read: a database given for a scene is named
+  // as what it is whatever its compression.
+  return parse_scene(
+      compressed::decompressed_text(read_text_file(path, "scene file"), path.string()), path,
+      options);
 }
 
 ReadResult parse_scene(const std::string& json_text, const std::filesystem::path& path,

@@ -103,6 +103,32 @@ TEST_F(GzipDatabaseCli, EveryOutputIsTheSameFromTheGzipDatabase) {
   EXPECT_EQ(piped.out, output({"report", "DB", "--format", "sun-hours"}, plain));
 }
 
+// generate takes scenes only: a gzip scene is read as the plain one, and a gzip database
+// is refused as the plain one is, for what it is.
+TEST_F(GzipDatabaseCli, GenerateTellsGzipScenesAndDatabasesByContent) {
+  const fs::path plain = generated("garden.json"), gzip = generated("garden.json.gz");
+  const Outcome db = run({"generate", gzip.string(), "-o", (dir_ / "again.json").string()});
+  EXPECT_EQ(db.code, 1);
+  EXPECT_EQ(db.err, "shadowgen: " + gzip.string() +
+                        ": format: unsupported format 'shadowgen-shadowed/2'; this reader reads "
+                        "'shadowgen-scene/1'\n");
+  // The scene compressed by gzip(1), under a plain name.
+  ASSERT_EQ(shell("gzip -c " + quoted((kScenes / "garden.json").string()) + " > " +
+                  quoted((dir_ / "scene.json").string())),
+            0);
+  ASSERT_EQ(contents(dir_ / "scene.json").substr(0, 2), "\x1f\x8b");
+  const fs::path from_gzip = dir_ / "from-gzip.json";
+  const Outcome o = run({"generate", (dir_ / "scene.json").string(), "-o", from_gzip.string()});
+  ASSERT_EQ(o.code, 0) << o.err;
+  // The same database but for the scene's file name, which the database records.
+  std::string expected = contents(plain);
+  const std::string name = "\"" + (kScenes / "garden.json").string() + "\"";
+  for (std::size_t at; (at = expected.find(name)) != std::string::npos;) {
+    expected.replace(at, name.size(), "\"" + (dir_ / "scene.json").string() + "\"");
+  }
+  EXPECT_TRUE(contents(from_gzip) == expected);
+}
+
 TEST_F(GzipDatabaseCli, ShardsAndMergeTakeAndMakeGzip) {
   const fs::path scene = kScenes / "garden.json";
   const fs::path whole = generated("whole.json.gz");
