@@ -5,8 +5,12 @@
 # (bench/city_sun_scene.py), then REPETITIONS rounds of, for each binary in turn,
 # `generate` (its wall time and peak memory: the shadows, the sums and the database
 # written) and `report --format sun-hours` of the database it wrote (the database read and
-# checked, and one CSV written); the database's size against the scene's, medians, and the
-# ratios of this build to OLD. The two sun-hours reports must be the same bytes.
+# checked, and one CSV written); then this build's `generate` to a gzip database (DB.json.gz)
+# and its `report` from that. The database's size against the scene's, plain and gzip;
+# medians of wall and CPU (user + system) seconds, and the ratios of this build to OLD.
+# The sun-hours reports must all be the same bytes, and `zcat` of the gzip database the
+# plain one's. Last, zlib's levels 1, 6 and 9 on the plain database as the writer cuts it
+# (members of 4 MiB; Python's zlib, the same library): size and CPU seconds on one thread.
 #
 #   OLD=PATH/TO/shadowgen bench/run_database_size_bench.sh [FACES] [FROM] [TO] [STEP_MIN]
 #
@@ -41,49 +45,72 @@ echo "city of $faces faces, sun path $from to $to every $step min: $instants ins
   "the sun up, $threads threads; scene $(stat -c %s "$work/scene.json") bytes"
 echo
 
-# One timed run of `$2 ...` for binary $1 (old or new): "wall_s peak_MB" appended to
+# One timed run of `$2 ...` for $1 (old, new or gz): "wall_s peak_MB cpu_s" appended to
 # $work/$1.$3.
 timed() {
   local which=$1 binary=$2 step=$3
   shift 3
-  /usr/bin/time -f "%e %M" -o "$work/time" "$binary" "$@"
-  read -r wall kb <"$work/time"
-  echo "$wall $((kb / 1024))" >>"$work/$which.$step"
+  /usr/bin/time -f "%e %M %U %S" -o "$work/time" "$binary" "$@"
+  read -r wall kb user sys <"$work/time"
+  echo "$wall $((kb / 1024)) $(python3 -c "print('%.2f' % ($user + $sys))")" >>"$work/$which.$step"
 }
 for _ in $(seq "$repetitions"); do
-  for which in old new; do
-    binary=$old
-    [ "$which" = new ] && binary=$new
-    timed "$which" "$binary" generate generate "$work/scene.json" -o "$work/$which.db.json" \
+  for which in old new gz; do
+    binary=$old db=$work/$which.db.json
+    [ "$which" = old ] || binary=$new
+    [ "$which" = gz ] && db=$work/new.db.json.gz
+    timed "$which" "$binary" generate generate "$work/scene.json" -o "$db" \
       --threads "$threads" --quiet
-    timed "$which" "$binary" read report "$work/$which.db.json" --format sun-hours \
+    timed "$which" "$binary" read report "$db" --format sun-hours \
       -o "$work/$which.sun-hours.csv" --quiet
   done
 done
 cmp "$work/old.sun-hours.csv" "$work/new.sun-hours.csv"
+cmp "$work/new.sun-hours.csv" "$work/gz.sun-hours.csv"
+zcat "$work/new.db.json.gz" | cmp - "$work/new.db.json"
 
 python3 - "$work" "$(stat -c %s "$work/scene.json")" "$(stat -c %s "$work/old.db.json")" \
-  "$(stat -c %s "$work/new.db.json")" <<'PY'
-import statistics, sys
-work, scene, old_db, new_db = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+  "$(stat -c %s "$work/new.db.json")" "$(stat -c %s "$work/new.db.json.gz")" <<'PY'
+import resource, statistics, sys, zlib
+work, scene, old_db, new_db, gz_db = sys.argv[1], *map(int, sys.argv[2:6])
 def runs(which, step):
     return [line.split() for line in open("%s/%s.%s" % (work, which, step))]
 print("| database | bytes | × scene |")
 print("|---|---:|---:|")
-print("| OLD (%s) | %s | %.1f |" % ("inline coordinates", format(old_db, ","), old_db / scene))
+print("| OLD | %s | %.1f |" % (format(old_db, ","), old_db / scene))
 print("| this build | %s | %.1f |" % (format(new_db, ","), new_db / scene))
+print("| this build, DB.json.gz | %s | %.2f |" % (format(gz_db, ","), gz_db / scene))
 print()
-print("| step | binary | wall s (runs) | median s | peak MB (median) | ratio to OLD |")
-print("|---|---|---|---:|---:|---:|")
+print("| step | binary | wall s (runs) | median s | CPU s (median) | peak MB (median) "
+      "| wall, CPU ratio to OLD |")
+print("|---|---|---|---:|---:|---:|---:|")
+names = {"old": "OLD", "new": "this build", "gz": "this build, .gz"}
 for step, name in (("generate", "generate (shadows, sums, database written)"),
                    ("read", "report --format sun-hours (database read)")):
-    medians = {}
-    for which in ("old", "new"):
+    wall, cpu = {}, {}
+    for which in ("old", "new", "gz"):
         rows = runs(which, step)
         walls = [float(r[0]) for r in rows]
-        medians[which] = statistics.median(walls)
-        print("| %s | %s | %s | %.2f | %d | %s |" % (
-            name, "OLD" if which == "old" else "this build", ", ".join("%.2f" % w for w in walls),
-            medians[which], statistics.median(int(r[1]) for r in rows),
-            "" if which == "old" else "%.2f" % (medians["new"] / medians["old"])))
+        wall[which] = statistics.median(walls)
+        cpu[which] = statistics.median(float(r[2]) for r in rows)
+        print("| %s | %s | %s | %.2f | %.2f | %d | %s |" % (
+            name, names[which], ", ".join("%.2f" % w for w in walls), wall[which], cpu[which],
+            statistics.median(int(r[1]) for r in rows),
+            "" if which == "old" else "%.2f, %.2f" % (wall[which] / wall["old"],
+                                                      cpu[which] / cpu["old"])))
+print()
+# zlib's levels on the plain database, cut as the writer cuts it (gzip_members.h).
+text = open("%s/new.db.json" % work, "rb").read()
+member = 4 << 20
+print("| zlib level | bytes | × scene | CPU s (one thread) |")
+print("|---:|---:|---:|---:|")
+for level in (1, 6, 9):
+    start = resource.getrusage(resource.RUSAGE_SELF)
+    size = 0
+    for at in range(0, len(text), member):
+        z = zlib.compressobj(level, zlib.DEFLATED, 31)
+        size += len(z.compress(text[at:at + member])) + len(z.flush())
+    end = resource.getrusage(resource.RUSAGE_SELF)
+    seconds = end.ru_utime - start.ru_utime + end.ru_stime - start.ru_stime
+    print("| %d | %s | %.2f | %.2f |" % (level, format(size, ","), size / scene, seconds))
 PY

@@ -4,6 +4,9 @@
 #
 # Usage: examples/shards/run-local.sh SCENE N OUT.json
 #
+# OUT.json.gz writes the database as gzip, and the shards too (shard-K.json.gz): zcat gives
+# the plain file byte for byte.
+#
 # Environment (all optional):
 #   SHADOWGEN    the shadowgen command (default: shadowgen)
 #   JOBS         shards running at a time (default: the number of cores)
@@ -26,6 +29,8 @@ usage() {
 scene=$1
 shards=$2
 out=$3
+suffix=.json
+if [[ $out == *.gz ]]; then suffix=.json.gz; fi
 if ! [[ $shards =~ ^[1-9][0-9]{0,6}$ ]] || ((shards > 1000000)); then usage; fi
 [[ -f $scene ]] || { echo "$0: $scene: no such file" >&2; exit 1; }
 
@@ -64,7 +69,7 @@ trap cleanup EXIT
 # Shard k of N, its messages in its log; on failure the log is shown.
 run_shard() {
   local k=$1 rc=0
-  "$shadowgen" generate "$scene" -o "$dir/shard-$k.json" --instants "$k/$shards" \
+  "$shadowgen" generate "$scene" -o "$dir/shard-$k$suffix" --instants "$k/$shards" \
     --threads "$threads" 2>"$dir/shard-$k.log" || rc=$?
   if ((rc != 0)); then
     echo "$0: shard $k of $shards failed (exit code $rc):" >&2
@@ -88,7 +93,7 @@ for ((k = 1; k <= shards; k++)); do
   fi
   run_shard "$k" &
   running=$((running + 1))
-  files+=("$dir/shard-$k.json")
+  files+=("$dir/shard-$k$suffix")
 done
 while ((running > 0)); do
   wait -n
@@ -104,9 +109,9 @@ echo "merged into $out in $(since "$merge_start") s (shards and merge: $(since "
 
 if [[ ${CHECK:-0} == 1 ]]; then
   start=$(now)
-  "$shadowgen" generate "$scene" -o "$dir/one-run.json" -q
+  "$shadowgen" generate "$scene" -o "$dir/one-run$suffix" -q
   echo "one plain generate: $(since "$start") s" >&2
-  if cmp -- "$dir/one-run.json" "$out"; then
+  if cmp -- "$dir/one-run$suffix" "$out"; then
     echo "check: $out is byte for byte the database of one plain generate" >&2
   else
     echo "check: $out differs from the database of one plain generate" >&2

@@ -15,11 +15,13 @@
 namespace shadowgen {
 
 // The level files named *.gz are written at. Measured on a day of sun-hours regions of the
-// 30,000-face district (bench/RESULTS.md): level 6 (zlib's default) makes the file 3 %
-// larger than 9 in a quarter of its time, and 1 makes it 25 % larger than 6 for half the
-// time; 6 keeps the database within 10 × its scene at the cost of one core for the
-// compression, which other threads take.
-inline constexpr int kDatabaseGzipLevel = 6;
+// 30,000-face district (132 MB of text, members of 4 MiB; bench/RESULTS.md): level 1 makes
+// 6.5 times the scene in 1.3 CPU seconds, 6 (zlib's default) 5.5 times in 5.4 s, 9 5.5
+// times in 6.8 s. Level 1 keeps the database well within 10 times its scene, and its
+// compression keeps pace with the one thread that writes the text (the other compresses),
+// so that a gzip database is written in the wall time of a plain one; 6 would make the
+// compression four times the work for 15 % fewer bytes.
+inline constexpr int kDatabaseGzipLevel = 1;
 
 // Whether `path` names a file to be written as gzip: its name ends in ".gz".
 bool gzip_named(const std::filesystem::path& path);
