@@ -5,7 +5,6 @@
 #include "shadowgen/output/compressed_output.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -15,6 +14,7 @@
 
 #include "shadowgen/compressed/decompressed_input.h"
 #include "shadowgen/compressed/gzip_members.h"
+#include "tests/support/temp_folder.h"
 
 namespace shadowgen {
 namespace {
@@ -23,15 +23,6 @@ namespace fs = std::filesystem;
 
 class CompressedOutput : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) /
-           ("shadowgen-compressed-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   static std::string contents(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
@@ -47,7 +38,8 @@ class CompressedOutput : public ::testing::Test {
     });
   }
 
-  fs::path dir_;
+  test::TempFolder folder_{"shadowgen-compressed"};
+  const fs::path& dir_ = folder_.path();
 };
 
 TEST_F(CompressedOutput, NamesEndingInGzAreCompressed) {
