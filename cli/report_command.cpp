@@ -15,7 +15,9 @@
 #include "cli/number_options.h"
 #include "cli/run_progress.h"
 #include "shadowgen/groups/face_groups.h"
+#include "shadowgen/model/number_text.h"
 #include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/radiation_report.h"
 #include "shadowgen/sky/sky_subdivision.h"
 
 namespace shadowgen::cli {
@@ -37,9 +39,10 @@ struct ReportArgs {
   std::string output;                   // empty: standard output
   std::size_t top = 10;                 // table: most shadowed faces listed per light
   std::vector<double> thresholds{2.0};  // sun-hours: hours the areas are counted at
-  std::string weather;                  // irradiation: an EPW file, else the scene's
+  std::string weather;                  // irradiation, radiation: an EPW file, else the scene's
+  std::optional<double> albedo;         // radiation: every hour's, else the weather file's
   std::vector<std::string> group_by;    // groups/face_groups.h rules; none: the scene's groups
-  int sky_subdivisions = api::SkyReportSettings{}.subdivisions;  // sky: Reinhart MF:N (--sky)
+  int sky_subdivisions = api::SkyReportSettings{}.subdivisions;  // sky, radiation: MF:N (--sky)
   ReadingArgs reading;
   MethodArgs method;  // a scene's (LoadOptions::method)
 };
@@ -87,6 +90,27 @@ std::string sky_report_text(const ReportArgs& args, const RunFiles& files) {
   return report;
 }
 
+// Direct, diffuse and ground-reflected irradiation: the input's sun paths (a scene's
+// generated with lit areas only), then the sky's patches.
+std::string radiation_report_text(const ReportArgs& args, const RunFiles& files) {
+  api::LoadSettings settings = load_settings(args.reading, files);
+  RunProgress progress(args.input, progress_stream(args.reading.quiet));
+  progress.watch(settings);
+  api::RadiationReportSettings radiation;
+  radiation.subdivisions = args.sky_subdivisions;
+  radiation.weather = args.weather;
+  radiation.albedo = args.albedo;
+  radiation.csv_safe = args.csv_safe;
+  std::vector<std::string> warnings;  // after the progress line
+  radiation.on_warning = [&warnings](const std::string& warning) { warnings.push_back(warning); };
+  const std::string report = api::radiation_report(args.input, settings, radiation);
+  progress.finish();
+  for (const std::string& warning : warnings) {
+    std::cerr << "shadowgen: warning: " << args.input << ": " << warning << '\n';
+  }
+  return report;
+}
+
 void write_report(const ReportArgs& args, const std::string& report) {
   if (args.output.empty()) {
     std::cout << report << std::flush;
@@ -106,6 +130,15 @@ void run_report(const ReportArgs& args) {
                        args.method.name + " does not apply");
     }
     write_report(args, sky_report_text(args, files));
+    return;
+  }
+  if (args.format == "radiation") {
+    if (args.method.name != "exact") {
+      throw UsageError(
+          "--format radiation takes the exact lit areas of every sky patch; --method " +
+          args.method.name + " does not apply");
+    }
+    write_report(args, radiation_report_text(args, files));
     return;
   }
   api::LoadSettings settings = load_settings(args.reading, files);
@@ -159,9 +192,11 @@ Command add_report_command(CLI::App& app) {
                    "sun path and group, or face, the share of its area with at least each "
                    "--threshold, passing at 50 %: the BRE 209 test) or sky (per face: the sky view "
                    "factor with exact obstruction and the view factor of the ground, from the "
-                   "sky's patches as lights, --sky)")
+                   "sky's patches as lights, --sky) or radiation (per face and sun path: direct, "
+                   "diffuse and ground-reflected solar energy, shaded and unshaded, from a "
+                   "weather file and the Perez sky over the patches)")
       ->check(CLI::IsMember({"csv", "json", "table", "sun-hours", "sun-hours-table", "irradiation",
-                             "energyplus", "sky"}));
+                             "energyplus", "sky", "radiation"}));
   CLI::Option* group_by =
       command
           ->add_option("--group-by", args->group_by,
@@ -176,8 +211,15 @@ Command add_report_command(CLI::App& app) {
           ->delimiter(',');
   CLI::Option* weather =
       command->add_option("--weather", args->weather,
-                          "with --format irradiation: EnergyPlus weather file (EPW) whose hourly "
-                          "direct normal irradiance is used (default: the scene's \"weather\")");
+                          "with --format irradiation or radiation: EnergyPlus weather file (EPW) "
+                          "whose hourly irradiance is used (default: the scene's \"weather\")");
+  CLI::Option* albedo =
+      command
+          ->add_option("--albedo", args->albedo,
+                       "with --format radiation: the ground's albedo, 0 to 1, at every hour "
+                       "(default: the weather file's field 33, else " +
+                           shortest(kDefaultAlbedo) + ")")
+          ->check(number_in(NumberRange{.low = 0.0, .high = 1.0, .unit = ""}));
   CLI::Option* sky_option =
       command
           ->add_option_function<std::string>(
@@ -185,7 +227,8 @@ Command add_report_command(CLI::App& app) {
               [args](const std::string& name) {
                 args->sky_subdivisions = *sky::subdivisions_named(name);
               },
-              "with --format sky: the sky's patches, tregenza (145) or reinhart:N (Reinhart's "
+              "with --format sky or radiation: the sky's patches, tregenza (145) or reinhart:N "
+              "(Reinhart's "
               "MF:N, 144 N² + 1 patches, N from 1 to 64; default " +
                   sky::subdivision_name(api::SkyReportSettings{}.subdivisions) + ")")
           ->check(CLI::Validator(
@@ -218,12 +261,16 @@ Command add_report_command(CLI::App& app) {
   add_reading_options(*command, args->reading, /*progress=*/true);
   add_method_options(*command, args->method);
   // Run at the end of parsing, so that the error is reported as a parse error is.
-  command->callback([args, top, csv_safe, threshold, weather, group_by, sky_option] {
-    if (sky_option->count() > 0 && args->format != "sky") {
-      throw CLI::ValidationError("--sky", "applies only to --format sky");
+  command->callback([args, top, csv_safe, threshold, weather, albedo, group_by, sky_option] {
+    const bool radiation = args->format == "radiation";
+    if (sky_option->count() > 0 && args->format != "sky" && !radiation) {
+      throw CLI::ValidationError("--sky", "applies only to --format sky and radiation");
     }
-    if (weather->count() > 0 && args->format != "irradiation") {
-      throw CLI::ValidationError("--weather", "applies only to --format irradiation");
+    if (weather->count() > 0 && args->format != "irradiation" && !radiation) {
+      throw CLI::ValidationError("--weather", "applies only to --format irradiation and radiation");
+    }
+    if (albedo->count() > 0 && !radiation) {
+      throw CLI::ValidationError("--albedo", "applies only to --format radiation");
     }
     if (threshold->count() > 0 && !is_sun_hours(args->format)) {
       throw CLI::ValidationError("--threshold",
@@ -246,9 +293,9 @@ Command add_report_command(CLI::App& app) {
       throw CLI::ValidationError("--top", "applies only to --format table");
     }
     if (csv_safe->count() > 0 && args->format != "csv" && args->format != "sun-hours" &&
-        args->format != "irradiation" && args->format != "sky") {
-      throw CLI::ValidationError("--csv-safe",
-                                 "applies only to --format csv, sun-hours, irradiation and sky");
+        args->format != "irradiation" && args->format != "sky" && !radiation) {
+      throw CLI::ValidationError(
+          "--csv-safe", "applies only to --format csv, sun-hours, irradiation, sky and radiation");
     }
   });
   return {command, [args] { run_report(*args); }};

@@ -343,6 +343,36 @@ void define_module(py::module_& module) {
       "each face's sky view factor with exact obstruction, the sky's patches (Reinhart MF:N, "
       "1: Tregenza's 145) generated as lights.");
   module.def(
+      "radiation_report",
+      [](const py::object& path, const py::object& weather, const py::object& albedo,
+         int subdivisions, bool csv_safe, int threads, const py::object& lights, bool strict) {
+        Warnings warnings;
+        api::LoadSettings settings;
+        settings.read = read_settings(strict, lights, warnings);
+        settings.generate = generate_settings("exact", 256, 2048, threads, false, false);
+        api::RadiationReportSettings radiation;
+        radiation.subdivisions = subdivisions;
+        if (!weather.is_none()) radiation.weather = path_of(weather);
+        if (!albedo.is_none()) radiation.albedo = albedo.cast<double>();
+        radiation.csv_safe = csv_safe;
+        radiation.on_warning = warnings.collector();
+        const std::string file = path_of(path);
+        std::string text;
+        {
+          const py::gil_scoped_release unlocked;
+          text = api::radiation_report(file, settings, radiation);
+        }
+        warnings.issue();
+        return text;
+      },
+      "path"_a, py::kw_only(), "weather"_a = py::none(), "albedo"_a = py::none(),
+      "subdivisions"_a = api::RadiationReportSettings{}.subdivisions, "csv_safe"_a = false,
+      "threads"_a = 0, "lights"_a = py::none(), "strict"_a = false,
+      "`shadowgen report --format radiation` of the scene (or database) at `path`, byte for "
+      "byte: per face and sun path, direct, diffuse (the Perez sky over the patches) and "
+      "ground-reflected irradiation, shaded and unshaded, from `weather` (an EPW file; default: "
+      "the scene's) and `albedo` (default: the weather file's, else 0.2).");
+  module.def(
       "write_database",
       [](const api::Shadows& shadows, const py::object& path) {
         write_file(path, [&](const std::string& file) { api::write_database(shadows, file); });

@@ -16,6 +16,7 @@
 #include "shadowgen/output/gltf_export.h"
 #include "shadowgen/output/irradiation_report.h"
 #include "shadowgen/output/obj_export.h"
+#include "shadowgen/output/radiation_report.h"
 #include "shadowgen/output/report.h"
 #include "shadowgen/output/sky_report.h"
 #include "shadowgen/output/sun_hours_report.h"
@@ -52,14 +53,15 @@ std::vector<groups::FaceGroup> report_groups(const shadowgen::Scene& scene,
   return {};
 }
 
-// The weather file irradiation reads: settings.weather, else the scene's.
-Weather weather_for(const ShadowedScene& shadowed, const ReportSettings& settings) {
-  if (!settings.weather.empty()) return weather::read_epw(settings.weather);
+// The weather file a report reads: `file`, else the scene's.
+Weather weather_for(const ShadowedScene& shadowed, const std::string& file,
+                    const std::string& report) {
+  if (!file.empty()) return weather::read_epw(file);
   if (shadowed.scene.weather) return *shadowed.scene.weather;
-  throw shadowgen::InputError(
-      shadowed.scene.file, "",
-      "the irradiation report needs a weather file: a scene's \"weather\" key, or "
-      "--weather FILE.epw");
+  throw shadowgen::InputError(shadowed.scene.file, "",
+                              "the " + report +
+                                  " report needs a weather file: a scene's \"weather\" key, or "
+                                  "--weather FILE.epw");
 }
 
 std::string report_text(const ShadowedScene& shadowed, const ReportSettings& settings) {
@@ -76,7 +78,7 @@ std::string report_text(const ShadowedScene& shadowed, const ReportSettings& set
       return std::move(shading.csv);
     }
     case ReportFormat::kIrradiation:
-      return irradiation_csv(shadowed, weather_for(shadowed, settings), ids);
+      return irradiation_csv(shadowed, weather_for(shadowed, settings.weather, "irradiation"), ids);
     case ReportFormat::kTable:
       return report_table(shadowed, settings.top, groups);
     case ReportFormat::kSunHours:
@@ -95,6 +97,27 @@ std::string report_text(const ShadowedScene& shadowed, const ReportSettings& set
       break;
   }
   return report_csv(shadowed, ids, groups);
+}
+
+// `scene`'s exposure to the sky of MF:`subdivisions`, its patches generated on
+// settings.generate's threads, shown to settings.on_scene as a scene of one light each and
+// counted by settings.generate.on_light_done.
+sky::SkyExposure exposure_of(const shadowgen::Scene& scene, int subdivisions,
+                             const LoadSettings& settings) {
+  sky::SkyOptions sky_options;
+  sky_options.subdivisions = subdivisions;
+  sky_options.threads = settings.generate.threads;
+  if (settings.on_scene) {
+    settings.on_scene(
+        detail::scene_view(sky::sky_scene(scene, sky::reinhart_patches(sky_options.subdivisions))));
+  }
+  if (settings.generate.on_light_done) {
+    sky_options.on_light_done = [&settings](std::size_t patch, const LightStats& stats) {
+      settings.generate.on_light_done(
+          {patch, stats.faces_considered, stats.lit_polygons, stats.seconds});
+    };
+  }
+  return sky::sky_exposure(scene, sky_options);
 }
 
 // What draws lit polygons needs exact shadows.
@@ -118,22 +141,29 @@ std::string sky_report(const std::string& path, const LoadSettings& settings,
     options.verbose = settings.read.verbose;
     options.on_warning = settings.read.on_warning;
     const shadowgen::Scene scene = load_scene(path, options);
-    sky::SkyOptions sky_options;
-    sky_options.subdivisions = sky_settings.subdivisions;
-    sky_options.threads = settings.generate.threads;
-    if (settings.on_scene) {
-      settings.on_scene(detail::scene_view(
-          sky::sky_scene(scene, sky::reinhart_patches(sky_options.subdivisions))));
-    }
-    if (settings.generate.on_light_done) {
-      sky_options.on_light_done = [&settings](std::size_t patch, const LightStats& stats) {
-        settings.generate.on_light_done(
-            {patch, stats.faces_considered, stats.lit_polygons, stats.seconds});
-      };
-    }
-    const sky::SkyExposure exposure = sky::sky_exposure(scene, sky_options);
+    const sky::SkyExposure exposure = exposure_of(scene, sky_settings.subdivisions, settings);
     return sky_view_factor_csv(scene, exposure,
                                sky_settings.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
+  });
+}
+
+std::string radiation_report(const std::string& path, const LoadSettings& settings,
+                             const RadiationReportSettings& radiation) {
+  if (radiation.albedo && !(*radiation.albedo >= 0.0 && *radiation.albedo <= 1.0)) {
+    throw std::invalid_argument("an albedo lies between 0 and 1");
+  }
+  LoadSettings sun_paths = settings;
+  sun_paths.generate.sun_hours_regions = false;
+  const Shadows shadows = load(path, sun_paths);
+  return detail::on_threads(shadows, [&] {
+    const ShadowedScene& shadowed = detail::model(shadows);
+    const Weather weather = weather_for(shadowed, radiation.weather, "radiation");
+    const sky::SkyExposure exposure = exposure_of(shadowed.scene, radiation.subdivisions, settings);
+    RadiationOptions options;
+    options.albedo = radiation.albedo;
+    options.on_warning = radiation.on_warning;
+    return radiation_csv(shadowed, exposure, weather, options,
+                         radiation.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);
   });
 }
 

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,25 @@ struct SkyReportSettings {
 // (light k is patch k); on_scene, called with the scene whose lights are the patches.
 std::string sky_report(const std::string& path, const LoadSettings& settings = {},
                        const SkyReportSettings& sky = {});
+
+struct RadiationReportSettings {
+  int subdivisions = 8;               // the sky's patches, as SkyReportSettings's
+  std::string weather = {};           // an EPW file; empty: the scene's weather
+  std::optional<double> albedo = {};  // 0 to 1, every hour's; else the weather file's
+  bool csv_safe = false;              // a ' before ids a spreadsheet would run as formulas
+  std::function<void(const std::string& warning)> on_warning = {};  // a missing albedo
+};
+
+// `shadowgen report --format radiation` (docs/radiation.md), byte for byte: per face and
+// sun path, direct, diffuse and ground-reflected irradiation, shaded and unshaded, as CSV,
+// for the scene at `path` (its sun paths generated with lit areas only) or a database. The
+// sky's patches are generated as sky_report's are, after the sun paths. Of `settings`:
+// read; generate.threads and generate.on_light_done (the sun paths' lights, then the
+// patches); on_scene, called with the scene read, then with the sky's scene. Throws
+// InputError for an input without sun paths or weather and for the weather file's missing
+// hours and values; std::invalid_argument for an albedo outside [0, 1].
+std::string radiation_report(const std::string& path, const LoadSettings& settings = {},
+                             const RadiationReportSettings& radiation = {});
 
 // The shadowed database (shadowgen-shadowed/1), which load() reads back.
 void write_database(const Shadows& shadows, const std::string& path);

@@ -112,6 +112,12 @@ struct WeatherHour {
   // irradiance in W/m2. nullopt where the file marks it missing (9999 or more) or gives a
   // negative value; an error only when an instant needs it.
   std::optional<double> direct_normal_wh_m2;
+  // The same for the global horizontal and the diffuse horizontal radiation, over the hour
+  // on a horizontal surface (Wh/m2, the hour's mean in W/m2), missing as above.
+  std::optional<double> global_horizontal_wh_m2;
+  std::optional<double> diffuse_horizontal_wh_m2;
+  // The ground's albedo, 0 to 1; nullopt where the file marks it missing (999 or more).
+  std::optional<double> albedo;
   std::size_t line = 0;  // in the file, for messages
 };
 

@@ -4,10 +4,10 @@
 #include <glm/geometric.hpp>
 
 #include "detail/csv_fields.h"
+#include "detail/instant_time.h"
 #include "detail/sun_paths_required.h"
 #include "hsr/area.h"
 #include "hsr/polygon3.h"
-#include "shadowgen/model/input_error.h"
 #include "shadowgen/sun/civil_time.h"
 #include "shadowgen/weather/irradiance.h"
 
@@ -20,15 +20,9 @@ std::vector<double> direct_normal_of(const ShadowedScene& shadowed, const SunPat
   std::vector<double> dni;
   dni.reserve(path.instants.size());
   for (const std::size_t l : path.instants) {
-    const Light& light = shadowed.scene.lights.at(l);
-    const std::optional<sun::CivilTime> time =
-        light.sun ? sun::parse_civil_time(light.sun->time) : std::nullopt;
-    if (!time) {
-      throw InputError(weather.file, "",
-                       "light '" + light.id + "' of sun path '" + path.id +
-                           "' has no instant to read the weather at");
-    }
-    dni.push_back(weather::direct_normal_wh_m2(weather, *time));
+    const sun::CivilTime time =
+        detail::instant_time(shadowed.scene.lights.at(l), path, weather.file);
+    dni.push_back(weather::direct_normal_wh_m2(weather, time));
   }
   return dni;
 }

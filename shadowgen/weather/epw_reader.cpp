@@ -49,10 +49,14 @@ constexpr std::size_t kMonth = 1;
 constexpr std::size_t kDay = 2;
 constexpr std::size_t kHour = 3;
 constexpr std::size_t kMinute = 4;
+constexpr std::size_t kGlobalHorizontal = 13;
 constexpr std::size_t kDirectNormal = 14;
+constexpr std::size_t kDiffuseHorizontal = 15;
+constexpr std::size_t kAlbedo = 32;
 
-// The data dictionary's "missing" for radiation: 9999 or more.
+// The data dictionary's "missing" for radiation: 9999 or more; for the albedo, 999.
 constexpr double kMissingRadiation = 9999.0;
+constexpr double kMissingAlbedo = 999.0;
 // Rows carry no year that counts, and February 29 may be among them: days are checked
 // against a leap year.
 constexpr int kAnyLeapYear = 2000;
@@ -190,10 +194,13 @@ class EpwParser {
     }
     hour.hour = whole_within(fields[kHour], "hour", 1, 24, line);
     hour.minute = whole_within(fields[kMinute], "minute", 0, 60, line);
-    const double direct_normal = number(fields[kDirectNormal], "direct normal radiation", line);
-    if (direct_normal >= 0.0 && direct_normal < kMissingRadiation) {
-      hour.direct_normal_wh_m2 = direct_normal;
-    }
+    hour.global_horizontal_wh_m2 =
+        radiation(fields[kGlobalHorizontal], "global horizontal radiation (field 14)", line);
+    hour.direct_normal_wh_m2 =
+        radiation(fields[kDirectNormal], "direct normal radiation (field 15)", line);
+    hour.diffuse_horizontal_wh_m2 =
+        radiation(fields[kDiffuseHorizontal], "diffuse horizontal radiation (field 16)", line);
+    hour.albedo = albedo(fields[kAlbedo], line);
     check_order(hour);
     weather_.hours.push_back(hour);
   }
@@ -215,6 +222,25 @@ class EpwParser {
                              std::to_string(before.line) + "), found " + detail::hour_text(hour) +
                              "; the rows must run hour by hour");
     }
+  }
+
+  // A radiation field: nullopt where marked missing (9999 or more) or negative.
+  std::optional<double> radiation(std::string_view field, const std::string& what,
+                                  std::size_t line) const {
+    const double value = number(field, what, line);
+    if (value >= 0.0 && value < kMissingRadiation) return value;
+    return std::nullopt;
+  }
+
+  // The albedo (field 33): 0 to 1, or 999 or more for missing.
+  std::optional<double> albedo(std::string_view field, std::size_t line) const {
+    const std::string what = "albedo (field 33)";
+    const double value = number(field, what, line);
+    if (value >= kMissingAlbedo) return std::nullopt;
+    if (value < 0.0 || value > 1.0) {
+      fail_at(line, what + " " + shortest(value) + " must lie between 0 and 1 (999: missing)");
+    }
+    return value;
   }
 
   double number(std::string_view field, const std::string& what, std::size_t line) const {

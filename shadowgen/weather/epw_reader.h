@@ -10,10 +10,13 @@
 //   GMT, -12 to 14, as EnergyPlus's Site:Location allows) and elevation (m, -1000 to
 //   9999.9) as the Site, with north_axis_deg 0;
 // - DATA PERIODS: the records per hour, which must be 1 (hourly files only);
-// - each row's month, day, hour (1 to 24), minute (0 to 60) and field 15, the direct
-//   normal radiation in Wh/m2 (fields counted from 1: year, month, day, hour, minute, the
-//   data source flags, then the dry bulb temperature as field 7). The year (field 1) must
-//   be a whole number and is otherwise not read; the other fields are not read.
+// - each row's month, day, hour (1 to 24), minute (0 to 60), the global horizontal
+//   (field 14), direct normal (15) and diffuse horizontal (16) radiation in Wh/m2, each a
+//   number, missing where 9999 or more or negative, and the albedo (33), a number from 0
+//   to 1 or 999 or more for missing (fields counted from 1: year, month, day, hour,
+//   minute, the data source flags, then the dry bulb temperature as field 7). The year
+//   (field 1) must be a whole number and is otherwise not read; the other fields are not
+//   read.
 // The rows must run hour by hour, each the hour after the one before it (hour 1 of the
 // next day after hour 24, February 29 present or not, January 1 after December 31), and
 // no hour may come twice: a file holds at most a year.

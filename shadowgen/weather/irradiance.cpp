@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "detail/hour_text.h"
@@ -33,23 +34,44 @@ const WeatherHour* weather_hour_at(const Weather& weather,
   return found != end && key(*found) == wanted ? &*found : nullptr;
 }
 
-double direct_normal_wh_m2(const Weather& weather, const sun::CivilTime& local_standard_time) {
+const WeatherHour& weather_hour_needed(const Weather& weather,
+                                       const sun::CivilTime& local_standard_time) {
   const WeatherHour* hour = weather_hour_at(weather, local_standard_time);
-  const std::string instant = sun::civil_text(local_standard_time);
   if (hour == nullptr) {
     const sun::CivilTime& t = local_standard_time;
     throw InputError(weather.file, "",
-                     "no " + detail::hour_text(t.month, t.day, t.hour + 1) + " for " + instant +
-                         " (local standard time; the year is not matched)");
+                     "no " + detail::hour_text(t.month, t.day, t.hour + 1) + " for " +
+                         sun::civil_text(t) + " (local standard time; the year is not matched)");
   }
-  if (!hour->direct_normal_wh_m2) {
+  return *hour;
+}
+
+double radiation_wh_m2(const Weather& weather, const sun::CivilTime& local_standard_time,
+                       Radiation which) {
+  const WeatherHour& hour = weather_hour_needed(weather, local_standard_time);
+  const auto& [value, what] = [&]() -> std::pair<const std::optional<double>&, const char*> {
+    switch (which) {
+      case Radiation::kGlobalHorizontal:
+        return {hour.global_horizontal_wh_m2, "global horizontal radiation"};
+      case Radiation::kDiffuseHorizontal:
+        return {hour.diffuse_horizontal_wh_m2, "diffuse horizontal radiation"};
+      case Radiation::kDirectNormal:
+        break;
+    }
+    return {hour.direct_normal_wh_m2, "direct normal radiation"};
+  }();
+  if (!value) {
     throw InputError(weather.file, "",
-                     "line " + std::to_string(hour->line) + ": the direct normal radiation of " +
-                         detail::hour_text(*hour) +
-                         " is marked missing (9999 or more, or negative), and " + instant +
-                         " needs it");
+                     "line " + std::to_string(hour.line) + ": the " + what + " of " +
+                         detail::hour_text(hour) +
+                         " is marked missing (9999 or more, or negative), and " +
+                         sun::civil_text(local_standard_time) + " needs it");
   }
-  return *hour->direct_normal_wh_m2;
+  return *value;
+}
+
+double direct_normal_wh_m2(const Weather& weather, const sun::CivilTime& local_standard_time) {
+  return radiation_wh_m2(weather, local_standard_time, Radiation::kDirectNormal);
 }
 
 }  // namespace shadowgen::weather

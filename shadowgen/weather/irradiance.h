@@ -23,9 +23,21 @@ namespace shadowgen::weather {
 const WeatherHour* weather_hour_at(const Weather& weather,
                                    const sun::CivilTime& local_standard_time);
 
-// The direct normal radiation of that hour, in Wh/m2: also the hour's mean direct normal
+// The hour of `weather` that holds `local_standard_time`; InputError naming the weather
+// file when the file has none.
+const WeatherHour& weather_hour_needed(const Weather& weather,
+                                       const sun::CivilTime& local_standard_time);
+
+// Which radiation of a weather hour an output needs.
+enum class Radiation { kGlobalHorizontal, kDirectNormal, kDiffuseHorizontal };
+
+// That radiation of the hour holding `local_standard_time`, in Wh/m2: also the hour's mean
 // irradiance in W/m2. InputError naming the weather file when the file has no such hour,
 // or (with its line) when it marks the hour's value missing.
+double radiation_wh_m2(const Weather& weather, const sun::CivilTime& local_standard_time,
+                       Radiation which);
+
+// radiation_wh_m2 of the direct normal radiation.
 double direct_normal_wh_m2(const Weather& weather, const sun::CivilTime& local_standard_time);
 
 }  // namespace shadowgen::weather

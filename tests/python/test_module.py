@@ -173,6 +173,26 @@ def test_a_database_written_reads_back_with_the_same_lit_areas(scenes, tmp_path)
     assert again.exact and again.method == "exact"
 
 
+def test_the_radiation_report_is_the_commands_byte_for_byte(tmp_path):
+    header = ["LOCATION,Test,,GBR,Test,000000,51.5,0.0,0.0,10.0", "DESIGN CONDITIONS,0",
+              "TYPICAL/EXTREME PERIODS,0", "GROUND TEMPERATURES,0",
+              "HOLIDAYS/DAYLIGHT SAVINGS,No,0,0,0", "COMMENTS 1,", "COMMENTS 2,",
+              "DATA PERIODS,1,1,Data,Sunday, 1/ 1,12/31"]
+    rows = ["2026,3,21,%d,0,?9,6,4,87,101800,0,0,316,500,400,150,0,0,0,0,240,4,8,8,11,77777,9,"
+            "999999999,0,0.1,0,88,0.3,0,0" % h for h in range(1, 25)]
+    (tmp_path / "march.epw").write_text("\n".join(header + rows) + "\n")
+    scene = tmp_path / "yard.json"
+    scene.write_text(json.dumps({
+        "format": "shadowgen-scene/1", "weather": "march.epw",
+        "polygons": [{"id": "yard", "outer": [[0, 0, 0], [10, 0, 0], [10, 10, 0], [0, 10, 0]]},
+                     {"id": "wall", "outer": [[0, 0, 0], [10, 0, 0], [10, 0, 4], [0, 0, 4]]}],
+        "lights": [{"id": "day", "type": "sun", "from": "2026-03-21T10:00",
+                    "to": "2026-03-21T14:00", "step_min": 60}]}))
+    assert shadowgen.radiation_report(scene, subdivisions=2, albedo=0.5) == \
+        run_shadowgen("report", scene, "--format", "radiation", "--sky", "reinhart:2",
+                      "--albedo", "0.5")
+
+
 @pytest.mark.parametrize("subdivisions,sky", [(1, "tregenza"), (2, "reinhart:2")])
 def test_the_sky_report_is_the_commands_byte_for_byte(scenes, subdivisions, sky):
     assert shadowgen.sky_report(scenes / "courtyard.json", subdivisions=subdivisions) == \

@@ -106,6 +106,43 @@ TEST(EpwReader, MissingAndNegativeRadiationAreUnknown) {
   EXPECT_EQ(weather.hours[4].direct_normal_wh_m2, 0.0);
 }
 
+// Row `hour` of day 1 of January (direct normal 101.5) with field `field` (from 1)
+// replaced by `value`.
+std::string row_with_field(int field, const std::string& value, int hour = 1) {
+  std::string row = epw_row(1, 1, hour, "101.5");
+  std::size_t start = 0;
+  for (int i = 1;; ++i) {
+    const std::size_t comma = row.find(',', start);
+    if (i == field) {
+      row.replace(start, (comma == std::string::npos ? row.size() : comma) - start, value);
+      return row;
+    }
+    start = comma + 1;
+  }
+}
+
+// Fields 14 (global horizontal, 1111 in every test row), 16 (diffuse horizontal, 2222) and
+// 33 (albedo, 0.000) beside field 15.
+TEST(EpwReader, ReadsGlobalAndDiffuseHorizontalRadiationAndTheAlbedo) {
+  std::vector<std::string> lines = epw_lines(1, 1, 1);
+  lines[9] = row_with_field(33, "0.23", 2);
+  lines[10] = row_with_field(33, "999", 3);
+  lines[11] = row_with_field(16, "9999", 4);
+  lines[12] = row_with_field(14, "-3", 5);
+  const Weather weather = parse(joined(lines));
+  const WeatherHour& first = weather.hours[0];
+  EXPECT_EQ(first.global_horizontal_wh_m2, 1111.0);
+  EXPECT_EQ(first.direct_normal_wh_m2, test::test_direct_normal(1, 1));  // field 15
+  EXPECT_EQ(first.diffuse_horizontal_wh_m2, 2222.0);
+  EXPECT_EQ(first.albedo, 0.0);
+  EXPECT_EQ(weather.hours[1].albedo, 0.23);
+  EXPECT_FALSE(weather.hours[2].albedo.has_value());  // 999: missing
+  EXPECT_FALSE(weather.hours[3].diffuse_horizontal_wh_m2.has_value());
+  EXPECT_EQ(weather.hours[3].global_horizontal_wh_m2, 1111.0);
+  EXPECT_FALSE(weather.hours[4].global_horizontal_wh_m2.has_value());
+  EXPECT_EQ(weather.hours[4].diffuse_horizontal_wh_m2, 2222.0);
+}
+
 void expect_same(const Weather& a, const Weather& b) {
   EXPECT_EQ(a.city, b.city);
   EXPECT_EQ(a.site.latitude_deg, b.site.latitude_deg);
@@ -287,20 +324,6 @@ std::string with_inserted(std::size_t index, const std::string& line) {
   return joined(lines);
 }
 
-// The first row with field `field` (from 1) replaced by `value`.
-std::string row_with_field(int field, const std::string& value) {
-  std::string row = epw_row(1, 1, 1, "101.5");
-  std::size_t start = 0;
-  for (int i = 1;; ++i) {
-    const std::size_t comma = row.find(',', start);
-    if (i == field) {
-      row.replace(start, (comma == std::string::npos ? row.size() : comma) - start, value);
-      return row;
-    }
-    start = comma + 1;
-  }
-}
-
 std::string row_without_last_field() {
   std::string row = epw_row(1, 1, 1, "101.5");
   return row.erase(row.rfind(','));
@@ -374,9 +397,21 @@ const std::vector<EpwError> kErrors = {
     {"MinuteOutOfRange", with_first_row(row_with_field(5, "61")),
      "line 9: minute 61 must lie between 0 and 60"},
     {"DirectNormalNotANumber", with_first_row(row_with_field(15, "abc")),
-     "line 9: direct normal radiation 'abc' is not a number"},
+     "line 9: direct normal radiation (field 15) 'abc' is not a number"},
     {"DirectNormalEmpty", with_first_row(row_with_field(15, "")),
-     "line 9: direct normal radiation is empty; it must be a number"},
+     "line 9: direct normal radiation (field 15) is empty; it must be a number"},
+    {"GlobalHorizontalNotANumber", with_first_row(row_with_field(14, "x1")),
+     "line 9: global horizontal radiation (field 14) 'x1' is not a number"},
+    {"DiffuseHorizontalNotANumber", with_first_row(row_with_field(16, "2;5")),
+     "line 9: diffuse horizontal radiation (field 16) '2;5' is not a number"},
+    {"DiffuseHorizontalEmpty", with_first_row(row_with_field(16, "")),
+     "line 9: diffuse horizontal radiation (field 16) is empty; it must be a number"},
+    {"AlbedoNotANumber", with_first_row(row_with_field(33, "snow")),
+     "line 9: albedo (field 33) 'snow' is not a number"},
+    {"AlbedoAboveOne", with_first_row(row_with_field(33, "1.5")),
+     "line 9: albedo (field 33) 1.5 must lie between 0 and 1 (999: missing)"},
+    {"AlbedoNegative", with_first_row(row_with_field(33, "-0.1")),
+     "line 9: albedo (field 33) -0.1 must lie between 0 and 1 (999: missing)"},
     {"MissingHour", with_line(20, nullptr),
      "line 21: expected the hour after month 1 day 1 hour 12 (line 20), found month 1 day 1 "
      "hour 14; the rows must run hour by hour"},
