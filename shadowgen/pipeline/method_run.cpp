@@ -24,4 +24,11 @@ GenerateResult shadows_by_method(const Scene& scene, const Method& method,
   return generate_shadows(scene, options);
 }
 
+GenerateResult shadows_by_method(Scene&& scene, const Method& method, GenerateOptions options) {
+  if (!method.exact()) return shadows_by_method(std::as_const(scene), method, std::move(options));
+  options.method = method;
+  options.estimate = nullptr;
+  return generate_shadows(std::move(scene), options);
+}
+
 }  // namespace shadowgen

@@ -14,5 +14,7 @@ namespace shadowgen {
 // `method`. Throws what generate_shadows throws, and std::invalid_argument for a sampled
 // method with a shard or kept instant polygons (the command line refuses them first).
 GenerateResult shadows_by_method(const Scene& scene, const Method& method, GenerateOptions options);
+// The same on a scene the result takes over where the method is exact (no copy of it).
+GenerateResult shadows_by_method(Scene&& scene, const Method& method, GenerateOptions options);
 
 }  // namespace shadowgen

@@ -162,6 +162,7 @@ class SceneParser {
                           detail::WarningSummary& summary) {
     detail::PolygonsRead read = detail::read_polygon_texts(texts, file_, options_.strict);
     std::vector<Face>& faces = result_.scene.faces;
+    face_ids_.reserve_more(read.faces.size());
     for (std::size_t i = 0; i < read.faces.size(); ++i) {
       const std::string& id = read.faces[i].id;
       if (!face_ids_.try_claim(id, polygon_owner(id))) {
@@ -170,7 +171,11 @@ class SceneParser {
       for (std::string& line : read.face_warnings[i]) summary.add(id, std::move(line));
     }
     std::move(read.warnings.begin(), read.warnings.end(), std::back_inserter(result_.warnings));
-    std::move(read.faces.begin(), read.faces.end(), std::back_inserter(faces));
+    if (faces.empty()) {
+      faces = std::move(read.faces);
+    } else {
+      std::move(read.faces.begin(), read.faces.end(), std::back_inserter(faces));
+    }
   }
 
   static std::string polygon_owner(const std::string& id) { return "polygon '" + id + "'"; }

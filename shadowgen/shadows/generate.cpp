@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "clipper/clip.h"
 #include "detail/closed_solids.h"
@@ -246,13 +247,18 @@ class PathSums {
 }  // namespace
 
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options) {
+  return generate_shadows(Scene(scene), options);
+}
+
+GenerateResult generate_shadows(Scene&& input, const GenerateOptions& options) {
   const bool sampled = static_cast<bool>(options.estimate);
   if (sampled && (options.method.exact() || options.shard)) {
     throw std::invalid_argument(
         "generate_shadows: an estimate needs a sampled method and no shard");
   }
   GenerateResult result;
-  result.shadowed.scene = scene;
+  result.shadowed.scene = std::move(input);
+  const Scene& scene = result.shadowed.scene;
   result.shadowed.shard = options.shard;
   result.shadowed.method = options.method;
   const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
@@ -283,9 +289,11 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
       options.threads ? static_cast<int>(options.threads) : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);
   detail::FaceParts parts;
-  arena.execute([&] { parts = detail::flatten(scene); });
   std::optional<detail::ClosedSolids> solids;
-  if (!sampled && options.leave_out_solids_backs) solids.emplace(parts);
+  arena.execute([&] {
+    parts = detail::flatten(scene);
+    if (!sampled && options.leave_out_solids_backs) solids.emplace(parts);
+  });
   std::mutex report_mutex;
   // Lights in parallel, and within each light the regions of its views (hsr/
   // image_regions.h) and its receivers, all on one pool of `threads` threads. The failure

@@ -124,5 +124,7 @@ class GenerationError : public std::runtime_error {
 // Throws GenerationError (with no file) where the shadows of a face cannot be computed;
 // nothing else of the result comes back then.
 GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& options = {});
+// The same on a scene the result takes over (ShadowedScene::scene), saving its copy.
+GenerateResult generate_shadows(Scene&& scene, const GenerateOptions& options = {});
 
 }  // namespace shadowgen

@@ -27,6 +27,8 @@ class IdRegistry {
   // The same without a place to fail at: whether `id` was free (and is now `owner`'s).
   bool try_claim(const std::string& id, std::string owner);
   bool contains(const std::string& id) const { return owners_.count(id) > 0; }
+  // Room for `more` ids besides those held, claimed without rehashing.
+  void reserve_more(std::size_t more) { owners_.reserve(owners_.size() + more); }
 
  private:
   std::unordered_map<std::string, std::string> owners_;

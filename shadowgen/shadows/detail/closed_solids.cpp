@@ -1,20 +1,21 @@
 #include "closed_solids.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <map>
 #include <numeric>
 #include <optional>
 #include <span>
-#include <unordered_map>
 #include <utility>
 
 #include "clipper/predicates.h"
 #include "hsr/chart_triangles.h"
+#include "hsr/parallel.h"
 
 namespace shadowgen::detail {
 namespace {
@@ -38,37 +39,44 @@ std::optional<std::vector<hsr::Triangle3>> triangles_of(const hsr::Polygon3& pol
   return out;
 }
 
-// A corner's exact coordinates as a key (0 and -0 alike).
+// A corner's exact coordinates as a key (0 and -0 alike), ordered lexicographically.
 using CornerKey = std::array<double, 3>;
 CornerKey key_of(const glm::dvec3& p) { return {p.x + 0.0, p.y + 0.0, p.z + 0.0}; }
-struct CornerHash {
-  std::size_t operator()(const CornerKey& k) const noexcept {
-    const clipper::Point2Hash h;
-    return h({k[0], k[1]}) ^ (h({k[2], k[0]}) * 0x9E3779B97F4A7C15ull);
-  }
-};
 
-// One edge of a loop or triangle, by its lower and higher corner id, with the way it runs.
+// One edge of a loop or triangle, by its lower and higher corner, with the way it runs.
+// Edges are told apart by their corners' exact coordinates, so runs need no shared
+// numbering of the corners and are made for every part at once.
 struct EdgeRun {
-  std::uint32_t low, high;
-  bool up;  // from low to high
+  CornerKey low, high;
   std::uint32_t part;
+  bool up;  // from low to high
 };
 
-// The edges of the closed loop `loop` (repeated corners in a row add none).
-template <typename Id>
-void add_runs(std::vector<EdgeRun>& runs, std::span<const glm::dvec3> loop, Id& id,
-              std::size_t part) {
+// The edges of the closed loop `loop` (repeated corners in a row add none), written from
+// `out` on; returns the end of what was written.
+EdgeRun* add_runs(EdgeRun* out, std::span<const glm::dvec3> loop, std::size_t part) {
   for (std::size_t k = 0; k < loop.size(); ++k) {
-    const std::uint32_t from = id(loop[k]), to = id(loop[k + 1 == loop.size() ? 0 : k + 1]);
+    const CornerKey from = key_of(loop[k]), to = key_of(loop[k + 1 == loop.size() ? 0 : k + 1]);
     if (from == to) continue;
-    runs.push_back(
-        {std::min(from, to), std::max(from, to), from < to, static_cast<std::uint32_t>(part)});
+    const bool up = from < to;
+    *out++ = {up ? from : to, up ? to : from, static_cast<std::uint32_t>(part), up};
   }
+  return out;
 }
 
+// The runs of the closed loop `loop`'s edges, added to `runs`.
+void add_runs(std::vector<EdgeRun>& runs, std::span<const glm::dvec3> loop, std::size_t part) {
+  const std::size_t first = runs.size();
+  runs.resize(first + loop.size());
+  const EdgeRun* end = add_runs(runs.data() + first, loop, part);
+  runs.resize(static_cast<std::size_t>(end - runs.data()));
+}
+
+bool same_edge(const EdgeRun& a, const EdgeRun& b) { return a.low == b.low && a.high == b.high; }
+
+// In edge order; the runs of one edge in any order (nothing asked of them depends on it).
 void sort_runs(std::vector<EdgeRun>& runs) {
-  std::sort(runs.begin(), runs.end(), [](const EdgeRun& a, const EdgeRun& b) {
+  tbb::parallel_sort(runs.begin(), runs.end(), [](const EdgeRun& a, const EdgeRun& b) {
     return a.low != b.low ? a.low < b.low : a.high < b.high;
   });
 }
@@ -77,8 +85,7 @@ void sort_runs(std::vector<EdgeRun>& runs) {
 template <typename Visit>
 void for_each_edge(const std::vector<EdgeRun>& runs, Visit visit) {
   for (std::size_t g = 0, e = 0; g < runs.size(); g = e) {
-    for (e = g + 1; e < runs.size() && runs[e].low == runs[g].low && runs[e].high == runs[g].high;
-         ++e) {
+    for (e = g + 1; e < runs.size() && same_edge(runs[e], runs[g]); ++e) {
     }
     visit(std::span<const EdgeRun>(runs.data() + g, e - g));
   }
@@ -88,6 +95,36 @@ void for_each_edge(const std::vector<EdgeRun>& runs, Visit visit) {
 // consistently oriented surface.
 bool once_each_way(std::span<const EdgeRun> uses) {
   return uses.size() == 2 && uses[0].up != uses[1].up;
+}
+
+// Every part's boundary runs, made in parallel: the runs of part i from offset[i] on.
+std::vector<EdgeRun> boundary_runs(const FaceParts& parts) {
+  const std::size_t n = parts.size();
+  std::vector<std::size_t> offset(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t corners = parts.polygons[i].outer.size();
+    for (const hsr::Loop3& hole : parts.polygons[i].holes) corners += hole.size();
+    offset[i + 1] = offset[i] + corners;
+  }
+  std::vector<EdgeRun> runs(offset[n]);
+  std::vector<std::size_t> made(n);
+  hsr::for_each_in_parallel(n, [&](std::size_t i) {
+    const hsr::Polygon3& polygon = parts.polygons[i];
+    EdgeRun* end = add_runs(runs.data() + offset[i], polygon.outer, i);
+    for (const hsr::Loop3& hole : polygon.holes) end = add_runs(end, hole, i);
+    made[i] = static_cast<std::size_t>(end - (runs.data() + offset[i]));
+  });
+  // Closed up where repeated corners left gaps.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kept != offset[i]) {
+      std::copy_n(runs.begin() + static_cast<std::ptrdiff_t>(offset[i]), made[i],
+                  runs.begin() + static_cast<std::ptrdiff_t>(kept));
+    }
+    kept += made[i];
+  }
+  runs.resize(kept);
+  return runs;
 }
 
 struct Box {
@@ -230,26 +267,10 @@ bool turned_away(const hsr::Triangle3& t, const glm::dvec3& direction) {
 
 ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size(), -1) {
   const std::size_t n = parts.size();
-  // Corners numbered by their exact coordinates.
-  std::unordered_map<CornerKey, std::uint32_t, CornerHash> ids;
-  auto number = [&ids](const hsr::Loop3& loop) {
-    for (const glm::dvec3& p : loop)
-      ids.try_emplace(key_of(p), static_cast<std::uint32_t>(ids.size()));
-  };
-  for (const hsr::Polygon3& polygon : parts.polygons) {
-    number(polygon.outer);
-    for (const hsr::Loop3& hole : polygon.holes) number(hole);
-  }
-  auto id = [&ids](const glm::dvec3& p) { return ids.at(key_of(p)); };
   // The parts' boundaries first, which need no triangles: parts are joined along the
   // edges they share, and only components whose every edge runs once each way are
   // triangulated and looked at further.
-  std::vector<EdgeRun> runs;
-  for (std::size_t i = 0; i < n; ++i) {
-    const hsr::Polygon3& polygon = parts.polygons[i];
-    add_runs(runs, polygon.outer, id, i);
-    for (const hsr::Loop3& hole : polygon.holes) add_runs(runs, hole, id, i);
-  }
+  std::vector<EdgeRun> runs = boundary_runs(parts);
   sort_runs(runs);
   std::vector<std::size_t> parent(n);
   std::iota(parent.begin(), parent.end(), std::size_t{0});
@@ -264,12 +285,26 @@ ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size()
   for_each_edge(runs, [&](std::span<const EdgeRun> uses) {
     if (!once_each_way(uses)) closed[root(uses[0].part)] = 0;
   });
-  std::map<std::size_t, std::vector<std::size_t>> members;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (closed[root(i)]) members[root(i)].push_back(i);
+  runs = {};
+  // The closed components, each listed in part order, in the order of their first parts.
+  std::vector<std::vector<std::size_t>> members;
+  {
+    std::vector<std::size_t> component(n, n);  // by root: its index in `members`
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t r = root(i);
+      if (!closed[r]) continue;
+      if (component[r] == n) {
+        component[r] = members.size();
+        members.emplace_back();
+      }
+      members[component[r]].push_back(i);
+    }
   }
   part_triangles_.resize(n);
-  for (const auto& [r, list] : members) {
+  // Each component on its own, in parallel: it writes only its own parts' triangles.
+  std::vector<std::optional<Solid>> found(members.size());
+  hsr::for_each_in_parallel(members.size(), [&](std::size_t c) {
+    const std::vector<std::size_t>& list = members[c];
     // Triangulated, the surface must still run through each edge once each way: a
     // diagonal of one part along which others meet is an edge of four triangles.
     Solid solid;
@@ -288,8 +323,7 @@ ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size()
         break;
       }
       for (const hsr::Triangle3& t : *triangles) {
-        if (!all_triangles)
-          add_runs(triangle_runs, std::span<const glm::dvec3>(t.data(), 3), id, i);
+        if (!all_triangles) add_runs(triangle_runs, std::span<const glm::dvec3>(t.data(), 3), i);
       }
       solid.triangles.insert(solid.triangles.end(), triangles->begin(), triangles->end());
       planes.insert(planes.end(), triangles->size(), parts.coplanar[i]);
@@ -304,7 +338,7 @@ ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size()
     }
     if (!manifold || !outward(solid.triangles) || touches_itself(solid.triangles, planes)) {
       for (const std::size_t i : list) part_triangles_[i].clear();
-      continue;
+      return;
     }
     solid.low = solid.high = solid.triangles.front()[0];
     for (const hsr::Triangle3& t : solid.triangles) {
@@ -316,9 +350,13 @@ ClosedSolids::ClosedSolids(const FaceParts& parts) : solid_of_part_(parts.size()
     // out once here.
     std::erase_if(solid.triangles, hsr::degenerate);
     for (const std::size_t i : list) std::erase_if(part_triangles_[i], hsr::degenerate);
+    found[c] = std::move(solid);
+  });
+  for (std::size_t c = 0; c < members.size(); ++c) {
+    if (!found[c]) continue;
     const int index = static_cast<int>(solids_.size());
-    solids_.push_back(std::move(solid));
-    for (const std::size_t i : list) solid_of_part_[i] = index;
+    solids_.push_back(std::move(*found[c]));
+    for (const std::size_t i : members[c]) solid_of_part_[i] = index;
   }
 }
 
