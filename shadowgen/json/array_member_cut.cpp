@@ -1,7 +1,20 @@
 #include "shadowgen/json/array_member_cut.h"
 
+#include <array>
+
 namespace shadowgen {
 namespace {
+
+// The characters a scan stops at: 1 for the quote and the backslash (within a string), 2
+// for brackets and the quote (within an object or array). Runs of anything else (digits,
+// commas, spaces: most of a scene) are passed over a table look-up a character.
+constexpr std::array<unsigned char, 256> kStops = [] {
+  std::array<unsigned char, 256> stops{};
+  stops['"'] = 1 | 2;
+  stops['\\'] = 1;
+  for (const unsigned char c : {'{', '[', '}', ']'}) stops[c] = 2;
+  return stops;
+}();
 
 // A cursor over the text; every step returns false where the structure does not scan.
 class Scanner {
@@ -30,6 +43,8 @@ class Scanner {
     if (!take('"')) return false;
     const std::size_t first = at_;
     while (!done()) {
+      skip_to(1);
+      if (done()) return false;
       const char c = text_[at_++];
       if (c == '\\') {
         if (done()) return false;
@@ -51,6 +66,8 @@ class Scanner {
     if (c == '{' || c == '[') {
       std::size_t depth = 0;
       while (!done()) {
+        skip_to(2);
+        if (done()) return false;
         const char d = peek();
         if (d == '"') {
           if (!skip_string()) return false;
@@ -77,6 +94,13 @@ class Scanner {
   }
 
  private:
+  // Past every character that is not a stop of `kind` (kStops).
+  void skip_to(unsigned char kind) {
+    while (at_ < text_.size() && (kStops[static_cast<unsigned char>(text_[at_])] & kind) == 0) {
+      ++at_;
+    }
+  }
+
   std::string_view text_;
   std::size_t at_ = 0;
 };

@@ -60,14 +60,17 @@ std::vector<int> coplanar_groups(std::span<const hsr::Polygon3> polygons,
   const std::size_t n = polygons.size();
   std::vector<int> group(n, -1);
   std::vector<hsr::Plane3> canon(n);
-  double scale = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  std::vector<double> magnitude(n, 0.0);  // of each polygon's offset and coordinates
+  hsr::for_each_in_parallel(n, [&](std::size_t i) {
     canon[i] = canonical(planes[i]);
-    scale = std::max(scale, std::fabs(canon[i].offset));
+    double m = std::fabs(canon[i].offset);
     for (const glm::dvec3& v : polygons[i].outer) {
-      scale = std::max({scale, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+      m = std::max({m, std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
     }
-  }
+    magnitude[i] = m;
+  });
+  double scale = 0.0;
+  for (const double m : magnitude) scale = std::max(scale, m);
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),

@@ -13,25 +13,31 @@ namespace shadowgen::detail {
 FaceParts flatten(const Scene& scene) {
   FaceParts parts;
   parts.face_count = scene.faces.size();
-  glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k) {
-      const hsr::Polygon3& p = scene.faces[f].parts[k];
-      parts.polygons.push_back(p);
-      parts.owners.push_back({f, k});
-      for (const glm::dvec3& v : p.outer) {
-        lo = glm::min(lo, v);
-        hi = glm::max(hi, v);
-      }
-    }
+    for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k) parts.owners.push_back({f, k});
   }
-  // The planes and areas in parallel, on the threads of the calling task arena.
-  parts.planes.resize(parts.polygons.size());
-  parts.areas.resize(parts.polygons.size());
-  hsr::for_each_in_parallel(parts.polygons.size(), [&parts](std::size_t i) {
-    parts.planes[i] = hsr::plane_of(parts.polygons[i]);
-    parts.areas[i] = hsr::area(parts.polygons[i]);
+  // The copies, planes, areas and boxes in parallel, on the threads of the calling task
+  // arena; the box of them all from the parts' boxes in order (min and max are exact).
+  const std::size_t n = parts.owners.size();
+  parts.polygons.resize(n);
+  parts.planes.resize(n);
+  parts.areas.resize(n);
+  std::vector<glm::dvec3> low(n, glm::dvec3(INFINITY)), high(n, glm::dvec3(-INFINITY));
+  hsr::for_each_in_parallel(n, [&](std::size_t i) {
+    const PartOwner& owner = parts.owners[i];
+    const hsr::Polygon3& p = parts.polygons[i] = scene.faces[owner.face].parts[owner.part];
+    for (const glm::dvec3& v : p.outer) {
+      low[i] = glm::min(low[i], v);
+      high[i] = glm::max(high[i], v);
+    }
+    parts.planes[i] = hsr::plane_of(p);
+    parts.areas[i] = hsr::area(p);
   });
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = glm::min(lo, low[i]);
+    hi = glm::max(hi, high[i]);
+  }
   // The box's point nearest the world's origin, not its middle: an image coordinate is
   // then off by a few ulps of min(2|p|, the box's diagonal) for every scene point p. The
   // middle of a box that spans 1e14 would cost a face near the origin 1e-2 in its lit

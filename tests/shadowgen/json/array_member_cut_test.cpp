@@ -31,6 +31,20 @@ TEST(ArrayMemberCut, GivesEachElementAsWrittenAndTheRestWithTheArrayEmptied) {
       "{\"format\": \"f\", \"a\": {\"polygons\": [9]},\n \"polygons\" :\t[], \"lights\": []}");
 }
 
+// Bytes of any value inside strings (UTF-8, and the bytes above 0x7f in general) are
+// passed over as characters of the string, brackets and quotes beside them seen as such.
+TEST(ArrayMemberCut, PassesOverBytesOfAnyValueInStrings) {
+  const std::string text =
+      "{\"\xC3\xA9t\xC3\xA9\": 1, \"polygons\": [{\"id\": \"\xFF]\\\\\", \"x\": \"\x80{\"}, "
+      "\"\xE2\x82\xAC\\\"]\"]}";
+  const std::optional<ArrayMemberCut> cut = cut_array_member(text, "polygons");
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(elements_of(*cut),
+            (std::vector<std::string>{"{\"id\": \"\xFF]\\\\\", \"x\": \"\x80{\"}",
+                                      "\"\xE2\x82\xAC\\\"]\""}));
+  EXPECT_EQ(cut->rest, "{\"\xC3\xA9t\xC3\xA9\": 1, \"polygons\": []}");
+}
+
 TEST(ArrayMemberCut, AnEmptyArrayHasNoElements) {
   const std::optional<ArrayMemberCut> cut =
       cut_array_member(R"({"polygons": [ ], "format": "f"})", "polygons");
