@@ -1,74 +1,8 @@
 #pragma once
 
 // The Weiler–Atherton clipper (Weiler and Atherton 1977; Atherton, Weiler and Greenberg
-// 1978, section III): a concave subject with holes against a concave clip with holes,
-// giving both the inside pieces (subject ∩ clip) and the outside pieces (subject − clip).
-//
-// Method. The two boundaries are first snap rounded together (detail/snap_rounding.h):
-// every crossing and touching point is inserted into both, as a double, and the step is
-// repeated until the edges meet only at common vertices or as the very same segment.
-// Every later decision is then an exact predicate on that plane graph, with no rounded
-// point left to disagree with it. Each face of the graph has a winding number for each
-// operand; crossing an edge changes them by the operands' net multiplicities along it,
-// so they spread exactly from edge to edge around each vertex (detail/overlay.h): the
-// entry/exit alternation of the paper, at a touch as at a crossing, and for a boundary
-// that snapping ran along one segment twice or folded onto itself. An edge bounds the
-// inside pieces where the faces on one side lie in both regions and those on the other
-// do not (the outside pieces likewise); the pieces are then traced. Where several
-// traced edges meet at one point, the walk keeps to the tightest turn, and the loops are
-// split at repeated vertices, so every output loop is simple.
-//
-// Input. Any PolygonWithHoles2 / PolygonSet2 whose region is well formed: loops simple,
-// holes inside their outer loop, loops meeting at most at points. Orientation is free
-// (normalized on entry, by each loop's body: see encloses_counter_clockwise in
-// normalize.h). Repeated vertices, zero-area spikes and collinear vertices are
-// removed first; loops left with no area are dropped. Self-crossing loops are outside
-// the contract (the result is then unspecified, but the call returns, and its loops are
-// still simple: the snapping nodes them too), with one exception that rounding makes
-// common: a loop that crosses itself only within rounding of its vertices counts as its
-// body, and the slivers it closes off count as their windings say.
-//
-// Output. Polygons in the conventions of clipper/polygon.h: outer loops counter-
-// clockwise, holes clockwise and attached to the smallest outer loop that contains
-// them, no repeated vertices, no zero-length edges, no spikes. Vertices where a loop runs
-// straight on are kept: one may be where another loop touches it.
-//
-// Touching loops of one operand (a hole touching its outer loop, polygons of a set
-// meeting at a point) are noded by the same snapping. Where the snapping has run one
-// operand's boundary both ways along a segment (a needle of its region, or a crack,
-// narrower than the resolution below), the two copies cancel: they bound nothing.
-//
-// Exactness and tolerance. Orientation and side tests are exact (predicates.h). New
-// points are the crossings, each coordinate within 5u of its own magnitude of the exact
-// crossing (u = 2^-53; detail/crossing.h), however long the edges and whatever the
-// angle. The one tolerance is the hot pixel of a point (detail/snap.h): the square of six
-// ulps of its largest coordinate's magnitude around it, derived from that bound. An edge passing
-// through a vertex's pixel is routed through the vertex; vertices in each other's pixels
-// become one; both move the boundary by at most a pixel there. The tolerance is relative
-// to the coordinates' magnitude where the point lies, not to the edge lengths or to
-// coordinates elsewhere: a feature of 1e-9 near the origin is kept beside coordinates of
-// 1e8.
-//
-// Limit. Where a feature is narrower than the pixels around it (a needle a few ulps
-// wide), the snapping closes it up or folds it onto its neighbours; the winding numbers
-// count such folds as they are, so the pieces are the Boolean combination of the snapped
-// operands, which differ from the input by the pixels that moved them. The snapping is
-// iterated, and nothing proves that it always ends with edges meeting only at vertices:
-// it can cycle, cutting sliver loops out of routes and putting their points back. The
-// rounds first keep such points out, then, where that leaves edges crossing, run again
-// putting them back, stopping after 17 rounds of changes at the first state whose edges
-// are checked exactly to meet only at vertices, within 34 rounds more. Where neither
-// way ends noded, the operands are snap rounded on a grid instead (detail/grid_snap.h),
-// which nodes them by construction and moves each vertex of the loops snapped together
-// by less than 12u·M, M their largest coordinate magnitude: the pixel at M, however
-// small the vertex's own magnitude. The result is checked exactly all the same; were it
-// not noded, the pieces would still be valid loops but their areas could be wrong by
-// more than the grid accounts for, so the call would throw SnapRoundingError instead
-// of returning them.
-//
-// Cost. Candidate edge pairs come from a sweep over x with y-interval rejection, so a
-// clip costs O((n + k) log n + m) for n edges, k intersections and m pairs of edges
-// whose x-ranges overlap, instead of the all-pairs O(n²).
+// 1978, section III): its method, input and output, exactness, tolerance, limit and cost
+// are docs/clipper.md.
 
 #include <cstddef>
 #include <span>
@@ -80,7 +14,7 @@
 namespace shadowgen::clipper {
 
 // The snapping ended with edges still meeting elsewhere than at common vertices, after
-// the rounds and the grid both (see Limit above): thrown by clip(), intersection(),
+// the rounds and the grid both (docs/clipper.md, "Limit"): thrown by clip(), intersection(),
 // difference() and merge_adjacent() (merge.h) in place of pieces whose areas could be
 // wrong. The clipper does not know what its operands stand for; a caller that does names
 // it and passes the failure on.
@@ -125,6 +59,13 @@ struct ClipResult {
   PolygonSet2 outside;  // subject − clip
 };
 
+// The inside and outside pieces of a concave subject with holes against a concave clip
+// with holes. The operands' regions must be well formed (loops simple, holes inside their
+// outer loop, loops meeting at most at points), of either orientation; the pieces are in
+// clipper/polygon.h's conventions, every loop simple. Decisions are exact; new points are
+// crossings within 5u of their magnitude, and the boundary moves by at most a hot pixel
+// where snapping rounds it (docs/clipper.md). Throws SnapRoundingError where the snapping
+// does not settle.
 ClipResult clip(const PolygonSet2& subject, const PolygonSet2& clip_region);
 ClipResult clip(const PolygonWithHoles2& subject, const PolygonWithHoles2& clip_region);
 

@@ -1,66 +1,11 @@
 #pragma once
 
 // A picture of the shadowed database from any camera, as data: flat-shaded 2D pieces in
-// pixel coordinates. No shadow is computed here; this is the paper's second half
-// (Atherton, Weiler and Greenberg 1978, section IV): the lit details found once are
-// "surface details on their parent polygons", and a view needs only hidden-surface removal
-// of the parents.
-//
-// Method:
-//   1. hidden-surface removal from the camera (hsr::remove_hidden_surfaces) on the parent
-//      faces' parts only, never on the lit details (an orthographic camera's parts are
-//      first cut in 3D at the plane through its eye; perspective ones are cut at the near
-//      plane by hsr);
-//   2. every visible fragment of a face seen from its front side is split by the face's
-//      light-set regions (shadowgen/shadows/light_regions.h), each projected into the image by
-//      hsr::project_polygon (cut at the near plane in 3D): the fragment is clipped by the
-//      regions of non-empty sets in turn with the Weiler–Atherton clipper, the inside
-//      going to that set, and what is left at the end is in shadow. So the pieces of one
-//      fragment never overlap and cover it, whatever rounding did to the regions;
-//   3. each piece is shaded flat and mapped to pixels.
-// Sun-hours maps (sun_hours_map.h) take the same steps with other regions and colours
-// (detail/painter.h).
-//
-// Shading (linear RGB in [0, 1], clamped per channel, written as 8-bit round(255·v)):
-//
-//   colour = albedo ⊙ (ambient + (1 − ambient) · (1/N) · Σ_{L in the piece's set}
-//                                                   intensity_L · max(0, n·l_L) · f_L)
-//
-// with N the number of lights in the scene (so a face lit head-on by every light at full
-// intensity 1 gets the albedo, and no sum of lights saturates), evaluated at the piece's
-// 3D centroid c (its image unprojected onto the face's plane), where n is the face part's
-// unit front normal, l_L the unit vector from c toward L (−direction/|direction| for a
-// directional light) and f_L the fall-off: 1 for directional lights and point lights
-// without a range; for a range (s = falloff_start, e = end, k = exponent) and
-// d = |position − c|:
-//
-//   f_L = 1 for d <= s,   0 for d >= e,   (1 − (d − s)/(e − s))^k  between.
-//
-// Shadow (the empty set) is albedo · ambient: dark, but visible.
-//
-// Back sides: a face part seen from its back is drawn in the ambient colour, one piece
-// per visible fragment, with an empty light set and `back_side` set: the spec's lit region
-// lies on the front side only, so nothing reaches the back (a wall lit from the other
-// side does not show its lit pattern through itself).
-//
-// Layers by light (render_by_light): instead of splitting fragments by light sets, whose
-// regions grow faster than the lights (the arrangement of every light's shadow edges),
-// every visible fragment is drawn whole in shadow (albedo · ambient) and, over it, one
-// layer per light in scene order: the fragment clipped by the image of that light's lit
-// polygons, coloured by that light's term of the formula alone,
-//
-//   albedo ⊙ (1 − ambient) · (1/N) · intensity_L · max(0, n·l_L) · f_L,
-//
-// at the piece's centroid (the difference of shade() for {L} and for no light, so clamped
-// alike). Added up over the base, as an SVG viewer blends the layers (svg_writer.h), they
-// give the formula's sum. Time and pieces grow linearly with the lights. The base pieces
-// and each layer's pieces do not overlap among themselves; layers overlap the base and
-// one another.
-//
-// Pieces are in pixel coordinates (x right, y down, (0, 0) the top-left corner); their
-// loops are oriented so that clipper::area is positive (outer loops have positive signed
-// area in these numbers). The picture's pieces never overlap and cover exactly the image
-// of the visible faces within the picture's rectangle (up to the clipper's rounding).
+// pixel coordinates, no shadow computed here (Atherton, Weiler and Greenberg 1978, section
+// IV: a view needs only hidden-surface removal of the parent faces). The method, the
+// shading formula, back sides and layers by light are docs/rendering.md. Pieces are in
+// pixel coordinates (x right, y down), loops of positive clipper::area; a picture's pieces
+// never overlap and cover the image of the visible faces within its rectangle.
 
 #include <cstddef>
 #include <optional>

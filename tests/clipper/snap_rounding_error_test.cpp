@@ -1,4 +1,4 @@
-// Snap rounding that does not settle (clip.h, Limit): the clipper throws
+// Snap rounding that does not settle (docs/clipper.md, Limit): the clipper throws
 // SnapRoundingError instead of returning pieces whose areas could be wrong. Inputs that
 // cycle are stopped at a state whose edges meet only at vertices; no known input fails to
 // reach one, so the tests lower the bounds (SnapRoundLimitForTesting) until ordinary
@@ -203,7 +203,7 @@ TEST(SnapRoundingError, OneRoundShortOfWhatTheInputNeedsFailsWhereEdgesStillCros
     std::vector<Loop2> unlimited[2] = {loops[0], loops[1]};
     detail::SnapRoundingStats stats;
     detail::snap_round(unlimited, &stats);
-    // A self-crossing star can cut and put back a point round after round (clip.h, Limit).
+    // A self-crossing star can cut and put back a point round after round (docs/clipper.md, Limit).
     if (!stats.converged || stats.rounds == 0) continue;
     {
       const SnapRoundLimitForTesting limit(stats.rounds);

@@ -1,6 +1,6 @@
 #pragma once
 
-// The clipper's resolution (clip.h, "Exactness and tolerance"): a vertex within the snap
+// The clipper's resolution (docs/clipper.md, "Exactness and tolerance"): a vertex within the snap
 // distance of an edge (detail/snap.h: 8u·|edge| + 2u·|P|) is taken as lying on it. Such a
 // vertex meets the edge as far as the clipper can tell, so a piece between them may
 // vanish the way a piece cut by rounded crossings may. All pairs, O(n²): fuzz inputs are

@@ -11,7 +11,7 @@
 namespace shadowgen::detail {
 namespace {
 
-// A check whose clip did not settle its snapping (clipper/clip.h, Limit): not the
+// A check whose clip did not settle its snapping (docs/clipper.md, Limit): not the
 // input's fault, and not known to be right either. The clipper's error, naming the
 // file, the face and where in it (the command line's exit code 3).
 [[noreturn]] void not_checked(const JsonPlace& place, const std::string& what,

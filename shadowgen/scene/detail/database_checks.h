@@ -4,7 +4,7 @@
 // polygons (lit_checks.h) and its sums over sun paths (sun_hours_checks.h), the costly
 // part of reading a database (a clip per part and light). The problem reported is the
 // first in the file's order, an InputError at its place; a check whose clip did not settle
-// its snapping (clipper/clip.h, Limit) is not the input's fault, and not known to be right
+// its snapping (docs/clipper.md, Limit) is not the input's fault, and not known to be right
 // either: it throws the clipper's SnapRoundingError, naming the file, the face and where in
 // it (the command line's exit code 3).
 

@@ -275,7 +275,7 @@ class FaceBuilder {
                     [&] { return region_less_holes(loops); });
   }
 
-  // `work`, a clip whose snapping does not settle (clipper/clip.h, Limit; no input is known
+  // `work`, a clip whose snapping does not settle (docs/clipper.md, Limit; no input is known
   // to cause it) named after the face: not the input's fault, so no InputError.
   template <typename Work>
   std::invoke_result_t<Work&> clipping(const std::string& what, Work work) const {

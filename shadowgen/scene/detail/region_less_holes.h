@@ -11,15 +11,15 @@
 // Vertices. The loops being valid, nothing crosses: every point where two loops meet is a
 // vertex of one of them, so the clipper constructs no point, and every vertex of a piece
 // is an input vertex at the same chart coordinates, bit for bit. The one exception is the
-// clipper's snapping (clip.h, "Exactness and tolerance"): where it has to snap on a grid,
+// clipper's snapping (docs/clipper.md, "Exactness and tolerance"): where it has to snap on a grid,
 // a vertex moves by less than 12u of the largest coordinate (u = 2^-53), and a piece's
 // vertex may then be no input vertex; the caller puts such a point on the face's plane.
 // A vertex where loops meet stays where a piece's boundary runs straight on through it (the
 // corners where two windows side by side meet); a vertex of one loop alone where it runs
 // straight on may be left out (clip.h normalises its input).
 //
-// Throws clipper::SnapRoundingError where the clipper's snapping does not settle (clip.h,
-// Limit; no input is known to cause it).
+// Throws clipper::SnapRoundingError where the clipper's snapping does not settle
+// (docs/clipper.md, Limit; no input is known to cause it).
 
 #include <span>
 

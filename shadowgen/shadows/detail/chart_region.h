@@ -33,7 +33,7 @@ class ChartRegion {
   // pieces left whole keep their vertices while their neighbours are cut: where the
   // edges of many lights fan out from nearly one point (a shadow's tip at a building's
   // foot, a little off from instant to instant) pieces can come out as slivers meeting
-  // within 1e-13 of one another, which the clipper's snapping takes (clipper/clip.h,
+  // within 1e-13 of one another, which the clipper's snapping takes (docs/clipper.md,
   // Limit). Pieces of one call that share edges may come out merged, so give one call
   // pieces that may merge (one light set, one count). The result is exact up to the
   // clipper's rounding of crossing points (clipper/clip.h). Throws
