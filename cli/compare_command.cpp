@@ -13,14 +13,18 @@
 #include "cli/command.h"
 #include "cli/number_options.h"
 #include "cli/run_progress.h"
+#include "cli/sky_option.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/one_line.h"
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/method_table.h"
+#include "shadowgen/output/sky_comparison_table.h"
 #include "shadowgen/pipeline/light_choice.h"
 #include "shadowgen/pipeline/method_comparison.h"
+#include "shadowgen/pipeline/sky_method_comparison.h"
 #include "shadowgen/shadows/generate.h"
+#include "shadowgen/sky/sky_patches.h"
 #include "shadowgen/view/method_plot.h"
 #include "shadowgen/view/pixel_shadows.h"
 #include "shadowgen/view/view_comparison.h"
@@ -37,7 +41,7 @@ constexpr CommandText kCompareText{
     "--plot draws error against time. --view ID also draws the scene from its view ID "
     "pixel by pixel with the view methods (as render --png --shadows does) and prints each "
     "one's time and the share of (pixel, light) pairs, off region boundaries, whose lit state "
-    "differs from the exact method's."};
+    "differs from the exact method's. --sky compares every face's sky view factor instead."};
 
 // The default trials: three sample counts of each sampled method.
 constexpr const char* kDefaultMethods[] = {"rays:16",
@@ -63,6 +67,8 @@ struct CompareArgs {
   std::vector<std::string> view_methods{std::begin(kDefaultViewMethods),
                                         std::end(kDefaultViewMethods)};
   std::size_t view_instants = 4;  // instants drawn of each sun path
+  int sky_subdivisions = 1;       // --sky: compare sky view factors over Reinhart MF:N
+  bool sky_given = false;
   ReadingArgs reading;
 };
 
@@ -186,6 +192,15 @@ const ViewSpec& view_named(const Scene& scene, const std::string& id, const std:
                        ")");
 }
 
+void write_comparison(const CompareArgs& args, const std::string& text) {
+  if (args.output.empty()) {
+    std::cout << text << std::flush;
+    if (!std::cout) throw std::runtime_error("cannot write the comparison to standard output");
+  } else {
+    write_file_atomically(args.output, text);
+  }
+}
+
 void run_compare(const CompareArgs& args) {
   std::vector<Method> methods;
   const std::function<void(const std::string&)> warn =
@@ -212,7 +227,8 @@ void run_compare(const CompareArgs& args) {
   GenerateOptions options;
   options.threads = args.reading.threads;
   // The exact trial's lights, then each sampled trial by name.
-  options.on_light_done = progress.lights(scene.lights.size());
+  options.on_light_done = progress.lights(
+      args.sky_given ? sky::reinhart_patches(args.sky_subdivisions).size() : scene.lights.size());
   std::size_t trials = 1;
   for (const Method& method : methods) trials += method.exact() ? 0 : 1;
   std::size_t trial = 0;
@@ -221,6 +237,22 @@ void run_compare(const CompareArgs& args) {
     progress.stage("trial " + std::to_string(trial) + "/" + std::to_string(trials) + ", " +
                    method_label(method));
   };
+  if (args.sky_given) {
+    sky::SkyComparison sky_comparison;
+    try {
+      sky_comparison =
+          compare_sky_methods(scene, args.sky_subdivisions, methods, options, on_trial);
+    } catch (const GenerationError& e) {
+      throw GenerationError(args.input, e.face_id(), e.light_id(), e.problem());
+    }
+    progress.finish();
+    write_comparison(
+        args, args.format == "csv"
+                  ? sky_comparison_csv(sky_comparison, scene,
+                                       args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact)
+                  : sky_comparison_table(sky_comparison, scene));
+    return;
+  }
   MethodComparison comparison;
   ShadowedScene exact;
   try {
@@ -269,12 +301,7 @@ void run_compare(const CompareArgs& args) {
                            args.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact, shown)
           : comparison_table(comparison, scene, shown);
   if (!args.plot.empty()) write_comparison_svg(comparison, args.plot, shown);
-  if (args.output.empty()) {
-    std::cout << text << std::flush;
-    if (!std::cout) throw std::runtime_error("cannot write the comparison to standard output");
-  } else {
-    write_file_atomically(args.output, text);
-  }
+  write_comparison(args, text);
 }
 
 void add_compare_options(CLI::App& command, CompareArgs& args) {
@@ -300,9 +327,10 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
   command.add_flag("--csv-safe", args.csv_safe,
                    "CSV: put ' before an id that begins with =, +, -, @, a tab or a carriage "
                    "return, which spreadsheets would run as a formula");
-  command.add_option("--plot", args.plot,
-                     "SVG file to draw: mean error against time, log-log, the Pareto-optimal "
-                     "methods joined");
+  CLI::Option* plot =
+      command.add_option("--plot", args.plot,
+                         "SVG file to draw: mean error against time, log-log, the Pareto-optimal "
+                         "methods joined");
   CLI::Option* view =
       command.add_option("--view", args.view,
                          "id of one of the scene's views: also draw the scene from it pixel by "
@@ -334,6 +362,15 @@ void add_compare_options(CLI::App& command, CompareArgs& args) {
                   "comparison takes every instant")
       ->check(whole_number_in(0, kMostViewInstants))
       ->needs(view);
+  CLI::Option* sky = add_sky_option(
+      command, args.sky_subdivisions, args.sky_given,
+      "compare every face's sky view factor instead (report --format sky's), over the "
+      "patches of tregenza (145) or reinhart:N (144 N² + 1, N from 1 to 64), each a light: "
+      "the exact value, then each method's from its estimated lit areas (rays: a shadow ray "
+      "from each sample point towards each patch's centre), with the error of each and, in "
+      "CSV, every face's values");
+  sky->excludes(view);
+  sky->excludes(plot);
   add_output_option(command, args.output,
                     "file to write the table to (replaced whole); default: standard output");
   add_reading_options(command, args.reading, /*progress=*/true);

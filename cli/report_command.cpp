@@ -14,6 +14,7 @@
 #include "cli/command.h"
 #include "cli/number_options.h"
 #include "cli/run_progress.h"
+#include "cli/sky_option.h"
 #include "shadowgen/groups/face_groups.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/output/atomic_file.h"
@@ -43,9 +44,13 @@ struct ReportArgs {
   std::optional<double> albedo;         // radiation: every hour's, else the weather file's
   std::vector<std::string> group_by;    // groups/face_groups.h rules; none: the scene's groups
   int sky_subdivisions = api::SkyReportSettings{}.subdivisions;  // sky, radiation: MF:N (--sky)
+  bool sky_given = false;  // energyplus-sky: the ratio over --sky's patches beside EnergyPlus's
   ReadingArgs reading;
   MethodArgs method;  // a scene's (LoadOptions::method)
 };
+
+// The reports whose lights are the sky's patches, not the input's.
+bool is_sky(const std::string& format) { return format == "sky" || format == "energyplus-sky"; }
 
 bool is_sun_hours(const std::string& format) {
   return format == "sun-hours" || format == "sun-hours-table";
@@ -84,8 +89,10 @@ std::string sky_report_text(const ReportArgs& args, const RunFiles& files) {
   api::LoadSettings settings = load_settings(args.reading, files);
   RunProgress progress(args.input, progress_stream(args.reading.quiet));
   progress.watch(settings);
-  const std::string report =
-      api::sky_report(args.input, settings, {args.sky_subdivisions, args.csv_safe});
+  api::SkyReportSettings sky{args.sky_subdivisions, args.csv_safe};
+  sky.energyplus = args.format == "energyplus-sky";
+  sky.energyplus_fine = args.sky_given;
+  const std::string report = api::sky_report(args.input, settings, sky);
   progress.finish();
   return report;
 }
@@ -124,9 +131,10 @@ void run_report(const ReportArgs& args) {
   RunFiles files{{args.input}, {}};
   if (!args.weather.empty()) files.reads.push_back(args.weather);
   if (!args.output.empty()) files.writes.push_back({"-o", args.output});
-  if (args.format == "sky") {
+  if (is_sky(args.format)) {
     if (args.method.name != "exact") {
-      throw UsageError("--format sky takes the exact lit areas of every sky patch; --method " +
+      throw UsageError("--format " + args.format +
+                       " takes the exact lit areas of every sky patch; --method " +
                        args.method.name + " does not apply");
     }
     write_report(args, sky_report_text(args, files));
@@ -194,9 +202,12 @@ Command add_report_command(CLI::App& app) {
                    "factor with exact obstruction and the view factor of the ground, from the "
                    "sky's patches as lights, --sky) or radiation (per face and sun path: direct, "
                    "diffuse and ground-reflected solar energy, shaded and unshaded, from a "
-                   "weather file and the Perez sky over the patches)")
+                   "weather file and the Perez sky over the patches) or energyplus-sky (per "
+                   "EnergyPlus surface: EnergyPlus's diffuse sky shading ratios from its 144 sky "
+                   "directions and exact lit fractions; with --sky, the ratio over those patches "
+                   "beside them)")
       ->check(CLI::IsMember({"csv", "json", "table", "sun-hours", "sun-hours-table", "irradiation",
-                             "energyplus", "sky", "radiation"}));
+                             "energyplus", "sky", "radiation", "energyplus-sky"}));
   CLI::Option* group_by =
       command
           ->add_option("--group-by", args->group_by,
@@ -220,24 +231,12 @@ Command add_report_command(CLI::App& app) {
                        "(default: the weather file's field 33, else " +
                            shortest(kDefaultAlbedo) + ")")
           ->check(number_in(NumberRange{.low = 0.0, .high = 1.0, .unit = ""}));
-  CLI::Option* sky_option =
-      command
-          ->add_option_function<std::string>(
-              "--sky",
-              [args](const std::string& name) {
-                args->sky_subdivisions = *sky::subdivisions_named(name);
-              },
-              "with --format sky or radiation: the sky's patches, tregenza (145) or reinhart:N "
-              "(Reinhart's "
-              "MF:N, 144 N² + 1 patches, N from 1 to 64; default " +
-                  sky::subdivision_name(api::SkyReportSettings{}.subdivisions) + ")")
-          ->check(CLI::Validator(
-              [](std::string& name) -> std::string {
-                return sky::subdivisions_named(name)
-                           ? ""
-                           : "'" + name + "' names no sky: tregenza or reinhart:N, N from 1 to 64";
-              },
-              "tregenza|reinhart:N", "sky"));
+  CLI::Option* sky_option = add_sky_option(
+      *command, args->sky_subdivisions, args->sky_given,
+      "with --format sky or radiation (or energyplus-sky, for a column of its own): the sky's "
+      "patches, tregenza (145) or reinhart:N (Reinhart's MF:N, 144 N² + 1 patches, N from 1 to "
+      "64; default " +
+          sky::subdivision_name(api::SkyReportSettings{}.subdivisions) + ")");
   CLI::Option* threshold =
       command
           ->add_option("--threshold", args->thresholds,
@@ -263,8 +262,9 @@ Command add_report_command(CLI::App& app) {
   // Run at the end of parsing, so that the error is reported as a parse error is.
   command->callback([args, top, csv_safe, threshold, weather, albedo, group_by, sky_option] {
     const bool radiation = args->format == "radiation";
-    if (sky_option->count() > 0 && args->format != "sky" && !radiation) {
-      throw CLI::ValidationError("--sky", "applies only to --format sky and radiation");
+    if (sky_option->count() > 0 && !is_sky(args->format) && !radiation) {
+      throw CLI::ValidationError("--sky",
+                                 "applies only to --format sky, energyplus-sky and radiation");
     }
     if (weather->count() > 0 && args->format != "irradiation" && !radiation) {
       throw CLI::ValidationError("--weather", "applies only to --format irradiation and radiation");

@@ -13,6 +13,7 @@
 #include "shadowgen/output/atomic_file.h"
 #include "shadowgen/output/database.h"
 #include "shadowgen/output/energyplus_shading.h"
+#include "shadowgen/output/energyplus_sky_report.h"
 #include "shadowgen/output/gltf_export.h"
 #include "shadowgen/output/irradiation_report.h"
 #include "shadowgen/output/obj_export.h"
@@ -22,6 +23,7 @@
 #include "shadowgen/output/sun_hours_report.h"
 #include "shadowgen/output/sun_hours_table.h"
 #include "shadowgen/pipeline/load_shadowed.h"
+#include "shadowgen/sky/energyplus_sky.h"
 #include "shadowgen/sky/sky_exposure.h"
 #include "shadowgen/sky/sky_lights.h"
 #include "shadowgen/view/camera.h"
@@ -99,25 +101,30 @@ std::string report_text(const ShadowedScene& shadowed, const ReportSettings& set
   return report_csv(shadowed, ids, groups);
 }
 
-// `scene`'s exposure to the sky of MF:`subdivisions`, its patches generated on
-// settings.generate's threads, shown to settings.on_scene as a scene of one light each and
-// counted by settings.generate.on_light_done.
-sky::SkyExposure exposure_of(const shadowgen::Scene& scene, int subdivisions,
-                             const LoadSettings& settings) {
+// The sky's options for `scene` lit by `lights` (their patches' lights, sky_scene), of
+// MF:`subdivisions`, generated on settings.generate's threads, shown to settings.on_scene as
+// a scene of one light each and counted by settings.generate.on_light_done.
+sky::SkyOptions sky_options_for(const shadowgen::Scene& scene, int subdivisions,
+                                const std::vector<sky::SkyPatch>& lights,
+                                const LoadSettings& settings) {
   sky::SkyOptions sky_options;
   sky_options.subdivisions = subdivisions;
   sky_options.threads = settings.generate.threads;
-  if (settings.on_scene) {
-    settings.on_scene(
-        detail::scene_view(sky::sky_scene(scene, sky::reinhart_patches(sky_options.subdivisions))));
-  }
+  if (settings.on_scene) settings.on_scene(detail::scene_view(sky::sky_scene(scene, lights)));
   if (settings.generate.on_light_done) {
     sky_options.on_light_done = [&settings](std::size_t patch, const LightStats& stats) {
       settings.generate.on_light_done(
           {patch, stats.faces_considered, stats.lit_polygons, stats.seconds});
     };
   }
-  return sky::sky_exposure(scene, sky_options);
+  return sky_options;
+}
+
+// `scene`'s exposure to the sky of MF:`subdivisions`, as sky_options_for says.
+sky::SkyExposure exposure_of(const shadowgen::Scene& scene, int subdivisions,
+                             const LoadSettings& settings) {
+  return sky::sky_exposure(
+      scene, sky_options_for(scene, subdivisions, sky::reinhart_patches(subdivisions), settings));
 }
 
 // What draws lit polygons needs exact shadows.
@@ -141,6 +148,17 @@ std::string sky_report(const std::string& path, const LoadSettings& settings,
     options.verbose = settings.read.verbose;
     options.on_warning = settings.read.on_warning;
     const shadowgen::Scene scene = load_scene(path, options);
+    if (sky_settings.energyplus) {
+      require_energyplus_surface_names(scene);
+      sky::SkyOptions fine;
+      fine.subdivisions = sky_settings.subdivisions;
+      const std::vector<sky::SkyPatch> lights =
+          sky::energyplus_sky_lights(fine, sky_settings.energyplus_fine);
+      return energyplus_sky_csv(
+          scene, sky::energyplus_sky_shading(
+                     scene, sky_options_for(scene, sky_settings.subdivisions, lights, settings),
+                     sky_settings.energyplus_fine));
+    }
     const sky::SkyExposure exposure = exposure_of(scene, sky_settings.subdivisions, settings);
     return sky_view_factor_csv(scene, exposure,
                                sky_settings.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact);

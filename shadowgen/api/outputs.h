@@ -49,6 +49,11 @@ std::string report(const Shadows& shadows, const ReportSettings& settings = {});
 struct SkyReportSettings {
   int subdivisions = 8;   // Reinhart MF:N (1: Tregenza's 145 patches), 1 to 64
   bool csv_safe = false;  // a ' before ids a spreadsheet would run as formulas
+  // `report --format energyplus-sky` instead: EnergyPlus's diffuse sky shading ratios per
+  // surface from its 144 sky directions, and with `energyplus_fine` the ratio over the
+  // `subdivisions` patches beside them (their lights after EnergyPlus's 144).
+  bool energyplus = false;
+  bool energyplus_fine = false;
 };
 
 // `shadowgen report --format sky` (docs/sky.md), byte for byte: every face's sky view
@@ -56,6 +61,7 @@ struct SkyReportSettings {
 // or the scene a database holds; neither's own lights are generated, the sky's patches
 // are, one light each. Of `settings`: read; generate.threads and generate.on_light_done
 // (light k is patch k); on_scene, called with the scene whose lights are the patches.
+// With sky.energyplus, `shadowgen report --format energyplus-sky`'s CSV instead.
 std::string sky_report(const std::string& path, const LoadSettings& settings = {},
                        const SkyReportSettings& sky = {});
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 
+#include "detail/energyplus_surface_names.h"
 #include "detail/sun_paths_required.h"
 #include "hsr/area.h"
 #include "shadowgen/model/input_error.h"
@@ -17,37 +18,9 @@ namespace {
 
 constexpr std::int64_t kSecondsPerDay = 86'400;
 
-// The face's EnergyPlus surface name: the surface's Name for a face read from an
-// EnergyPlus model (FaceOrigin::object, without the scene entry's id), the face's id
-// otherwise; upper case, as EnergyPlus keeps names. InputError naming `file` (the input)
-// where it cannot be one.
-std::string surface_name(const Face& face, const std::string& file) {
-  const std::string& id = face.origin.format == "energyplus" ? face.origin.object : face.id;
-  auto refuse = [&](const std::string& why) {
-    throw InputError(file, face.id, "cannot be an EnergyPlus surface name: " + why);
-  };
-  if (id.empty()) refuse("it is empty");
-  if (id.front() == ' ' || id.back() == ' ') refuse("EnergyPlus trims spaces around names");
-  std::string name;
-  for (const char c : id) {
-    if (c == ',') refuse("it holds a comma, which separates fields");
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) refuse("it holds a control character");
-    name += (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
-  }
-  return name;
-}
-
 std::string header(const ShadowedScene& shadowed) {
   std::string out = "Surface Name,";
-  std::map<std::string, const Face*> taken;
-  for (const Face& face : shadowed.scene.faces) {
-    const std::string name = surface_name(face, shadowed.scene.file);
-    const auto [at, added] = taken.emplace(name, &face);
-    if (!added) {
-      throw InputError(shadowed.scene.file, face.id,
-                       "is the EnergyPlus surface name " + name + " in upper case, as face '" +
-                           at->second->id + "' is");
-    }
+  for (const std::string& name : detail::energyplus_surface_names(shadowed.scene)) {
     out += name + ',';
   }
   return out + '\n';

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <numeric>
 #include <unordered_map>
+#include <utility>
 
 #include "hsr/area.h"
 #include "hsr/polygon3.h"
@@ -49,22 +50,51 @@ class CosineIntegrals {
   std::unordered_map<Key, std::vector<double>, KeyHash> cache_;
 };
 
-// How far in front of a part's plane (the sine of the angle) a patch's centre must lie for
-// the part's lit area under the patch's light to count: a centre within it, in the plane
-// but for rounding, may have lit the part or not; the part then counts as unobstructed.
-constexpr double kCentreInFrontOfPlane = 1e-9;
-
 }  // namespace
 
-SkyExposure sky_exposure(const Scene& scene, const SkyOptions& options) {
-  SkyExposure out;
-  out.patches = reinhart_patches(options.subdivisions);
+std::vector<SkyPart> sky_parts(const Face& face, double north_axis_deg) {
+  std::vector<SkyPart> out;
+  out.reserve(face.parts.size());
+  for (const hsr::Polygon3& polygon : face.parts) {
+    SkyPart part;
+    part.area = hsr::area(polygon);
+    const glm::dvec3 newell = hsr::newell_vector(polygon.outer);
+    const double length = glm::length(newell);
+    if (part.area > 0.0 && length > 0.0) {
+      part.normal = sky_from_scene(newell / length, north_axis_deg);
+      part.oriented = true;
+    }
+    out.push_back(part);
+  }
+  return out;
+}
+
+double sky_lit_area(const SunPathHours& path, std::size_t f, std::size_t i, const SkyPart& part,
+                    std::size_t k, const glm::dvec3& centre) {
+  if (glm::dot(part.normal, centre) <= kCentreInFrontOfPlane) return part.area;
+  return std::min(part_lit_area(path, f, i, k), part.area);
+}
+
+SunPathHours sky_lit_areas(const Scene& scene, const std::vector<SkyPatch>& patches,
+                           const SkyOptions& options) {
   GenerateOptions generate;
   generate.threads = options.threads;
   generate.sun_hours_regions = false;
   generate.on_light_done = options.on_light_done;
-  const GenerateResult result = generate_shadows(sky_scene(scene, out.patches), generate);
-  const SunPathHours& path = result.shadowed.sun_paths.at(0);
+  GenerateResult result = generate_shadows(sky_scene(scene, patches), generate);
+  return std::move(result.shadowed.sun_paths.at(0));
+}
+
+SkyExposure sky_exposure(const Scene& scene, const SkyOptions& options) {
+  std::vector<SkyPatch> patches = reinhart_patches(options.subdivisions);
+  const SunPathHours path = sky_lit_areas(scene, patches, options);
+  return sky_exposure_of(scene, path, 0, std::move(patches));
+}
+
+SkyExposure sky_exposure_of(const Scene& scene, const SunPathHours& path, std::size_t first,
+                            std::vector<SkyPatch> patches_lit) {
+  SkyExposure out;
+  out.patches = std::move(patches_lit);
   const double north_axis_deg = scene.site ? scene.site->north_axis_deg : 0.0;
   CosineIntegrals integrals(out.patches);
   const std::size_t faces = scene.faces.size(), patches = out.patches.size();
@@ -73,23 +103,19 @@ SkyExposure sky_exposure(const Scene& scene, const SkyOptions& options) {
   out.lit_weight.assign(faces, std::vector<double>(patches, 0.0));
   out.open_weight.assign(faces, std::vector<double>(patches, 0.0));
   for (std::size_t f = 0; f < faces; ++f) {
-    const Face& face = scene.faces[f];
-    for (const hsr::Polygon3& part : face.parts) out.area[f] += hsr::area(part);
+    const std::vector<SkyPart> parts = sky_parts(scene.faces[f], north_axis_deg);
+    for (const SkyPart& part : parts) out.area[f] += part.area;
     if (out.area[f] <= 0.0) continue;
-    for (std::size_t i = 0; i < face.parts.size(); ++i) {
-      const double part_area = hsr::area(face.parts[i]);
-      const glm::dvec3 newell = hsr::newell_vector(face.parts[i].outer);
-      const double length = glm::length(newell);
-      if (part_area <= 0.0 || length <= 0.0) continue;
-      const glm::dvec3 normal = sky_from_scene(newell / length, north_axis_deg);
-      out.ground_view_factor[f] += part_area * (1.0 - normal.z) / 2.0 / out.area[f];
-      const std::vector<double>& cosine = integrals.of(normal);
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const SkyPart& part = parts[i];
+      if (!part.oriented) continue;
+      out.ground_view_factor[f] += part.area * (1.0 - part.normal.z) / 2.0 / out.area[f];
+      const std::vector<double>& cosine = integrals.of(part.normal);
       for (std::size_t p = 0; p < patches; ++p) {
         if (cosine[p] <= 0.0) continue;
-        const bool faces_centre = glm::dot(normal, out.patches[p].centre) > kCentreInFrontOfPlane;
-        const double lit = faces_centre ? part_lit_area(path, f, i, p) : part_area;
-        out.lit_weight[f][p] += std::min(lit, part_area) * cosine[p] / out.area[f];
-        out.open_weight[f][p] += part_area * cosine[p] / out.area[f];
+        const double lit = sky_lit_area(path, f, i, part, first + p, out.patches[p].centre);
+        out.lit_weight[f][p] += lit * cosine[p] / out.area[f];
+        out.open_weight[f][p] += part.area * cosine[p] / out.area[f];
       }
     }
   }

@@ -8,18 +8,14 @@
 
 #include "bench/scenes/street_canyon.h"
 #include "shadowgen/sky/sky_lights.h"
+#include "tests/shadowgen/sky/sky_test_faces.h"
 
 namespace shadowgen::sky {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Face quad(std::string id, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
-  Face face;
-  face.id = std::move(id);
-  face.parts.push_back({{a, b, c, d}, {}});
-  return face;
-}
+using test::quad;
 
 // A unit square through the origin, tilted by `tilt_deg` about the x axis: its front
 // normal (0, -sin β, cos β) faces south.
