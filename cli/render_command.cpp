@@ -1,5 +1,6 @@
 // `shadowgen render`: a picture of a shadowed database, as SVG and/or PNG.
 
+#include <algorithm>
 #include <glm/vec3.hpp>
 #include <iostream>
 #include <memory>
@@ -12,19 +13,24 @@
 #include "cli/command.h"
 #include "cli/number_options.h"
 #include "cli/output_by_extension.h"
+#include "cli/radiation_options.h"
 #include "cli/run_progress.h"
 #include "cli/sun_hours_options.h"
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/view_limits.h"
 #include "shadowgen/output/atomic_file.h"
+#include "shadowgen/output/radiation_report.h"
+#include "shadowgen/sky/sky_exposure.h"
 #include "shadowgen/view/camera.h"
 #include "shadowgen/view/picture_raster.h"
 #include "shadowgen/view/pixel_shadows.h"
 #include "shadowgen/view/png_writer.h"
+#include "shadowgen/view/radiation_map.h"
 #include "shadowgen/view/raster_render.h"
 #include "shadowgen/view/render.h"
 #include "shadowgen/view/sun_hours_map.h"
 #include "shadowgen/view/svg_writer.h"
+#include "shadowgen/weather/epw_reader.h"
 
 namespace shadowgen::cli {
 namespace {
@@ -37,10 +43,14 @@ constexpr CommandText kRenderText{
     "--by-light, each visible face in shadow with one layer per light over it, what that "
     "light reaches in its share of the shading, which a browser adds up (it grows linearly "
     "with the lights where light sets do not); or, with --sun-hours, split by a sun path's "
-    "sun hours, coloured by band, with a legend (as SVG, PNG or both). Pieces of one colour are "
+    "sun hours, coloured by band, with a legend (as SVG, PNG or both); or, with --radiation, each "
+    "face whole coloured by its total irradiation over a sun path in kWh/m² (as report --format "
+    "radiation gives it, from --weather), banded, with a legend. Pieces of one colour are "
     "one path where they touch; faces or model objects are outlined; a north arrow (where the "
     "database has a site) and, in orthographic views, a scale bar mark the map. Reads "
-    "only the database; no shadows are recomputed. A PNG picture (-o FILE.png) is the lit picture "
+    "only the database; no shadows are recomputed (with --radiation, the sky's patches' lit areas "
+    "are computed, as the report computes them, and the weather file read). A PNG picture (-o "
+    "FILE.png) is the lit picture "
     "drawn pixel by pixel, instead or as well, its shadows found by --shadows: the database's "
     "(exact), shadow maps "
     "or shadow volumes."};
@@ -66,6 +76,8 @@ struct RenderArgs {
   int height = 600;
   std::vector<std::string> lights;   // --lights: only these are drawn
   SunHoursArgs sun_hours;            // --sun-hours: a sun-hours map of that path instead
+  std::string radiation;             // --radiation: a radiation map of that path instead
+  RadiationArgs radiation_args;      // its --weather, --albedo and --sky
   bool by_light = false;             // --by-light: the SVG in layers by light
   bool pieces = false;               // --pieces: one SVG path per piece, not per colour
   bool full_precision = false;       // --full-precision: exact coordinates, not 1/1000 px
@@ -186,17 +198,46 @@ RenderArgs with_outputs(const RenderArgs& given) {
         "--full-precision writes the SVG picture's coordinates exactly: it needs -o FILE.svg "
         "(or --svg)");
   }
-  // A sun-hours map's pixels are its pieces' (picture_raster.h): no view method.
-  if (!args.sun_hours.path.empty()) {
+  // A map's pixels are its pieces' (picture_raster.h): no view method.
+  if (!args.sun_hours.path.empty() || !args.radiation.empty()) {
     for (const char* option : {"--shadows", "--resolution"}) {
       if (args.parser->get_option(option)->count() > 0) {
-        throw UsageError(std::string(option) +
-                         " applies only to the lit picture: a sun-hours map's pixels are its "
-                         "pieces'");
+        throw UsageError(std::string(option) + " applies only to the lit picture: a " +
+                         (args.radiation.empty() ? "sun-hours" : "radiation") +
+                         " map's pixels are its pieces'");
       }
     }
   }
   return args;
+}
+
+// Each face's total irradiation over the --radiation path in kWh/m²: the radiation
+// report's total_wh_per_area (radiation_rows, as `report --format radiation` computes it)
+// / 1000. The path is checked before the sky's patches are generated.
+std::vector<double> radiation_per_face(const RenderArgs& args, const ShadowedScene& shadowed,
+                                       RunProgress& progress) {
+  const SunPathHours& path = sun_path_named(shadowed, args.radiation, args.database);
+  const auto path_index = static_cast<std::size_t>(&path - shadowed.sun_paths.data());
+  const Weather weather = weather::read_epw(args.radiation_args.weather);
+  progress.stage("generating the sky's patches");
+  sky::SkyOptions sky_options;
+  sky_options.subdivisions = args.radiation_args.sky_subdivisions;
+  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene, sky_options);
+  RadiationOptions options;
+  options.albedo = args.radiation_args.albedo;
+  std::vector<std::string> warnings;  // after the progress line
+  options.on_warning = [&warnings](const std::string& warning) { warnings.push_back(warning); };
+  std::vector<double> values(shadowed.scene.faces.size(), 0.0);
+  for (const RadiationRow& row : radiation_rows(shadowed, exposure, weather, options)) {
+    if (row.path == path_index && row.area > 0.0)
+      values[row.face] = row.total_wh() / row.area / 1000.0;
+  }
+  if (!args.quiet) {
+    for (const std::string& warning : warnings) {
+      std::cerr << "shadowgen: warning: " << args.database << ": " << warning << '\n';
+    }
+  }
+  return values;
 }
 
 void run_render(const RenderArgs& given) {
@@ -207,7 +248,7 @@ void run_render(const RenderArgs& given) {
   load.accept = Accept::kDatabase;
   load.lights = args.lights;
   // A sun-hours map draws a path's sums, not its instants' lit polygons.
-  load.instant_polygons = args.sun_hours.path.empty();
+  load.instant_polygons = args.sun_hours.path.empty() && args.radiation.empty();
   load.draws = true;
   if (!args.quiet) {
     load.on_warning = [](const std::string& warning) {
@@ -215,6 +256,7 @@ void run_render(const RenderArgs& given) {
     };
   }
   RunFiles run_files{{args.database}, {}};
+  if (!args.radiation_args.weather.empty()) run_files.reads.push_back(args.radiation_args.weather);
   if (!args.svg.empty()) run_files.writes.push_back({args.svg_option, args.svg});
   if (!args.png.empty()) run_files.writes.push_back({args.png_option, args.png});
   guard_outputs(load, run_files);
@@ -223,13 +265,23 @@ void run_render(const RenderArgs& given) {
   const ShadowedScene shadowed = load_shadowed(args.database, load);
   std::optional<SunHoursMap> map;
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.database);
+  std::vector<double> radiation;
+  if (!args.radiation.empty()) radiation = radiation_per_face(args, shadowed, progress);
   const Camera camera = camera_for(args, shadowed);
   RenderOptions options;
   options.width = args.width;
   options.height = args.height;
   std::string svg, png;
   try {
-    if (map) {
+    if (!args.radiation.empty()) {
+      progress.stage("drawing the radiation map");
+      const double most = radiation.empty() ? 0.0 : *std::ranges::max_element(radiation);
+      const Picture picture = render_radiation(
+          shadowed, radiation, radiation_bands(args.radiation, most), camera, options);
+      if (!args.svg.empty())
+        svg = svg_document(picture, {.pieces = args.pieces, .full_precision = args.full_precision});
+      if (!args.png.empty()) png = png_bytes(rasterize_picture(picture));
+    } else if (map) {
       // One map, as SVG and as its pixels (picture_raster.h).
       progress.stage("drawing the sun-hours map");
       const Picture picture = render_sun_hours(shadowed, *map->path, map->bands, camera, options);
@@ -342,12 +394,33 @@ void add_render_options(CLI::App& command, RenderArgs& args) {
   // A sun-hours map draws one path whole: there is nothing for --lights to choose.
   CLI::Option* sun_hours = add_sun_hours_options(command, args.sun_hours, "draw");
   sun_hours->excludes(command.get_option("--lights"));
+  CLI::Option* radiation =
+      command
+          .add_option("--radiation", args.radiation,
+                      "draw a radiation map of the sun path PATH_ID instead: each visible face "
+                      "whole in the colour of its total irradiation over the path in kWh/m² "
+                      "(direct + diffuse + ground, as report --format radiation computes it, from "
+                      "--weather), banded, with a legend")
+          ->option_text("PATH_ID")
+          ->excludes(sun_hours)
+          ->excludes(command.get_option("--lights"));
+  const RadiationOptionSet radiation_options = add_radiation_options(
+      command, args.radiation_args,
+      {.weather = "with --radiation (required: a database keeps no weather file)",
+       .albedo = "with --radiation",
+       .sky = "with --radiation"});
+  radiation->needs(radiation_options.weather);
+  for (CLI::Option* option :
+       {radiation_options.weather, radiation_options.albedo, radiation_options.sky}) {
+    option->needs(radiation);
+  }
   command
       .add_flag("--by-light", args.by_light,
                 "with an SVG picture: each visible face in shadow, then one layer per light over "
                 "it (what the light reaches, in its share of the shading), instead of the faces "
                 "split by light sets")
-      ->excludes(sun_hours);
+      ->excludes(sun_hours)
+      ->excludes(radiation);
   command.add_flag("--pieces", args.pieces,
                    "with an SVG picture: one path per piece, with its face id (data-face) and its "
                    "light set or hours, instead of one path per colour (the faces then named by "

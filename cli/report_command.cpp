@@ -13,8 +13,8 @@
 
 #include "cli/command.h"
 #include "cli/number_options.h"
+#include "cli/radiation_options.h"
 #include "cli/run_progress.h"
-#include "cli/sky_option.h"
 #include "shadowgen/groups/face_groups.h"
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/output/atomic_file.h"
@@ -40,11 +40,8 @@ struct ReportArgs {
   std::string output;                   // empty: standard output
   std::size_t top = 10;                 // table: most shadowed faces listed per light
   std::vector<double> thresholds{2.0};  // sun-hours: hours the areas are counted at
-  std::string weather;                  // irradiation, radiation: an EPW file, else the scene's
-  std::optional<double> albedo;         // radiation: every hour's, else the weather file's
+  RadiationArgs radiation;              // irradiation (its weather), radiation, sky (its --sky)
   std::vector<std::string> group_by;    // groups/face_groups.h rules; none: the scene's groups
-  int sky_subdivisions = api::SkyReportSettings{}.subdivisions;  // sky, radiation: MF:N (--sky)
-  bool sky_given = false;  // energyplus-sky: the ratio over --sky's patches beside EnergyPlus's
   ReadingArgs reading;
   MethodArgs method;  // a scene's (LoadOptions::method)
 };
@@ -89,9 +86,9 @@ std::string sky_report_text(const ReportArgs& args, const RunFiles& files) {
   api::LoadSettings settings = load_settings(args.reading, files);
   RunProgress progress(args.input, progress_stream(args.reading.quiet));
   progress.watch(settings);
-  api::SkyReportSettings sky{args.sky_subdivisions, args.csv_safe};
+  api::SkyReportSettings sky{args.radiation.sky_subdivisions, args.csv_safe};
   sky.energyplus = args.format == "energyplus-sky";
-  sky.energyplus_fine = args.sky_given;
+  sky.energyplus_fine = args.radiation.sky_given;
   const std::string report = api::sky_report(args.input, settings, sky);
   progress.finish();
   return report;
@@ -103,10 +100,7 @@ std::string radiation_report_text(const ReportArgs& args, const RunFiles& files)
   api::LoadSettings settings = load_settings(args.reading, files);
   RunProgress progress(args.input, progress_stream(args.reading.quiet));
   progress.watch(settings);
-  api::RadiationReportSettings radiation;
-  radiation.subdivisions = args.sky_subdivisions;
-  radiation.weather = args.weather;
-  radiation.albedo = args.albedo;
+  api::RadiationReportSettings radiation = radiation_settings(args.radiation);
   radiation.csv_safe = args.csv_safe;
   std::vector<std::string> warnings;  // after the progress line
   radiation.on_warning = [&warnings](const std::string& warning) { warnings.push_back(warning); };
@@ -129,7 +123,7 @@ void write_report(const ReportArgs& args, const std::string& report) {
 
 void run_report(const ReportArgs& args) {
   RunFiles files{{args.input}, {}};
-  if (!args.weather.empty()) files.reads.push_back(args.weather);
+  if (!args.radiation.weather.empty()) files.reads.push_back(args.radiation.weather);
   if (!args.output.empty()) files.writes.push_back({"-o", args.output});
   if (is_sky(args.format)) {
     if (args.method.name != "exact") {
@@ -173,7 +167,7 @@ void run_report(const ReportArgs& args) {
   report_settings.thresholds = args.thresholds;
   report_settings.top = args.top;
   report_settings.csv_safe = args.csv_safe;
-  report_settings.weather = args.weather;
+  report_settings.weather = args.radiation.weather;
   report_settings.on_warning = [&args](const std::string& warning) {
     std::cerr << "shadowgen: warning: " << args.input << ": " << warning << '\n';
   };
@@ -220,23 +214,14 @@ Command add_report_command(CLI::App& app) {
                        "show without --group-by); with --format csv, json, table, sun-hours "
                        "and sun-hours-table")
           ->delimiter(',');
-  CLI::Option* weather =
-      command->add_option("--weather", args->weather,
-                          "with --format irradiation or radiation: EnergyPlus weather file (EPW) "
-                          "whose hourly irradiance is used (default: the scene's \"weather\")");
-  CLI::Option* albedo =
-      command
-          ->add_option("--albedo", args->albedo,
-                       "with --format radiation: the ground's albedo, 0 to 1, at every hour "
-                       "(default: the weather file's field 33, else " +
-                           shortest(kDefaultAlbedo) + ")")
-          ->check(number_in(NumberRange{.low = 0.0, .high = 1.0, .unit = ""}));
-  CLI::Option* sky_option = add_sky_option(
-      *command, args->sky_subdivisions, args->sky_given,
-      "with --format sky or radiation (or energyplus-sky, for a column of its own): the sky's "
-      "patches, tregenza (145) or reinhart:N (Reinhart's MF:N, 144 N² + 1 patches, N from 1 to "
-      "64; default " +
-          sky::subdivision_name(api::SkyReportSettings{}.subdivisions) + ")");
+  const RadiationOptionSet radiation_options = add_radiation_options(
+      *command, args->radiation,
+      {.weather = "with --format irradiation or radiation",
+       .albedo = "with --format radiation",
+       .sky = "with --format sky or radiation (or energyplus-sky, for a column of its own)"});
+  CLI::Option* weather = radiation_options.weather;
+  CLI::Option* albedo = radiation_options.albedo;
+  CLI::Option* sky_option = radiation_options.sky;
   CLI::Option* threshold =
       command
           ->add_option("--threshold", args->thresholds,

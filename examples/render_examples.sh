@@ -45,4 +45,9 @@ for name in "${names[@]}"; do
       --target "$centre" --eye "${centre%,*},1000" --svg "$pictures/$name-sun-hours-plan.svg"
     echo "$name: $pictures/$name-sun-hours-plan.svg"
   fi
+  if [[ -n ${radiation_maps[$name]:-} ]]; then
+    "$shadowgen" render "$database" --view main --radiation "${radiation_maps[$name]}" \
+      --weather "$examples/${radiation_weather[$name]}" --svg "$pictures/$name-radiation.svg"
+    echo "$name: $pictures/$name-radiation.svg"
+  fi
 done

@@ -95,10 +95,16 @@ std::vector<RadiationRow> radiation_rows(const ShadowedScene& shadowed,
   return rows;
 }
 
+std::vector<RadiationRow> radiation_rows(const ShadowedScene& shadowed,
+                                         const sky::SkyExposure& exposure, const Weather& weather,
+                                         const RadiationOptions& options) {
+  const std::vector<PathSky> skies = path_skies(shadowed, exposure.patches, weather, options);
+  return radiation_rows(shadowed, exposure, skies, weather);
+}
+
 std::string radiation_csv(const ShadowedScene& shadowed, const sky::SkyExposure& exposure,
                           const Weather& weather, const RadiationOptions& options, CsvIds ids) {
-  const std::vector<PathSky> skies = path_skies(shadowed, exposure.patches, weather, options);
-  const std::vector<RadiationRow> rows = radiation_rows(shadowed, exposure, skies, weather);
+  const std::vector<RadiationRow> rows = radiation_rows(shadowed, exposure, weather, options);
   std::string out =
       "face_id,sun_path,area,direct_wh,diffuse_wh,ground_wh,total_wh,direct_wh_per_area,"
       "diffuse_wh_per_area,ground_wh_per_area,total_wh_per_area,unshaded_total_wh,"

@@ -72,6 +72,12 @@ std::vector<RadiationRow> radiation_rows(const ShadowedScene& shadowed,
                                          const sky::SkyExposure& exposure,
                                          std::span<const PathSky> skies, const Weather& weather);
 
+// The rows of path_skies's skies: what radiation_csv writes and a radiation map
+// (view/radiation_map.h) colours, computed once here for both.
+std::vector<RadiationRow> radiation_rows(const ShadowedScene& shadowed,
+                                         const sky::SkyExposure& exposure, const Weather& weather,
+                                         const RadiationOptions& options = {});
+
 // CSV: face_id,sun_path,area,direct_wh,diffuse_wh,ground_wh,total_wh,
 // direct_wh_per_area,diffuse_wh_per_area,ground_wh_per_area,total_wh_per_area,
 // unshaded_total_wh,unshaded_direct_wh_per_area,unshaded_diffuse_wh_per_area,

@@ -25,6 +25,9 @@ std::pair<long, long> tile_of(const clipper::PolygonWithHoles2& shape) {
           static_cast<long>(std::floor(y / kMergeTile))};
 }
 
+// A map's piece, coloured by its band (Piece::band) rather than its light set.
+bool banded(const Piece& piece) { return piece.sun_hours || piece.kwh_per_m2; }
+
 }  // namespace
 
 std::vector<ColourPath> colour_paths(const Picture& picture) {
@@ -36,15 +39,14 @@ std::vector<ColourPath> colour_paths(const Picture& picture) {
   for (const Piece& piece : picture.pieces) {
     std::string hex;
     detail::append_colour(hex, piece.colour);
-    const Key key{piece.layer,    hex, piece.light_set, piece.sun_hours.has_value(), piece.band,
-                  piece.back_side};
+    const Key key{piece.layer, hex, piece.light_set, banded(piece), piece.band, piece.back_side};
     const auto [it, added] = group_of.emplace(key, paths.size());
     if (added) {
       ColourPath path;
       path.layer = piece.layer;
       path.colour = piece.colour;
       path.light_set = piece.light_set;
-      path.sun_hours = piece.sun_hours.has_value();
+      path.banded = banded(piece);
       path.band = piece.band;
       path.back_side = piece.back_side;
       paths.push_back(std::move(path));

@@ -32,9 +32,10 @@ inline constexpr double kMergeTile = 64.0;
 struct ColourPath {
   std::size_t layer = 0;
   Rgb colour;
-  std::string light_set;   // the pieces' light set; empty in a sun-hours map
-  bool sun_hours = false;  // a sun-hours map's pieces (Piece::sun_hours set)
-  std::string band;        // their hour band
+  std::string light_set;  // the pieces' light set; empty in a sun-hours map
+  bool banded =
+      false;         // a sun-hours or radiation map's pieces (Piece::sun_hours or kwh_per_m2 set)
+  std::string band;  // their band of hours or of kWh/m²
   bool back_side = false;
   clipper::PolygonSet2 shape;  // pixels
   std::size_t pieces = 0;      // how many pieces it joins

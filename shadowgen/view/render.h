@@ -50,6 +50,8 @@ struct Piece {
   std::size_t layer = 0;
   // Sun-hours maps: the label of the band the hours lie in ("2–4 h"); empty otherwise.
   std::string band;
+  // Radiation maps (radiation_map.h): the face's total irradiation over the path, kWh/m².
+  std::optional<double> kwh_per_m2;
 };
 
 // The visible outline of one face, or of one object of a model file: the union of the

@@ -124,6 +124,10 @@ void append_pieces(std::string& out, const std::vector<Piece>& pieces) {
       out += " data-hours=\"";
       append_number(out, *piece.sun_hours);
       out += '"';
+    } else if (piece.kwh_per_m2) {
+      out += " data-kwh-per-m2=\"";
+      append_number(out, *piece.kwh_per_m2);
+      out += '"';
     } else {
       out += " data-lights=";
       append_attribute_value(out, piece.light_set);
@@ -158,7 +162,7 @@ void append_colour_paths(std::string& out, const std::vector<ColourPath>& paths,
       out += "\" stroke-width=\"" + std::string(kSeamStroke) + "\" stroke-linejoin=\"round\"";
     }
     out += " fill-rule=\"evenodd\"";
-    if (path.sun_hours) {
+    if (path.banded) {
       out += " data-band=";
       append_attribute_value(out, path.band);
     } else {

@@ -67,10 +67,10 @@ std::vector<std::string> picture_names() {
   return names;
 }
 
-// The scene a picture is of: the picture's name, less "-sun-hours" for a sun-hours map
-// and "-sun-hours-plan" for its plan.
+// The scene a picture is of: the picture's name, less "-sun-hours" for a sun-hours map,
+// "-sun-hours-plan" for its plan and "-radiation" for a radiation map.
 std::string scene_of(const std::string& picture) {
-  for (const std::string map : {"-sun-hours-plan", "-sun-hours"}) {
+  for (const std::string map : {"-sun-hours-plan", "-sun-hours", "-radiation"}) {
     if (picture.ends_with(map)) return picture.substr(0, picture.size() - map.size());
   }
   return picture;
@@ -173,10 +173,11 @@ TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
        {"chairs", "courtyard", "garden", "house", "pergola", "roof", "room"}) {
     EXPECT_TRUE(std::find(names.begin(), names.end(), expected) != names.end()) << expected;
   }
-  // The garden's sun path of 21 March also has its sun-hours map, and that map as a plan.
+  // The garden's sun path of 21 March also has its sun-hours map, that map as a plan, and
+  // its radiation map.
   EXPECT_EQ(pictures_of("garden"),
-            (std::vector<std::string>{"garden-sun-hours-plan.svg", "garden-sun-hours.svg",
-                                      "garden.svg"}));
+            (std::vector<std::string>{"garden-radiation.svg", "garden-sun-hours-plan.svg",
+                                      "garden-sun-hours.svg", "garden.svg"}));
   EXPECT_EQ(pictures_of("roof"), (std::vector<std::string>{"roof-sun-hours-plan.svg",
                                                            "roof-sun-hours.svg", "roof.svg"}));
   // A plan is seen from straight above: it has the site's north arrow and, being
@@ -189,6 +190,14 @@ TEST(ExampleScenes, TheFolderHoldsTheExamplesEachWithAMainViewAndItsPicture) {
     EXPECT_NE(map.find("data-north-arrow"), std::string::npos) << name;
     EXPECT_EQ(map.find("data-scale-bar="), std::string::npos) << name;
   }
+  // The radiation map's legend gives its bands in kWh/m² under its caption, and the site
+  // gives it a north arrow.
+  const std::string radiation = contents(kExamples / "garden-radiation.svg");
+  EXPECT_NE(radiation.find("data-legend=\"radiation\""), std::string::npos);
+  EXPECT_NE(radiation.find(">Irradiation, kWh/m²: march21</text>"), std::string::npos);
+  EXPECT_NE(radiation.find(">0–0.5 kWh/m²</text>"), std::string::npos);
+  EXPECT_NE(radiation.find("data-band=\"2–2.5 kWh/m²\""), std::string::npos);
+  EXPECT_NE(radiation.find("data-north-arrow"), std::string::npos);
   for (const std::string& name : names) {
     const nlohmann::json scene =
         nlohmann::json::parse(contents(kExamples / "scenes" / (name + ".json")));
@@ -267,6 +276,24 @@ TEST_F(ExampleScript, TheRoofOverAYearIsAShadingScheduleOfEveryHour) {
   EXPECT_EQ(rows, 8760u);
   EXPECT_GT(panel_partly, 100u);
   EXPECT_GT(panel_whole, 1000u);
+}
+
+// examples/weather/greenwich-clear-sky.epw, the radiation map's weather, is what
+// examples/weather/clear_sky_epw.py writes with its defaults, byte for byte: a year of
+// hourly rows, none of them measured.
+TEST_F(ExampleScript, TheClearSkyWeatherFileIsTheScriptsOutput) {
+  const fs::path out = dir_ / "clear-sky.epw";
+  const int code =
+      shell("python3 " + quoted((kExamples / "weather" / "clear_sky_epw.py").string()) + " >" +
+            quoted(out.string()) + " 2>" + quoted((dir_ / "err").string()));
+  ASSERT_EQ(code, 0) << contents(dir_ / "err");
+  const std::string fresh = contents(out);
+  const std::string kept = contents(kExamples / "weather" / "greenwich-clear-sky.epw");
+  EXPECT_TRUE(fresh == kept) << "examples/weather/greenwich-clear-sky.epw differs from the "
+                                "script's output at "
+                             << first_difference(kept, fresh);
+  EXPECT_EQ(std::count(kept.begin(), kept.end(), '\n'), 8 + 8760);
+  EXPECT_NE(kept.find("COMMENTS 1,Synthetic"), std::string::npos);
 }
 
 class ExamplePicture : public CliFolderTest<::testing::TestWithParam<std::string>> {
