@@ -48,7 +48,8 @@ struct Piece {
   std::optional<double> sun_hours;
   // Layers by light (render_by_light): 0 the base in shadow, 1 + L the layer of light L.
   std::size_t layer = 0;
-  // Sun-hours maps: the label of the band the hours lie in ("2–4 h"); empty otherwise.
+  // Sun-hours and radiation maps: the label of the band the hours or the kWh/m² lie in
+  // ("2–4 h", "2–2.5 kWh/m²"); empty otherwise.
   std::string band;
   // Radiation maps (radiation_map.h): the face's total irradiation over the path, kWh/m².
   std::optional<double> kwh_per_m2;
@@ -75,15 +76,16 @@ struct ScaleBar {
 };
 
 // A legend beside the picture: caption lines, then one swatch per entry; a sun-hours map's
-// from the least hours to the most, a light-set picture's light sets in the order of
-// light_set_name's sets (shadow first), each in the colour covering most of the picture
-// among its pieces (shading differs from face to face with each face's angle to the lights).
+// from the least hours to the most (a radiation map's from the least kWh/m²), a light-set picture's
+// light sets in the order of light_set_name's sets (shadow first), each in the colour covering most
+// of the picture among its pieces (shading differs from face to face with each face's angle to the
+// lights).
 struct LegendEntry {
   Rgb colour;
   std::string label;
 };
 struct Legend {
-  std::string kind;  // "sun-hours" or "light-sets": the SVG's data-legend
+  std::string kind;  // "sun-hours", "radiation" or "light-sets": the SVG's data-legend
   std::vector<std::string> caption;
   std::vector<LegendEntry> entries;
 };
