@@ -126,7 +126,8 @@ Shadows generate(const Scene& scene, const GenerateSettings& settings) {
     const shadowgen::Scene& model = detail::model(scene);
     try {
       return detail::shadows_handle(
-          shadows_by_method(model, method_of(settings), generate_options(settings)).shadowed,
+          shadows_by_method(model, method_run(method_of(settings), generate_options(settings)))
+              .shadowed,
           settings.threads);
     } catch (const shadowgen::GenerationError& e) {
       throw shadowgen::GenerationError(model.file, e.face_id(), e.light_id(), e.problem());

@@ -50,7 +50,8 @@ ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
   generate.sun_hours_regions = options.sun_hours_regions;
   generate.on_light_done = options.on_light_done;
   try {
-    return shadows_by_method(std::move(scene), options.method, std::move(generate)).shadowed;
+    return shadows_by_method(std::move(scene), method_run(options.method, std::move(generate)))
+        .shadowed;
   } catch (const GenerationError& e) {
     // Only here is the file known.
     throw GenerationError(path.string(), e.face_id(), e.light_id(), e.problem());

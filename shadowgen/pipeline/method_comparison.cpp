@@ -17,7 +17,7 @@ struct Timed {
 
 Timed timed_run(const Scene& scene, const Method& method, const GenerateOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  ShadowedScene shadowed = shadows_by_method(scene, method, options).shadowed;
+  ShadowedScene shadowed = shadows_by_method(scene, method_run(method, options)).shadowed;
   const auto end = std::chrono::steady_clock::now();
   return {std::move(shadowed), std::chrono::duration<double>(end - start).count()};
 }

@@ -1,34 +1,46 @@
 #include "shadowgen/pipeline/method_run.h"
 
-#include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "shadowgen/sampled/estimate.h"
 
 namespace shadowgen {
+namespace {
 
-GenerateResult shadows_by_method(const Scene& scene, const Method& method,
-                                 GenerateOptions options) {
-  if (method.exact()) {
-    options.method = method;
-    options.estimate = nullptr;
+struct RunOf {
+  const Scene& scene;
+  GenerateResult operator()(const GenerateOptions& options) const {
     return generate_shadows(scene, options);
   }
-  if (options.keep_instant_polygons) {
-    throw std::invalid_argument("shadows_by_method: a sampled method keeps no lit polygons");
+  GenerateResult operator()(const SampledRun& run) const {
+    const sampled::Estimator estimator(scene, run.method);
+    return estimate_shadows(scene, estimator, run.options);
   }
-  const sampled::Estimator estimator(scene, method);
-  options.method = method;
-  options.estimate = [&estimator](const Light& light) { return estimator.lit_areas(light); };
-  return generate_shadows(scene, options);
+};
+
+}  // namespace
+
+GenerateResult shadows_by_method(const Scene& scene, const MethodRun& run) {
+  return std::visit(RunOf{scene}, run);
 }
 
-GenerateResult shadows_by_method(Scene&& scene, const Method& method, GenerateOptions options) {
-  if (!method.exact()) return shadows_by_method(std::as_const(scene), method, std::move(options));
-  options.method = method;
-  options.estimate = nullptr;
-  return generate_shadows(std::move(scene), options);
+MethodRun method_run(const Method& method, GenerateOptions options) {
+  if (method.exact()) return options;
+  if (options.keep_instant_polygons) {
+    throw std::invalid_argument("method_run: a sampled method keeps no lit polygons");
+  }
+  if (options.shard) {
+    throw std::invalid_argument("method_run: a sampled method's run has no shards");
+  }
+  return SampledRun{method, {options.threads, std::move(options.on_light_done)}};
+}
+
+GenerateResult shadows_by_method(Scene&& scene, const MethodRun& run) {
+  if (const auto* exact = std::get_if<GenerateOptions>(&run)) {
+    return generate_shadows(std::move(scene), *exact);
+  }
+  return shadows_by_method(std::as_const(scene), run);
 }
 
 }  // namespace shadowgen

@@ -147,6 +147,8 @@ Estimator::Estimator(const Scene& scene, const Method& method) {
 
 Estimator::~Estimator() = default;
 
+const Method& Estimator::method() const { return impl_->method; }
+
 PartLitAreas Estimator::lit_areas(const Light& light) const {
   Impl& impl = *impl_;
   const std::vector<PartRole> roles = part_roles(impl.all.polygons, impl.all.planes, light);

@@ -21,6 +21,7 @@
 
 #include "shadowgen/model/method.h"
 #include "shadowgen/model/scene.h"
+#include "shadowgen/shadows/estimate_shadows.h"
 
 namespace shadowgen::sampled {
 
@@ -30,19 +31,22 @@ enum class Casting : unsigned char;
 // The estimated lit area of every part of every face, [face][part], in Scene::faces order.
 using PartLitAreas = std::vector<std::vector<double>>;
 
-class Estimator {
+class Estimator final : public LitAreaEstimator {
  public:
   // `method` is kRays or kShadowMap (std::invalid_argument otherwise, or for samples or a
   // resolution out of range). `scene` must outlive the estimator. Lights may be estimated
   // from several threads at once.
   Estimator(const Scene& scene, const Method& method);
-  ~Estimator();
+  ~Estimator() override;
   Estimator(const Estimator&) = delete;
   Estimator& operator=(const Estimator&) = delete;
 
   // Lit area per part of every face under `light`. The same light gives the same numbers
   // in every run and on any number of threads.
-  PartLitAreas lit_areas(const Light& light) const;
+  PartLitAreas lit_areas(const Light& light) const override;
+
+  // The method given.
+  const Method& method() const override;
 
  private:
   // Internal, for the benchmarks (ray_caster.h): whether a rays estimator casts a face's

@@ -53,6 +53,7 @@ struct LightStats {
   double seconds = 0.0;
 };
 
+// The exact method's options (a sampled method's are estimate_shadows.h's EstimateOptions).
 struct GenerateOptions {
   // Threads for the lights and, within each, its views' image regions and its receivers
   // (0: one per hardware thread). The result does not depend on them.
@@ -83,12 +84,6 @@ struct GenerateOptions {
   std::optional<ShardPlace> shard;
   // Called after each light is done (from the worker that finished it); for progress.
   std::function<void(std::size_t light, const LightStats&)> on_light_done;
-  // A sampled method (ShadowedScene::method) in place of the exact one: where set, each
-  // light's lit areas are `estimate`'s, [face][part], called from any thread, and no
-  // lit polygon is made. Sun paths then keep lit areas alone (sun_hours_regions is not
-  // taken), and a shard is refused (std::invalid_argument).
-  Method method;
-  std::function<std::vector<std::vector<double>>(const Light&)> estimate;
 };
 
 struct GenerateResult {

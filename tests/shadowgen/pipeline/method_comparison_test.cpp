@@ -23,9 +23,9 @@ TEST(MethodRun, ASampledMethodFillsLitAreasOfPlainLightsAndSunPaths) {
   const Scene scene = scene_of(test::site_scene(test::kCourtyard, test::kMarch21));
   GenerateOptions options;
   options.sun_hours_regions = false;
-  const ShadowedScene exact = shadows_by_method(scene, Method{}, options).shadowed;
+  const ShadowedScene exact = shadows_by_method(scene, method_run(Method{}, options)).shadowed;
   const ShadowedScene rays =
-      shadows_by_method(scene, Method{MethodKind::kRays, 4096}, options).shadowed;
+      shadows_by_method(scene, method_run(Method{MethodKind::kRays, 4096}, options)).shadowed;
   EXPECT_EQ(rays.method, (Method{MethodKind::kRays, 4096}));
   ASSERT_EQ(rays.sun_paths.size(), 1u);
   const SunPathHours& path = rays.sun_paths.front();
@@ -50,7 +50,8 @@ TEST(MethodRun, ASampledMethodFillsLitAreasOfPlainLightsAndSunPaths) {
 
 TEST(MethodRun, PlainLightsKeepTheirEstimatesPerLight) {
   const Scene scene = scene_of(test::kTwoLights);
-  const ShadowedScene rays = shadows_by_method(scene, Method{MethodKind::kRays, 1024}, {}).shadowed;
+  const ShadowedScene rays =
+      shadows_by_method(scene, SampledRun{Method{MethodKind::kRays, 1024}, {}}).shadowed;
   ASSERT_EQ(rays.estimated_lit_area.size(), 2u);
   // The ground (100) loses the square's shadow (16) under both lights; the square is lit.
   EXPECT_NEAR(rays.estimated_lit_area[0][0], 84.0, 0.5);
@@ -58,8 +59,32 @@ TEST(MethodRun, PlainLightsKeepTheirEstimatesPerLight) {
   EXPECT_EQ(rays.estimated_lit_area[0][1], 16.0);
   GenerateOptions keep;
   keep.keep_instant_polygons = true;
-  EXPECT_THROW(shadows_by_method(scene, Method{MethodKind::kRays, 16}, keep),
-               std::invalid_argument);
+  EXPECT_THROW(method_run(Method{MethodKind::kRays, 16}, keep), std::invalid_argument);
+}
+
+// What only the exact method makes cannot be asked of a sampled run: its options have no
+// such settings, and the exact generator's options take no estimate.
+template <class Options>
+concept AsksForExactOnly = requires(Options options) {
+  options.keep_instant_polygons;
+}
+|| requires(Options options) { options.sun_hours_regions; }
+|| requires(Options options) { options.shard; };
+template <class Options>
+concept TakesAnEstimate = requires(Options options) {
+  options.estimate;
+}
+|| requires(Options options) { options.method; };
+static_assert(AsksForExactOnly<GenerateOptions> && !TakesAnEstimate<GenerateOptions>);
+static_assert(!AsksForExactOnly<EstimateOptions> && !TakesAnEstimate<EstimateOptions>);
+
+TEST(MethodRun, ASampledRunOfTheExactMethodIsRefused) {
+  const Scene scene = scene_of(test::kTwoLights);
+  EXPECT_THROW(shadows_by_method(scene, SampledRun{Method{}, {}}), std::invalid_argument);
+  GenerateOptions shard;
+  shard.shard = ShardPlace{0, 2};
+  EXPECT_THROW(method_run(Method{MethodKind::kRays, 16}, shard), std::invalid_argument);
+  EXPECT_TRUE(std::holds_alternative<GenerateOptions>(method_run(Method{}, shard)));
 }
 
 TEST(MethodComparison, ExactComesFirstWithoutErrorAndTheFrontIsMarked) {
