@@ -100,7 +100,7 @@ LoadOptions load_options(const ReadingArgs& args, Accept accept, const RunFiles&
   LoadOptions options;
   options.accept = accept;
   options.strict = args.strict;
-  options.threads = args.threads;
+  options.generate.threads = args.threads;
   options.verbose = args.verbose;
   options.lights = args.lights;
   guard_outputs(options, files);

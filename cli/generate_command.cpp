@@ -38,10 +38,11 @@ struct GenerateArgs {
   std::vector<std::string> scenes;
   std::string output;
   ReadingArgs reading;
-  bool keep_instants = false;  // LoadOptions::instant_polygons
-  std::string instants;        // --instants K/N: LoadOptions::shard
-  bool areas_only = false;     // --areas-only: not LoadOptions::sun_hours_regions
-  MethodArgs method;           // LoadOptions::method
+  // --keep-instants and --areas-only, named as api::GenerateSettings names them.
+  bool keep_instant_polygons = false;
+  bool sun_hours_regions = true;
+  std::string instants;  // --instants K/N: api::GenerateSettings::shard
+  MethodArgs method;     // api::GenerateSettings::method, samples, resolution
 };
 
 // Upper bound of N in --instants K/N, the database reader's (far more than any scheduler
@@ -123,8 +124,8 @@ api::Shadows generated(const GenerateArgs& args, const fs::path& database, std::
   refuse_unsafe_outputs(writes, scene.files());
   api::GenerateSettings settings;
   settings.threads = args.reading.threads;
-  settings.keep_instant_polygons = args.keep_instants;
-  settings.sun_hours_regions = !args.areas_only;
+  settings.keep_instant_polygons = args.keep_instant_polygons;
+  settings.sun_hours_regions = args.sun_hours_regions;
   args.method.apply(settings);
   if (!args.instants.empty()) {
     const ShardPlace shard = parse_shard(args.instants);
@@ -156,7 +157,7 @@ api::Shadows generated(const GenerateArgs& args, const fs::path& database, std::
 void run_generate(const GenerateArgs& args) {
   if (!args.instants.empty()) {
     parse_shard(args.instants);  // a usage error before any scene is read
-    if (args.keep_instants) {
+    if (args.keep_instant_polygons) {
       throw UsageError("--instants and --keep-instants: a shard keeps its instants' sums only");
     }
   }
@@ -166,7 +167,7 @@ void run_generate(const GenerateArgs& args) {
         "--instants shares out exact sums; a sampled method's lit areas need no "
         "shards");
   }
-  if (!method.exact() && args.keep_instants) {
+  if (!method.exact() && args.keep_instant_polygons) {
     throw UsageError("--keep-instants keeps lit polygons, which a sampled method does not make");
   }
   const std::vector<fs::path> paths = database_paths(args.scenes, args.output);
@@ -193,7 +194,7 @@ void add_generate_options(CLI::App& command, GenerateArgs& args) {
       ->required();
   add_reading_options(command, args.reading, /*progress=*/true);
   add_method_options(command, args.method);
-  command.add_flag("--keep-instants", args.keep_instants,
+  command.add_flag("--keep-instants", args.keep_instant_polygons,
                    "keep the lit polygons of every instant of a sun path, not only their sun "
                    "hours and lit areas (export and render draw only lights with polygons)");
   command
@@ -202,11 +203,12 @@ void add_generate_options(CLI::App& command, GenerateArgs& args) {
                   "the other lights in shard 1 alone) and write it for shadowgen merge, "
                   "which joins all N into exactly the database of one run")
       ->type_name("K/N");
-  command.add_flag("--areas-only", args.areas_only,
-                   "sum sun paths into each instant's lit area per face alone, without sun-hours "
-                   "regions: what the EnergyPlus schedule and irradiation reports need, in time "
-                   "linear in the instants (the regions of a long path can grow with the square "
-                   "of its instants); sun-hours reports, maps and band exports refuse it");
+  command.add_flag_callback(
+      "--areas-only", [&args] { args.sun_hours_regions = false; },
+      "sum sun paths into each instant's lit area per face alone, without sun-hours "
+      "regions: what the EnergyPlus schedule and irradiation reports need, in time "
+      "linear in the instants (the regions of a long path can grow with the square "
+      "of its instants); sun-hours reports, maps and band exports refuse it");
 }
 
 }  // namespace

@@ -248,7 +248,7 @@ void run_render(const RenderArgs& given) {
   load.accept = Accept::kDatabase;
   load.lights = args.lights;
   // A sun-hours map draws a path's sums, not its instants' lit polygons.
-  load.instant_polygons = args.sun_hours.path.empty() && args.radiation.empty();
+  load.generate.keep_instant_polygons = args.sun_hours.path.empty() && args.radiation.empty();
   load.draws = true;
   if (!args.quiet) {
     load.on_warning = [](const std::string& warning) {

@@ -23,7 +23,7 @@ void RunProgress::watch(LoadOptions& options) {
     if (then) then(scene);
     lights(scene.lights.size());
   };
-  options.on_light_done = [this](std::size_t, const LightStats& stats) {
+  options.generate.on_light_done = [this](std::size_t, const LightStats& stats) {
     if (display_) display_->light_done(stats);
   };
   if (options.on_warning) {

@@ -25,7 +25,7 @@ CLI::Option* add_sun_hours_options(CLI::App& command, SunHoursArgs& args, const 
 }
 
 void load_to_draw(LoadOptions& load, const SunHoursArgs& args, const std::string& input) {
-  load.instant_polygons = args.path.empty();
+  load.generate.keep_instant_polygons = args.path.empty();
   load.draws = true;
   if (!args.path.empty()) {
     load.on_scene = [path = args.path, input, check = load.on_scene](const Scene& scene) {

@@ -142,19 +142,14 @@ Shadows load(const std::string& path, const LoadSettings& settings) {
     options.verbose = settings.read.verbose;
     options.lights = settings.read.lights;
     options.on_warning = settings.read.on_warning;
-    const GenerateOptions generate = generate_options(settings.generate);
-    options.threads = generate.threads;
-    options.sun_hours_regions = generate.sun_hours_regions;
-    options.instant_polygons = generate.keep_instant_polygons;
-    options.shard = generate.shard;
-    options.on_light_done = generate.on_light_done;
+    options.generate = generate_options(settings.generate);
     options.method = method_of(settings.generate);
     if (settings.on_scene) {
       options.on_scene = [&settings](const shadowgen::Scene& scene) {
         settings.on_scene(detail::scene_view(scene));
       };
     }
-    return detail::shadows_handle(load_shadowed(path, options), options.threads);
+    return detail::shadows_handle(load_shadowed(path, options), options.generate.threads);
   });
 }
 

@@ -43,14 +43,8 @@ ReadOptions read_options(const LoadOptions& options) {
 ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
                         const LoadOptions& options) {
   Scene scene = prepared(std::move(read), path, options);
-  GenerateOptions generate;
-  generate.threads = options.threads;
-  generate.keep_instant_polygons = options.instant_polygons;
-  generate.shard = options.shard;
-  generate.sun_hours_regions = options.sun_hours_regions;
-  generate.on_light_done = options.on_light_done;
   try {
-    return shadows_by_method(std::move(scene), method_run(options.method, std::move(generate)))
+    return shadows_by_method(std::move(scene), method_run(options.method, options.generate))
         .shadowed;
   } catch (const GenerationError& e) {
     // Only here is the file known.
@@ -97,13 +91,13 @@ ShadowedScene read_shadowed(const std::filesystem::path& path, const std::string
                          "), no lit polygons to draw: generate it with --method exact");
   }
   keep_lights(shadowed, options.lights, path.string());
-  if (options.instant_polygons && options.on_warning) {
+  if (options.generate.keep_instant_polygons && options.on_warning) {
     for (const std::string& sun_path : drop_summed_instants(shadowed, path.string())) {
       options.on_warning(path.string() + ": sun path '" + one_line(sun_path) +
                          "': its instants' lit polygons were summed into sun hours, not kept, "
                          "so its instants are left out (generate --keep-instants keeps them)");
     }
-  } else if (options.instant_polygons) {
+  } else if (options.generate.keep_instant_polygons) {
     drop_summed_instants(shadowed, path.string());
   }
   return shadowed;
@@ -184,11 +178,11 @@ Scene scene_of(const std::filesystem::path& path, const LoadOptions& options) {
 }  // namespace
 
 ShadowedScene load_shadowed(const std::filesystem::path& path, const LoadOptions& options) {
-  return on_threads(options.threads, [&] { return load(path, options); });
+  return on_threads(options.generate.threads, [&] { return load(path, options); });
 }
 
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
-  return on_threads(options.threads, [&] { return scene_of(path, options); });
+  return on_threads(options.generate.threads, [&] { return scene_of(path, options); });
 }
 
 }  // namespace shadowgen

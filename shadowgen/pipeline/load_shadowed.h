@@ -30,18 +30,15 @@ struct LoadOptions {
   Accept accept = Accept::kSceneOrDatabase;
   bool strict = false;   // ReadOptions::strict, for a scene and a database alike
   bool verbose = false;  // ReadOptions::verbose
-  // Threads reading a scene (its polygons, in parallel) and generating its shadows
-  // (GenerateOptions::threads); 0: every hardware thread. The result is the same for any.
-  unsigned threads = 0;
-  // GenerateOptions::sun_hours_regions, for a scene.
-  bool sun_hours_regions = true;
-  // GenerateOptions::shard: a scene's run cut into shards (generate --instants K/N). A
-  // shard database is refused but where `accept` is kShard.
-  std::optional<ShardPlace> shard;
-  // Whether the caller draws every light's lit polygons (export, render): a scene's sun
-  // paths keep their instants' polygons (GenerateOptions::keep_instant_polygons); a
-  // database's sun paths that kept only lit areas are dropped, with a warning.
-  bool instant_polygons = false;
+  // A scene's generation, as generate_shadows takes it, the same names through: threads
+  // also read a scene (its polygons, in parallel; 0: every hardware thread, the result the
+  // same for any); with a sampled `method`, only threads and on_light_done apply (and
+  // keep_instant_polygons or a shard is a std::invalid_argument, method_run.h). Two also
+  // apply to a database: a shard database is refused but where `accept` is kShard
+  // (generate.shard makes one, generate --instants K/N), and keep_instant_polygons, set
+  // where the caller draws every light's lit polygons (export, render), drops a database's
+  // sun paths that kept only lit areas, with a warning.
+  GenerateOptions generate;
   // How a scene's lit areas are found (generate, report): a sampled method estimates them
   // (shadowgen/sampled/estimate.h) and makes no lit polygon. A database is read as it is
   // made: with a sampled method asked for, it is refused, as it is where the caller draws
@@ -57,8 +54,6 @@ struct LoadOptions {
   std::function<void(const std::string& warning)> on_warning;
   // A scene once read, before its shadows are generated (to start a progress display).
   std::function<void(const Scene& scene)> on_scene;
-  // GenerateOptions::on_light_done.
-  std::function<void(std::size_t light, const LightStats& stats)> on_light_done;
 };
 
 // Throws InputError naming the file for bad input (a format the caller does not take

@@ -36,13 +36,13 @@ TEST(RunProgress, GeneratesThenGoesThroughItsStagesOnOneLine) {
   };
   progress.watch(options);
   ASSERT_TRUE(options.on_scene);
-  ASSERT_TRUE(options.on_light_done);
+  ASSERT_TRUE(options.generate.on_light_done);
   options.on_warning("bent face");  // while reading: no line yet, nothing to end
   Scene scene;
   scene.lights.resize(2);
   options.on_scene(scene);
-  options.on_light_done(0, LightStats{});
-  options.on_light_done(1, LightStats{});
+  options.generate.on_light_done(0, LightStats{});
+  options.generate.on_light_done(1, LightStats{});
   progress.stage("splitting faces by light sets");
   options.on_warning("late");  // ends the line, which the next stage draws anew
   progress.stage("writing out.obj");
@@ -66,7 +66,7 @@ TEST(RunProgress, SilentWithoutAStream) {
   LoadOptions options;
   progress.watch(options);
   EXPECT_FALSE(options.on_scene);
-  EXPECT_FALSE(options.on_light_done);
+  EXPECT_FALSE(options.generate.on_light_done);
   EXPECT_FALSE(progress.lights(3));
   EXPECT_NO_THROW(progress.stage("writing"));
   EXPECT_NO_THROW(progress.finish());

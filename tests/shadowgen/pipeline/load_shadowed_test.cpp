@@ -75,7 +75,7 @@ class LoadShadowed : public ::testing::Test {
 LoadOptions accepting(Accept accept) {
   LoadOptions options;
   options.accept = accept;
-  options.threads = 1;
+  options.generate.threads = 1;
   return options;
 }
 
@@ -141,7 +141,7 @@ TEST_F(LoadShadowed, TheSceneIsAnnouncedBeforeItsLightsAreDone) {
   options.on_scene = [&](const Scene& s) {
     events.push_back("scene with " + std::to_string(s.lights.size()) + " lights");
   };
-  options.on_light_done = [&](std::size_t light, const LightStats&) {
+  options.generate.on_light_done = [&](std::size_t light, const LightStats&) {
     events.push_back("light " + std::to_string(light));
   };
   load_shadowed(scene, options);
