@@ -22,7 +22,7 @@ sky::SkyComparison compare_sky_methods(const Scene& scene, int subdivisions,
   const auto run = [&](const Method& method) {
     if (on_trial) on_trial(method);
     const auto start = std::chrono::steady_clock::now();
-    const GenerateResult result = shadows_by_method(lit_by_sky, method, options);
+    const GenerateResult result = shadows_by_method(lit_by_sky, method_run(method, options));
     const sky::SkyExposure exposure =
         sky::sky_exposure_of(scene, result.shadowed.sun_paths.at(0), 0, patches);
     if (comparison.area.empty()) comparison.area = exposure.area;
