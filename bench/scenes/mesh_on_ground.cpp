@@ -21,13 +21,13 @@ using Matrix = double[4][4];
 // polygons and lights of `rest` (JSON members, each with a leading comma).
 Scene read(const std::filesystem::path& mesh, const Matrix& transform, const std::string& rest) {
   std::string text = R"({"format": "shadowgen-scene/1", "meshes": [{"id": "mesh", "file": )";
-  detail::append_json_string(text, std::filesystem::absolute(mesh).string());
+  json::detail::append_json_string(text, std::filesystem::absolute(mesh).string());
   text += R"(, "transform": [)";
   for (int r = 0; r < 4; ++r) {
     text += r ? ", [" : "[";
     for (int c = 0; c < 4; ++c) {
       if (c) text += ", ";
-      detail::append_json_number(text, transform[r][c]);
+      json::detail::append_json_number(text, transform[r][c]);
     }
     text += "]";
   }

@@ -21,7 +21,7 @@ using Json = nlohmann::json;
 // from any event ends the scan.
 class FormatScanner {
  public:
-  explicit FormatScanner(detail::Locate locate) : locate_(std::move(locate)) {}
+  explicit FormatScanner(json::detail::Locate locate) : locate_(std::move(locate)) {}
 
   // The outcome once the scan has stopped: the format, or why there is none.
   std::optional<std::string> format;
@@ -56,7 +56,7 @@ class FormatScanner {
   }
   bool parse_error(std::size_t position, const std::string& last_token,
                    const nlohmann::detail::exception& e) {
-    problem = detail::describe_parse_error(locate_, position, last_token, e.id, e.what());
+    problem = json::detail::describe_parse_error(locate_, position, last_token, e.id, e.what());
     error_end = position;
     return false;
   }
@@ -81,7 +81,7 @@ class FormatScanner {
     return true;
   }
 
-  detail::Locate locate_;
+  json::detail::Locate locate_;
   bool open(const char* what) {
     if (!check_format_value(what)) return false;
     ++depth_;
@@ -103,7 +103,7 @@ template <class Text>
 [[noreturn]] void refuse(const FormatScanner& scanner, Text& text,
                          const std::filesystem::path& path) {
   std::optional<std::string> nul;
-  if (scanner.error_end) nul = detail::nul_problem(text, *scanner.error_end);
+  if (scanner.error_end) nul = json::detail::nul_problem(text, *scanner.error_end);
   throw InputError(path.string(), "", nul.value_or(scanner.problem));
 }
 
@@ -194,7 +194,7 @@ std::string read_text_file(const std::filesystem::path& path, std::string_view w
 
 std::string document_format(const std::string& json_text, const std::filesystem::path& path) {
   FormatScanner scanner([&json_text](std::size_t offset) {
-    return detail::line_column(std::string_view(json_text), offset);
+    return json::detail::line_column(std::string_view(json_text), offset);
   });
   Json::sax_parse(json_text, &scanner);
   if (!scanner.format) refuse(scanner, json_text, path);
@@ -203,7 +203,8 @@ std::string document_format(const std::string& json_text, const std::filesystem:
 
 std::string file_format(const std::filesystem::path& path) {
   compressed::DecompressedInput in(open_input_file(path), path.string());
-  FormatScanner scanner([&in](std::size_t offset) { return detail::line_column(in, offset); });
+  FormatScanner scanner(
+      [&in](std::size_t offset) { return json::detail::line_column(in, offset); });
   Json::sax_parse(in, &scanner);
   if (!scanner.format) refuse(scanner, in, path);
   return *scanner.format;

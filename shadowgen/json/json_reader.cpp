@@ -177,7 +177,7 @@ std::vector<std::string> JsonObject::unknown_keys() const {
 
 std::string JsonObject::unknown_key_problem(const std::string& key) const {
   std::string problem = "unknown key '" + key + "'";
-  if (const std::optional<std::string> meant = detail::closest_key(key, asked_)) {
+  if (const std::optional<std::string> meant = json::detail::closest_key(key, asked_)) {
     problem += " (did you mean '" + *meant + "'?)";
   }
   return problem;
@@ -221,23 +221,23 @@ JsonValue JsonArray::at(std::size_t index) const {
 
 JsonDocument::JsonDocument(std::string_view text, JsonSource source)
     : root_(std::make_unique<Json>()), source_(std::make_unique<JsonSource>(std::move(source))) {
-  const detail::ParseOutcome outcome = detail::parse_json(text, *root_);
+  const json::detail::ParseOutcome outcome = json::detail::parse_json(text, *root_);
   if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
 }
 
 JsonDocument::JsonDocument(std::string_view text, JsonSource source, std::string_view streamed_key,
                            const ElementTaker& take)
     : root_(std::make_unique<Json>()), source_(std::make_unique<JsonSource>(std::move(source))) {
-  const detail::ElementStream stream = element_stream(streamed_key, take);
-  const detail::ParseOutcome outcome = detail::parse_json(text, *root_, &stream);
+  const json::detail::ElementStream stream = element_stream(streamed_key, take);
+  const json::detail::ParseOutcome outcome = json::detail::parse_json(text, *root_, &stream);
   if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
 }
 
 JsonDocument::JsonDocument(std::istream& in, JsonSource source, std::string_view streamed_key,
                            const ElementTaker& take)
     : root_(std::make_unique<Json>()), source_(std::make_unique<JsonSource>(std::move(source))) {
-  const detail::ElementStream stream = element_stream(streamed_key, take);
-  const detail::ParseOutcome outcome = detail::parse_json(in, *root_, &stream);
+  const json::detail::ElementStream stream = element_stream(streamed_key, take);
+  const json::detail::ParseOutcome outcome = json::detail::parse_json(in, *root_, &stream);
   if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
 }
 
@@ -246,14 +246,14 @@ JsonDocument::JsonDocument(std::string_view text, JsonSource source, std::string
     : root_(std::make_unique<Json>()),
       source_(std::make_unique<JsonSource>(std::move(source))),
       root_path_(std::move(path)) {
-  const detail::ParseOutcome outcome = detail::parse_json_at_depth(text, *root_, depth);
+  const json::detail::ParseOutcome outcome = json::detail::parse_json_at_depth(text, *root_, depth);
   if (outcome.problem) throw InputError(source_->file, "", *outcome.problem);
 }
 
 JsonDocument::~JsonDocument() = default;
 
-detail::ElementStream JsonDocument::element_stream(std::string_view key,
-                                                   const ElementTaker& take) const {
+json::detail::ElementStream JsonDocument::element_stream(std::string_view key,
+                                                         const ElementTaker& take) const {
   return {key, [this, key, &take](Json& element, std::size_t index) {
             const JsonValue value(&element, source_.get(),
                                   std::string(key) + "[" + std::to_string(index) + "]");

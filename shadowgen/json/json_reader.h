@@ -30,7 +30,7 @@
 
 namespace shadowgen {
 
-namespace detail {
+namespace json::detail {
 struct ElementStream;
 }
 
@@ -221,7 +221,7 @@ class JsonDocument {
  private:
   // What the streaming constructors hand to the parser: each element of array `key` as
   // a value, with the root as read so far, to `take`.
-  detail::ElementStream element_stream(std::string_view key, const ElementTaker& take) const;
+  json::detail::ElementStream element_stream(std::string_view key, const ElementTaker& take) const;
 
   std::unique_ptr<nlohmann::json> root_;
   std::unique_ptr<JsonSource> source_;  // values point to it

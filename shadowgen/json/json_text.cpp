@@ -6,7 +6,7 @@
 
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::json::detail {
 
 void append_json_number(std::string& out, double value) {
   const std::size_t start = out.size();
@@ -33,4 +33,4 @@ void append_json_string(std::string& out, std::string_view text) {
              .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::json::detail

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::json::detail {
 
 // Shortest round-trip form (std::to_chars), always with a '.' or an exponent so that JSON
 // readers take it for a floating-point number: 28 is written "28.0" and -0 as "-0.0",
@@ -18,4 +18,4 @@ void append_json_number(std::string& out, double value);
 // always valid JSON; valid UTF-8 is kept as it is.
 void append_json_string(std::string& out, std::string_view text);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::json::detail

@@ -68,7 +68,7 @@ JsonWriter& JsonWriter::end_array() { return close(']'); }
 JsonWriter& JsonWriter::key(std::string_view key) {
   assert(!open_.empty() && !after_key_);
   separate();
-  detail::append_json_string(out_, key);
+  json::detail::append_json_string(out_, key);
   out_ += open_.back().layout == Layout::kLines ? ": " : ":";
   after_key_ = true;
   return *this;
@@ -80,7 +80,7 @@ JsonWriter& JsonWriter::value(double number) {
                                 std::string(std::isnan(number) ? "NaN" : "infinity") + ")");
   }
   separate();
-  detail::append_json_number(out_, number);
+  json::detail::append_json_number(out_, number);
   return *this;
 }
 
@@ -92,7 +92,7 @@ JsonWriter& JsonWriter::value(std::uint64_t integer) {
 
 JsonWriter& JsonWriter::value(std::string_view text) {
   separate();
-  detail::append_json_string(out_, text);
+  json::detail::append_json_string(out_, text);
   return *this;
 }
 

@@ -23,16 +23,16 @@ namespace shadowgen {
 namespace {
 
 namespace fs = std::filesystem;
-using detail::Destination;
-using detail::is_dash;
-using detail::register_temporary;
-using detail::resolve;
-using detail::unregister_temporary;
-using detail::written_file;
-using Kind = detail::DestinationKind;
+using output::detail::Destination;
+using output::detail::is_dash;
+using output::detail::register_temporary;
+using output::detail::resolve;
+using output::detail::unregister_temporary;
+using output::detail::written_file;
+using Kind = output::detail::DestinationKind;
 
 [[noreturn]] void fail(const fs::path& path, std::string_view what, int error) {
-  detail::fail_to_write(path, what, error);
+  output::detail::fail_to_write(path, what, error);
 }
 
 void write_all(int fd, std::string_view data, const fs::path& shown) {

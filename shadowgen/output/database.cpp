@@ -259,7 +259,7 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f,
   const LitTable::ConstRow lit = shadowed.lit[f];
   out.begin_object(Layout::kLines);
   out.key(key::kId).value(face.id).key(key::kSourceFile).value(face.source_file);
-  detail::write_origin(out, face.origin);
+  output::detail::write_origin(out, face.origin);
   if (face.vertex_rounding > 0.0) out.key(key::kVertexRounding).value(face.vertex_rounding);
   out.key(key::kParts).begin_array(Layout::kLines);
   for (const Polygon3& part : face.parts) write_polygon(out, part);
@@ -291,7 +291,7 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f,
 namespace {
 
 void write_database_to(const ShadowedScene& shadowed, JsonWriter& out, database::Layout layout) {
-  detail::check_writable(shadowed);
+  output::detail::check_writable(shadowed);
   const Scene& scene = shadowed.scene;
   out.begin_object(Layout::kLines).key(key::kFormat);
   out.value(layout == database::Layout::kIndexed ? database::kIndexedFormat
@@ -303,7 +303,7 @@ void write_database_to(const ShadowedScene& shadowed, JsonWriter& out, database:
         .value(std::uint64_t{shadowed.shard->index + 1});
     out.key(key::kCount).value(std::uint64_t{shadowed.shard->count}).end_object();
   }
-  if (!shadowed.method.exact()) detail::write_method(out, shadowed.method);
+  if (!shadowed.method.exact()) output::detail::write_method(out, shadowed.method);
   if (scene.site) write_site(out, *scene.site);
   out.key(key::kLights).begin_array(Layout::kLines);
   for (const Light& light : scene.lights) write_light(out, light);

@@ -20,7 +20,7 @@ constexpr std::int64_t kSecondsPerDay = 86'400;
 
 std::string header(const ShadowedScene& shadowed) {
   std::string out = "Surface Name,";
-  for (const std::string& name : detail::energyplus_surface_names(shadowed.scene)) {
+  for (const std::string& name : output::detail::energyplus_surface_names(shadowed.scene)) {
     out += name + ',';
   }
   return out + '\n';
@@ -54,7 +54,7 @@ void append_fraction(std::string& out, double fraction) {
 }  // namespace
 
 EnergyPlusShading energyplus_shading(const ShadowedScene& shadowed) {
-  detail::require_sun_paths(shadowed, "a shading schedule");
+  output::detail::require_sun_paths(shadowed, "a shading schedule");
   const std::string file = shadowed.scene.file;
   if (shadowed.sun_paths.size() > 1) {
     std::string ids;

@@ -8,20 +8,20 @@
 namespace shadowgen {
 
 std::string energyplus_sky_csv(const Scene& scene, const sky::EnergyPlusSkyShading& shading) {
-  const std::vector<std::string> names = detail::energyplus_surface_names(scene);
+  const std::vector<std::string> names = output::detail::energyplus_surface_names(scene);
   std::string out = "surface_name,dif_shdg_ratio_iso_sky,dif_shdg_ratio_horiz";
   out += shading.fine ? ",sky_shading_ratio\n" : "\n";
   for (std::size_t f = 0; f < names.size(); ++f) {
     out += names[f];
     out += ',';
-    detail::append_csv_number(
+    output::detail::append_csv_number(
         out, sky::shading_ratio(shading.with_iso_sky[f], shading.without_iso_sky[f]));
     out += ',';
-    detail::append_csv_number(
+    output::detail::append_csv_number(
         out, sky::shading_ratio(shading.with_horizon[f], shading.without_horizon[f]));
     if (shading.fine) {
       out += ',';
-      detail::append_csv_number(out, sky::fine_shading_ratio(*shading.fine, f));
+      output::detail::append_csv_number(out, sky::fine_shading_ratio(*shading.fine, f));
     }
     out += '\n';
   }
@@ -29,7 +29,7 @@ std::string energyplus_sky_csv(const Scene& scene, const sky::EnergyPlusSkyShadi
 }
 
 void require_energyplus_surface_names(const Scene& scene) {
-  (void)detail::energyplus_surface_names(scene);
+  (void)output::detail::energyplus_surface_names(scene);
 }
 
 }  // namespace shadowgen

@@ -19,8 +19,8 @@
 namespace shadowgen {
 namespace {
 
-using detail::GltfMaterial;
-using detail::LightSet;
+using output::detail::GltfMaterial;
+using output::detail::LightSet;
 
 // What every export's scene extras hold: what it is, the origin, the site, the faces'
 // ids and areas (the caller adds the rest).
@@ -95,8 +95,10 @@ std::string gltf_export(const ShadowedScene& shadowed, GltfForm form, const Gltf
 LightSetGltf light_set_gltf(const ShadowedScene& shadowed, GltfForm form,
                             const GltfOptions& options) {
   const Scene& scene = shadowed.scene;
-  const detail::SceneRegions regions = detail::scene_regions(shadowed, "gltf_export");
-  const detail::LightSetNames names = detail::light_set_names(scene, regions.sets, as_is);
+  const output::detail::SceneRegions regions =
+      output::detail::scene_regions(shadowed, "gltf_export");
+  const output::detail::LightSetNames names =
+      output::detail::light_set_names(scene, regions.sets, as_is);
 
   LightSetGltf out;
   std::vector<GltfMaterial> materials;
@@ -129,8 +131,8 @@ LightSetGltf light_set_gltf(const ShadowedScene& shadowed, GltfForm form,
   std::vector<std::size_t> all(scene.lights.size());
   for (std::size_t l = 0; l < all.size(); ++l) all[l] = l;
   extras["lights"] = light_ids(scene, all);
-  out.bytes =
-      detail::gltf_file(materials, outline_points(scene, options), origin, extras, form, options);
+  out.bytes = output::detail::gltf_file(materials, outline_points(scene, options), origin, extras,
+                                        form, options);
   return out;
 }
 
@@ -169,8 +171,8 @@ std::string sun_hours_gltf_export(const ShadowedScene& shadowed, const SunPathHo
                         {"instants", path.instants.size()},
                         {"most_hours", bands.most_hours},
                         {"caption", bands.caption()}};
-  return detail::gltf_file(materials, outline_points(scene, options), origin, extras, form,
-                           options);
+  return output::detail::gltf_file(materials, outline_points(scene, options), origin, extras, form,
+                                   options);
 }
 
 }  // namespace shadowgen

@@ -7,7 +7,7 @@
 namespace shadowgen {
 namespace {
 
-using detail::CompensatedSum;
+using output::detail::CompensatedSum;
 
 double fraction(double part, double whole) { return whole == 0.0 ? 0.0 : part / whole; }
 

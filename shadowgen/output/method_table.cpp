@@ -24,7 +24,7 @@ std::string comparison_table(const MethodComparison& comparison, const Scene& sc
                     (comparison.threads == 0 ? std::string("one thread per core")
                                              : std::to_string(comparison.threads) + " thread(s)") +
                     "\n";
-  detail::TextTable table({false, true, true, true, false, false, false});
+  output::detail::TextTable table({false, true, true, true, false, false, false});
   table.add(
       {"method", "seconds", "mean |error|", "max |error|", "worst face", "worst light", "pareto"});
   for (const MethodTrial& t : comparison.trials) {
@@ -49,7 +49,7 @@ std::string comparison_table(const MethodComparison& comparison, const Scene& sc
     }
     out += view->instants.empty() ? "\n" : ")\n";
   }
-  detail::TextTable views({false, true, true, true, false});
+  output::detail::TextTable views({false, true, true, true, false});
   views.add({"view method", "seconds", "differing share", "pairs", "pareto"});
   for (const ViewTrial& t : view->trials) {
     views.add({view_trial_label(t), number_text(t.seconds, std::chars_format::general, 3),
@@ -71,15 +71,16 @@ std::string comparison_csv(const MethodComparison& comparison, const Scene& scen
     out += ',';
     if (t.method.kind == MethodKind::kShadowMap) out += std::to_string(t.method.resolution);
     out += ',';
-    detail::append_csv_number(out, t.seconds);
+    output::detail::append_csv_number(out, t.seconds);
     out += ',';
-    detail::append_csv_number(out, t.mean_error);
+    output::detail::append_csv_number(out, t.mean_error);
     out += ',';
-    detail::append_csv_number(out, t.max_error);
+    output::detail::append_csv_number(out, t.max_error);
     out += ',';
-    if (t.max_error > 0.0) detail::append_csv_field(out, scene.faces[t.worst_face].id, ids);
+    if (t.max_error > 0.0) output::detail::append_csv_field(out, scene.faces[t.worst_face].id, ids);
     out += ',';
-    if (t.max_error > 0.0) detail::append_csv_field(out, scene.lights[t.worst_light].id, ids);
+    if (t.max_error > 0.0)
+      output::detail::append_csv_field(out, scene.lights[t.worst_light].id, ids);
     out += t.pareto ? ",1\n" : ",0\n";
   }
   if (view == nullptr) return out;
@@ -89,9 +90,9 @@ std::string comparison_csv(const MethodComparison& comparison, const Scene& scen
     out += ',';
     if (t.resolution > 0) out += std::to_string(t.resolution);
     out += ',';
-    detail::append_csv_number(out, t.seconds);
+    output::detail::append_csv_number(out, t.seconds);
     out += ',';
-    detail::append_csv_number(out, t.agreement.share());
+    output::detail::append_csv_number(out, t.agreement.share());
     out += ',';
     out += std::to_string(t.agreement.compared);
     out += t.pareto ? ",1\n" : ",0\n";

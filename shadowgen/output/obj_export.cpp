@@ -15,8 +15,8 @@
 namespace shadowgen {
 namespace {
 
-using detail::LightSet;
-using detail::LightSetNames;
+using output::detail::LightSet;
+using output::detail::LightSetNames;
 
 std::string lights_comment(const Scene& scene, const LightSet& set) {
   if (set.empty()) return "# lights: none (shadow)\n";
@@ -32,12 +32,12 @@ std::string lights_comment(const Scene& scene, const LightSet& set) {
 // region's triangles.
 void append_face(std::string& obj, const Scene& scene, const Face& face,
                  const std::vector<LightRegion>& regions, const LightSetNames& names,
-                 detail::ObjNumbering& numbering) {
+                 output::detail::ObjNumbering& numbering) {
   obj += "g ";
   obj += obj_name(face.id);
   obj += '\n';
   if (regions.empty()) return;
-  detail::ObjFaceBlock block(face, numbering);
+  output::detail::ObjFaceBlock block(face, numbering);
   for (const LightRegion& region : regions) {
     block.add_statement("usemtl", names.at(region.lights));
     if (!block.add_polygons(region.polygons)) {
@@ -64,7 +64,7 @@ std::string mtl_text(const Scene& scene, const LightSetNames& names, std::string
     const glm::dvec3 colour = light_set_colour(scene, set);
     mtl += '\n';
     mtl += lights_comment(scene, set);
-    detail::append_material(mtl, name, colour);
+    output::detail::append_material(mtl, name, colour);
   }
   return mtl;
 }
@@ -86,7 +86,7 @@ std::string face_group_name(std::string_view id) {
 // One face's block of layers by light: the face whole in shadow, then each light's lit
 // polygons on it.
 void append_face_layers(std::string& obj, const ShadowedScene& shadowed, std::size_t f,
-                        const LightSetNames& names, detail::ObjNumbering& numbering) {
+                        const LightSetNames& names, output::detail::ObjNumbering& numbering) {
   const Scene& scene = shadowed.scene;
   const Face& face = scene.faces[f];
   const std::string group = face_group_name(face.id);
@@ -98,7 +98,7 @@ void append_face_layers(std::string& obj, const ShadowedScene& shadowed, std::si
     if (hsr::area(face.parts[p]) > 0.0) whole.push_back({p, face.parts[p]});
   }
   if (whole.empty()) return;
-  detail::ObjFaceBlock block(face, numbering);
+  output::detail::ObjFaceBlock block(face, numbering);
   block.add_statement("usemtl", names.at(LightSet{}));
   if (!block.add_polygons(whole)) {
     throw GenerationError("", face.id, "", "the face could not be split into triangles");
@@ -130,7 +130,7 @@ ObjFiles export_files(const Scene& scene, std::string_view what, std::string_vie
   obj += "\nmtllib ";
   obj += mtl_file_name;
   obj += '\n';
-  detail::ObjNumbering numbering;
+  output::detail::ObjNumbering numbering;
   for (std::size_t f = 0; f < scene.faces.size(); ++f) append_face(obj, f, numbering);
   files.mtl = mtl_text(scene, names, materials);
   return files;
@@ -172,32 +172,33 @@ glm::dvec3 light_set_colour(const Scene& scene, std::span<const std::size_t> lig
 
 ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
   const Scene& scene = shadowed.scene;
-  const detail::SceneRegions regions = detail::scene_regions(shadowed, "obj_export");
-  const LightSetNames names = detail::light_set_names(scene, regions.sets, obj_name);
-  return export_files(scene, "faces split by the set of lights reaching them", mtl_file_name, names,
-                      "one material per set of lights reaching a region",
-                      [&](std::string& obj, std::size_t f, detail::ObjNumbering& numbering) {
-                        append_face(obj, scene, scene.faces[f], regions.of_face[f], names,
-                                    numbering);
-                      });
+  const output::detail::SceneRegions regions =
+      output::detail::scene_regions(shadowed, "obj_export");
+  const LightSetNames names = output::detail::light_set_names(scene, regions.sets, obj_name);
+  return export_files(
+      scene, "faces split by the set of lights reaching them", mtl_file_name, names,
+      "one material per set of lights reaching a region",
+      [&](std::string& obj, std::size_t f, output::detail::ObjNumbering& numbering) {
+        append_face(obj, scene, scene.faces[f], regions.of_face[f], names, numbering);
+      });
 }
 
 ObjFiles obj_export_by_light(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
   const Scene& scene = shadowed.scene;
   check_lit_shape(shadowed, "obj_export_by_light");
-  detail::LightSets sets = {LightSet{}};
+  output::detail::LightSets sets = {LightSet{}};
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
       if (!shadowed.lit.at(f, l).empty()) sets.insert(LightSet{l});
     }
   }
-  const LightSetNames names = detail::light_set_names(scene, sets, obj_name);
-  return export_files(scene, "each face in shadow, each light's lit polygons over it",
-                      mtl_file_name, names,
-                      "the shadow, then one material per light reaching a face",
-                      [&](std::string& obj, std::size_t f, detail::ObjNumbering& numbering) {
-                        append_face_layers(obj, shadowed, f, names, numbering);
-                      });
+  const LightSetNames names = output::detail::light_set_names(scene, sets, obj_name);
+  return export_files(
+      scene, "each face in shadow, each light's lit polygons over it", mtl_file_name, names,
+      "the shadow, then one material per light reaching a face",
+      [&](std::string& obj, std::size_t f, output::detail::ObjNumbering& numbering) {
+        append_face_layers(obj, shadowed, f, names, numbering);
+      });
 }
 
 }  // namespace shadowgen

@@ -29,7 +29,7 @@ int day_of_year(const sun::CivilTime& time) {
 std::vector<PathSky> path_skies(const ShadowedScene& shadowed,
                                 std::span<const sky::SkyPatch> patches, const Weather& weather,
                                 const RadiationOptions& options) {
-  detail::require_sun_paths(shadowed, "radiation");
+  output::detail::require_sun_paths(shadowed, "radiation");
   const sky::PerezSky perez(patches);
   std::vector<PathSky> skies;
   std::size_t albedo_missing = 0;
@@ -39,7 +39,7 @@ std::vector<PathSky> path_skies(const ShadowedScene& shadowed,
     PathSky path_sky;
     for (const std::size_t l : path.instants) {
       const Light& light = shadowed.scene.lights.at(l);
-      const sun::CivilTime time = detail::instant_time(light, path, weather.file);
+      const sun::CivilTime time = output::detail::instant_time(light, path, weather.file);
       using weather::Radiation;
       sky::SkyHour hour;
       hour.sun_altitude_rad = light.sun->elevation_deg * kDegree;
@@ -111,9 +111,9 @@ std::string radiation_csv(const ShadowedScene& shadowed, const sky::SkyExposure&
       "unshaded_direct_wh_per_area,unshaded_diffuse_wh_per_area,unshaded_total_wh_per_area,"
       "total_ratio\n";
   for (const RadiationRow& row : rows) {
-    detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
+    output::detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
     out += ',';
-    detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
+    output::detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
     const auto per_area = [&row](double wh) { return row.area > 0.0 ? wh / row.area : 0.0; };
     const double total = row.total_wh(), unshaded = row.unshaded_total_wh();
     for (const double v :
@@ -122,7 +122,7 @@ std::string radiation_csv(const ShadowedScene& shadowed, const sky::SkyExposure&
           per_area(row.unshaded_direct_wh), per_area(row.unshaded_diffuse_wh), per_area(unshaded),
           unshaded > 0.0 ? total / unshaded : 0.0}) {
       out += ',';
-      detail::append_csv_number(out, v);
+      output::detail::append_csv_number(out, v);
     }
     out += '\n';
   }

@@ -29,12 +29,12 @@ namespace shadowgen {
 namespace {
 
 using Layout = JsonWriter::Layout;
-using detail::append_csv_field;
-using detail::append_csv_number;
+using output::detail::append_csv_field;
+using output::detail::append_csv_number;
 
 double fraction(double part, double whole) { return whole == 0.0 ? 0.0 : part / whole; }
 
-using Sum = detail::CompensatedSum;
+using Sum = output::detail::CompensatedSum;
 
 void write_totals(JsonWriter& out, double area, double lit_area) {
   out.key("area").value(area).key("lit_area").value(lit_area);
@@ -143,7 +143,7 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids,
                        std::span<const groups::FaceGroup> groups) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
   std::string out = "face_id,light_id,area,lit_area,lit_fraction\n";
-  detail::append_in_chunks(out, rows.size(), [&](std::string& text, std::size_t i) {
+  output::detail::append_in_chunks(out, rows.size(), [&](std::string& text, std::size_t i) {
     const ReportRow& row = rows[i];
     append_csv_field(text, shadowed.scene.faces[row.face].id, ids);
     text += ',';
@@ -179,12 +179,12 @@ std::string report_json(const ShadowedScene& shadowed, std::span<const groups::F
 
   JsonWriter out;
   out.begin_object(Layout::kLines).key("format").value("shadowgen-report/1");
-  detail::write_method(out, shadowed.method);
+  output::detail::write_method(out, shadowed.method);
   out.key("rows").begin_array(Layout::kLines);
   for (const ReportRow& row : rows) {
     out.begin_object();
     out.key("face_id").value(scene.faces[row.face].id);
-    detail::write_origin(out, scene.faces[row.face].origin);
+    output::detail::write_origin(out, scene.faces[row.face].origin);
     out.key("light_id").value(scene.lights[row.light].id);
     out.key("area").value(row.area).key("lit_area").value(row.lit_area);
     out.key("lit_fraction").value(row.lit_fraction);
@@ -232,7 +232,7 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top,
     }
     out += "\n";
   }
-  detail::TextTable totals({false, true, true, true, true, true});
+  output::detail::TextTable totals({false, true, true, true, true, true});
   totals.add({"light_id", "faces", "lit_faces", "area", "lit_area", "lit_fraction"});
   for (std::size_t l = 0; l < lights; ++l) {
     const double area_value = sums.light_area[l];
@@ -245,7 +245,7 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top,
   if (lights == 0) out += "(no lights)\n";
   if (!groups.empty()) {
     out += "\ngroups (each face counted once in each group it is in)\n";
-    detail::TextTable table({false, false, true, true, true, true});
+    output::detail::TextTable table({false, false, true, true, true, true});
     table.add({"group_id", "light_id", "faces", "area", "lit_area", "lit_fraction"});
     for (const GroupLitRow& row : group_lit_rows(rows, lights, groups)) {
       table.add({one_line(groups[row.group].id), one_line(scene.lights[row.light].id),
@@ -275,7 +275,7 @@ std::string report_table(const ShadowedScene& shadowed, std::size_t top,
     out += "\nmost shadowed faces under " + one_line(scene.lights[l].id) +
            " (lowest lit fraction first, " + std::to_string(shown) + " of " +
            std::to_string(shadowed_rows.size()) + ")\n";
-    detail::TextTable faces({false, true, true, true});
+    output::detail::TextTable faces({false, true, true, true});
     faces.add({"face_id", "area", "lit_area", "lit_fraction"});
     for (std::size_t i = 0; i < shown; ++i) {
       const ReportRow& row = *shadowed_rows[i];

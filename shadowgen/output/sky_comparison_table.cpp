@@ -38,7 +38,7 @@ std::string sky_comparison_table(const sky::SkyComparison& comparison, const Sce
                     sky::subdivision_name(comparison.subdivisions) + " (" +
                     std::to_string(sky::reinhart_patches(comparison.subdivisions).size()) +
                     " patches), against the exact method\n";
-  detail::TextTable table({false, true, true, true, true, true, false, false});
+  output::detail::TextTable table({false, true, true, true, true, true, false, false});
   table.add({"method", "seconds", "mean |error|", "max |error|", "mean rel.", "max rel.",
              "worst face", "pareto"});
   for (std::size_t t = 0; t < comparison.trials.size(); ++t) {
@@ -72,10 +72,10 @@ std::string sky_comparison_csv(const sky::SkyComparison& comparison, const Scene
     for (const double v :
          {trial.seconds, e.mean_error, e.max_error, e.mean_relative_error, e.max_relative_error}) {
       out += ',';
-      detail::append_csv_number(out, v);
+      output::detail::append_csv_number(out, v);
     }
     out += ',';
-    if (e.max_error > 0.0) detail::append_csv_field(out, scene.faces[e.worst_face].id, ids);
+    if (e.max_error > 0.0) output::detail::append_csv_field(out, scene.faces[e.worst_face].id, ids);
     out += trial.pareto ? ",1\n" : ",0\n";
   }
   out += "\nface_id,area";
@@ -85,12 +85,12 @@ std::string sky_comparison_csv(const sky::SkyComparison& comparison, const Scene
   }
   out += '\n';
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
-    detail::append_csv_field(out, scene.faces[f].id, ids);
+    output::detail::append_csv_field(out, scene.faces[f].id, ids);
     out += ',';
-    detail::append_csv_number(out, comparison.area[f]);
+    output::detail::append_csv_number(out, comparison.area[f]);
     for (const sky::SkyTrial& trial : comparison.trials) {
       out += ',';
-      detail::append_csv_number(out, trial.sky_view_factor[f]);
+      output::detail::append_csv_number(out, trial.sky_view_factor[f]);
     }
     out += '\n';
   }

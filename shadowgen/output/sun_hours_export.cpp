@@ -20,12 +20,12 @@ std::string group_name(const Face& face, const HourBand& band) {
 // One face: its "v" and "vn" lines, then per band it has regions in, a group, its material
 // and the regions' triangles.
 void append_face(std::string& obj, const Face& face, const std::vector<SunHoursRegion>& regions,
-                 const HourBands& bands, detail::ObjNumbering& numbering) {
+                 const HourBands& bands, output::detail::ObjNumbering& numbering) {
   if (regions.empty()) {
     obj += "g " + group_name(face, bands.bands.front()) + '\n';
     return;
   }
-  detail::ObjFaceBlock block(face, numbering);
+  output::detail::ObjFaceBlock block(face, numbering);
   std::size_t current = bands.bands.size();       // none yet
   for (const SunHoursRegion& region : regions) {  // in increasing hours, so band by band
     const std::size_t b = bands.band_of(region.hours);
@@ -52,7 +52,7 @@ std::string mtl_text(const HourBands& bands) {
   for (const std::string& line : bands.caption()) mtl += "# " + line + '\n';
   for (const HourBand& band : bands.bands) {
     mtl += "\n# band: " + band.label + '\n';
-    detail::append_material(mtl, obj_name(band.name), band.colour);
+    output::detail::append_material(mtl, obj_name(band.name), band.colour);
   }
   return mtl;
 }
@@ -72,7 +72,7 @@ ObjFiles sun_hours_obj_export(const ShadowedScene& shadowed, const SunPathHours&
   obj += "mtllib ";
   obj += mtl_file_name;
   obj += '\n';
-  detail::ObjNumbering numbering;
+  output::detail::ObjNumbering numbering;
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
     append_face(obj, scene.faces[f], path.regions[f], bands, numbering);
   }

@@ -19,7 +19,7 @@ std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
       throw std::invalid_argument("a sun-hours threshold must be a finite number of hours >= 0");
     }
   }
-  detail::require_sun_paths(shadowed, "sun hours");
+  output::detail::require_sun_paths(shadowed, "sun hours");
   for (const SunPathHours& path : shadowed.sun_paths) {
     require_regions(path, shadowed.scene.file, "a sun-hours report");
   }
@@ -65,16 +65,16 @@ std::string sun_hours_csv(const ShadowedScene& shadowed, std::span<const double>
   for (const double t : thresholds) out += ",area_at_least_" + shortest(t) + "h";
   out += '\n';
   for (const SunHoursRow& row : rows) {
-    detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
+    output::detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
     out += ',';
-    detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
+    output::detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
     for (const double v : {row.area, row.mean_hours, row.min_hours, row.max_hours}) {
       out += ',';
-      detail::append_csv_number(out, v);
+      output::detail::append_csv_number(out, v);
     }
     for (const double a : row.area_at_least) {
       out += ',';
-      detail::append_csv_number(out, a);
+      output::detail::append_csv_number(out, a);
     }
     out += '\n';
   }
@@ -85,18 +85,18 @@ std::string sun_hours_csv(const ShadowedScene& shadowed, std::span<const double>
   out += '\n';
   for (const GroupSunHoursRow& row :
        group_sun_hours_rows(rows, shadowed.sun_paths.size(), groups)) {
-    detail::append_csv_field(out, groups[row.group].id, ids);
+    output::detail::append_csv_field(out, groups[row.group].id, ids);
     out += ',';
-    detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
+    output::detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
     out += ',' + std::to_string(row.faces);
     for (const double v : {row.area, row.mean_hours, row.min_hours, row.max_hours}) {
       out += ',';
-      detail::append_csv_number(out, v);
+      output::detail::append_csv_number(out, v);
     }
     for (const std::vector<double>* list : {&row.area_at_least, &row.share_at_least}) {
       for (const double v : *list) {
         out += ',';
-        detail::append_csv_number(out, v);
+        output::detail::append_csv_number(out, v);
       }
     }
     out += '\n';

@@ -138,18 +138,18 @@ class DatabaseParser {
   ShadowedScene finished(JsonObject& top, ShadowedScene shadowed) const {
     (void)top.get(key::kFaces).array();
     if (const std::optional<JsonValue> groups = top.find(key::kGroups)) {
-      shadowed.scene.groups = detail::read_groups(*groups, shadowed.scene.faces);
+      shadowed.scene.groups = scene::detail::read_groups(*groups, shadowed.scene.faces);
     }
     top.finish();
-    detail::check_lit_lists(shadowed, lists_of_face_, lists_);
-    detail::check_sun_hours_sums(shadowed, path_values_);
+    scene::detail::check_lit_lists(shadowed, lists_of_face_, lists_);
+    scene::detail::check_sun_hours_sums(shadowed, path_values_);
     return shadowed;
   }
 
   // Everything but the faces (detail/database_header.h); per sun path, where each face's
   // sums over it stand, for the checks.
   void read_header(JsonObject& top, ShadowedScene& shadowed) {
-    header_ = detail::read_database_header(top, shadowed);
+    header_ = scene::detail::read_database_header(top, shadowed);
     path_values_.resize(shadowed.sun_paths.size());
   }
 
@@ -185,7 +185,7 @@ class DatabaseParser {
   void read_face(const JsonValue& value, ShadowedScene& shadowed) {
     JsonObject entry = value.object();
     Face face;
-    face.id = detail::read_id(entry);
+    face.id = scene::detail::read_id(entry);
     face_ids_.claim(face.id, "another face", entry.get("id"));
     entry.for_face(face.id);
     face.source_file = entry.get(key::kSourceFile).string();
@@ -200,22 +200,24 @@ class DatabaseParser {
     if (parts.empty()) parts_value.fail("a face needs at least one polygon");
     for (std::size_t k = 0; k < parts.size(); ++k) {
       JsonObject part = parts.at(k).object();
-      hsr::Polygon3 polygon = detail::read_polygon(part);
+      hsr::Polygon3 polygon = scene::detail::read_polygon(part);
       part.finish();
-      face.parts.push_back(detail::checked_database_part(
+      face.parts.push_back(scene::detail::checked_database_part(
           std::move(polygon), part.value(),
-          {face.id, file_, detail::FaceKind::kPolygon, face.vertex_rounding}, warnings_));
+          {face.id, file_, scene::detail::FaceKind::kPolygon, face.vertex_rounding}, warnings_));
     }
     if (!std::isfinite(hsr::area(face.parts))) {
       parts_value.fail("the face's area is not a finite number (coordinates too large)");
     }
-    if (header_.layout == database::Layout::kIndexed) vertices_ = detail::read_face_vertices(entry);
+    if (header_.layout == database::Layout::kIndexed)
+      vertices_ = scene::detail::read_face_vertices(entry);
     const std::size_t f = shadowed.lit.size();
     shadowed.lit.add_face();
     lists_of_face_.push_back(lists_.size());
     if (!shadowed.method.exact()) {
       read_estimated(entry, face, shadowed);
-      detail::read_face_sun_hours(entry, face, shadowed, {header_.layout, vertices_}, path_values_);
+      scene::detail::read_face_sun_hours(entry, face, shadowed, {header_.layout, vertices_},
+                                         path_values_);
       entry.finish();
       shadowed.scene.faces.push_back(std::move(face));
       return;
@@ -237,10 +239,11 @@ class DatabaseParser {
                   "path are lit in shard 1 alone");
       }
       shadowed.lit.at(f, light->second) =
-          detail::read_database_lit(list, face, {header_.layout, vertices_});
+          scene::detail::read_database_lit(list, face, {header_.layout, vertices_});
       lists_.push_back({light->second, list.place()});
     }
-    detail::read_face_sun_hours(entry, face, shadowed, {header_.layout, vertices_}, path_values_);
+    scene::detail::read_face_sun_hours(entry, face, shadowed, {header_.layout, vertices_},
+                                       path_values_);
     entry.finish();
     shadowed.scene.faces.push_back(std::move(face));
   }
@@ -256,7 +259,7 @@ class DatabaseParser {
     const JsonValue areas_value = entry.get(key::kLitArea);
     const std::size_t face_index = shadowed.scene.faces.size();
     const double face_area = hsr::area(face.parts);
-    const double tolerance = detail::LitChecker(face).area_tolerance({});
+    const double tolerance = scene::detail::LitChecker(face).area_tolerance({});
     std::vector<bool> given(shadowed.scene.lights.size(), false);
     for (const auto& [light_id, value] : areas_value.object().entries()) {
       const auto light = header_.light_index.find(light_id);
@@ -296,12 +299,12 @@ class DatabaseParser {
   const std::string file_;
   const ReadOptions options_;
   std::vector<std::string>& warnings_;
-  detail::IdRegistry face_ids_;
-  detail::DatabaseHeader header_;
+  scene::detail::IdRegistry face_ids_;
+  scene::detail::DatabaseHeader header_;
   // Each face's lists of lit polygons, checked once all are read: where each face's lists
   // start in lists_, and per list its light and where it stands in the file.
   std::vector<std::size_t> lists_of_face_;
-  std::vector<detail::LitList> lists_;
+  std::vector<scene::detail::LitList> lists_;
   std::vector<std::vector<JsonPlace>> path_values_;  // [path][face]: faces[f].sun_hours.<path>
   std::vector<glm::dvec3> vertices_;  // the face being read: its shared vertices (indexed)
 };

@@ -57,7 +57,7 @@ class SceneParser {
     check_format(top);
     check_has_faces(top);
     result_.scene.files.push_back(file_);
-    detail::WarningSummary polygon_warnings(file_, "polygons");
+    scene::detail::WarningSummary polygon_warnings(file_, "polygons");
     if (cut != nullptr) {
       read_polygon_texts(cut->elements, polygon_warnings);
     } else {
@@ -66,21 +66,22 @@ class SceneParser {
     }
     polygon_warnings.append_to(result_.warnings, options_.verbose);
     for_each_entry(top, "meshes", [&](const JsonValue& entry) {
-      detail::MeshEntryRead read = detail::read_mesh_entry(entry, path_, options_, face_ids_,
-                                                           result_.scene.faces, result_.warnings);
+      scene::detail::MeshEntryRead read = scene::detail::read_mesh_entry(
+          entry, path_, options_, face_ids_, result_.scene.faces, result_.warnings);
       if (!read.site.empty()) model_sites_.push_back({std::move(read.site), read.file});
       result_.scene.files.push_back(std::move(read.file));
     });
     read_site_and_weather(top);
     for_each_entry(top, "lights", [&](const JsonValue& entry) { read_light_entry(entry); });
     for_each_entry(top, "views", [&](const JsonValue& entry) {
-      result_.scene.views.push_back(detail::read_view(entry, view_ids_, detail::Source::kScene));
+      result_.scene.views.push_back(
+          scene::detail::read_view(entry, view_ids_, scene::detail::Source::kScene));
     });
     if (const std::optional<JsonValue> groups = top.find("groups")) {
-      result_.scene.groups = detail::read_groups(*groups, result_.scene.faces);
+      result_.scene.groups = scene::detail::read_groups(*groups, result_.scene.faces);
     }
     top.finish();
-    detail::check_lamp_depths(result_.scene);
+    scene::detail::check_lamp_depths(result_.scene);
     return std::move(result_);
   }
 
@@ -112,31 +113,32 @@ class SceneParser {
   // files and its weather file give, in that order (detail/site_entry.h).
   void read_site_and_weather(JsonObject& top) {
     Scene& scene = result_.scene;
-    std::vector<detail::SiteGiver> givers;
+    std::vector<scene::detail::SiteGiver> givers;
     const std::optional<JsonValue> site = top.find("site");
-    if (site) givers.push_back({detail::read_site_keys(*site), file_});
+    if (site) givers.push_back({scene::detail::read_site_keys(*site), file_});
     givers.insert(givers.end(), model_sites_.begin(), model_sites_.end());
     if (const std::optional<JsonValue> weather = top.find("weather")) {
-      scene.weather = detail::read_weather(*weather, path_);
+      scene.weather = scene::detail::read_weather(*weather, path_);
       scene.files.push_back(scene.weather->file);
-      givers.push_back(detail::site_giver_of(*scene.weather));
+      givers.push_back(scene::detail::site_giver_of(*scene.weather));
     }
-    detail::MergedSite merged = detail::merge_site(givers);
+    scene::detail::MergedSite merged = scene::detail::merge_site(givers);
     if (site && !merged.site) site->fail(merged.incomplete);
     scene.site = merged.site;
     site_incomplete_ = merged.incomplete;
-    if (site && scene.weather) detail::warn_if_site_differs(*scene.site, *site, *scene.weather);
+    if (site && scene.weather)
+      scene::detail::warn_if_site_differs(*scene.site, *site, *scene.weather);
   }
 
   // A `sun` entry becomes the directional lights of its instants, where it stands.
   void read_light_entry(const JsonValue& value) {
     std::vector<Light>& lights = result_.scene.lights;
-    if (!detail::is_sun_light(value)) {
-      lights.push_back(detail::read_light(value, light_ids_, detail::Source::kScene));
+    if (!scene::detail::is_sun_light(value)) {
+      lights.push_back(scene::detail::read_light(value, light_ids_, scene::detail::Source::kScene));
       return;
     }
-    detail::SunEntryRead sun =
-        detail::read_sun_light(value, light_ids_, result_.scene.site, site_incomplete_);
+    scene::detail::SunEntryRead sun =
+        scene::detail::read_sun_light(value, light_ids_, result_.scene.site, site_incomplete_);
     lights.insert(lights.end(), std::make_move_iterator(sun.lights.begin()),
                   std::make_move_iterator(sun.lights.end()));
     if (sun.path) result_.scene.sun_paths.push_back(std::move(*sun.path));
@@ -145,13 +147,13 @@ class SceneParser {
   // Polygon ids and mesh ids share one namespace (a polygon id never contains '/', and a
   // mesh face id always does, so face ids are then unique too); lights and views each
   // have their own. The face's warnings go to `summary`.
-  void read_polygon_entry(const JsonValue& value, detail::WarningSummary& summary) {
+  void read_polygon_entry(const JsonValue& value, scene::detail::WarningSummary& summary) {
     JsonObject entry = value.object();
-    const std::string id = detail::read_polygon_id(entry, file_);
+    const std::string id = scene::detail::read_polygon_id(entry, file_);
     face_ids_.claim(id, polygon_owner(id), entry.get("id"));
     std::vector<std::string> face_warnings;
     result_.scene.faces.push_back(
-        detail::read_polygon_face(entry, id, file_, options_.strict, face_warnings));
+        scene::detail::read_polygon_face(entry, id, file_, options_.strict, face_warnings));
     for (std::string& line : face_warnings) summary.add(id, std::move(line));
   }
 
@@ -159,8 +161,9 @@ class SceneParser {
   // afterwards. A clash throws, without the place: the caller reads the document again in
   // order, which names it.
   void read_polygon_texts(std::span<const std::string_view> texts,
-                          detail::WarningSummary& summary) {
-    detail::PolygonsRead read = detail::read_polygon_texts(texts, file_, options_.strict);
+                          scene::detail::WarningSummary& summary) {
+    scene::detail::PolygonsRead read =
+        scene::detail::read_polygon_texts(texts, file_, options_.strict);
     std::vector<Face>& faces = result_.scene.faces;
     face_ids_.reserve_more(read.faces.size());
     for (std::size_t i = 0; i < read.faces.size(); ++i) {
@@ -184,10 +187,10 @@ class SceneParser {
   const std::string file_;
   const ReadOptions options_;
   ReadResult result_;
-  detail::IdRegistry face_ids_;
-  detail::IdRegistry light_ids_;
-  detail::IdRegistry view_ids_;
-  std::vector<detail::SiteGiver> model_sites_;  // what model files tell of the site
+  scene::detail::IdRegistry face_ids_;
+  scene::detail::IdRegistry light_ids_;
+  scene::detail::IdRegistry view_ids_;
+  std::vector<scene::detail::SiteGiver> model_sites_;  // what model files tell of the site
   std::string site_incomplete_;  // why the keys given make no site, when some are given
 };
 

@@ -24,9 +24,9 @@ GenerateResult estimate_shadows(const Scene& scene, const LitAreaEstimator& esti
   shadowed.lit = LitTable(faces, lights, std::vector<bool>(lights, false));
   shadowed.estimated_lit_area.resize(lights);
   const std::vector<std::size_t> todo = sums.lights_of_run();
-  tbb::task_arena arena = detail::arena_of(options.threads);
+  tbb::task_arena arena = shadows::detail::arena_of(options.threads);
   arena.execute([&] {
-    detail::run_lights(
+    shadows::detail::run_lights(
         todo, !shadowed.sun_paths.empty(), options.on_light_done, result.stats,
         [&](std::size_t l, LightStats&) { return estimator.lit_areas(scene.lights[l]); },
         [&](const std::vector<std::size_t>& batch,

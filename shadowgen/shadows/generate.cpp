@@ -26,31 +26,34 @@ namespace {
 // The lit detail polygons of every face for one light, lit[face]: the receivers in its
 // range, seen through each of its views, the parts it grazes worked out in their planes,
 // each part's views joined.
-std::vector<std::vector<LitPolygon>> light_one(const detail::FaceParts& parts,
-                                               const detail::ClosedSolids* solids,
+std::vector<std::vector<LitPolygon>> light_one(const shadows::detail::FaceParts& parts,
+                                               const shadows::detail::ClosedSolids* solids,
                                                const Light& light, const GenerateOptions& options,
                                                LightStats& stats) {
-  const detail::Receivers receivers(parts, light, stats, solids);
+  const shadows::detail::Receivers receivers(parts, light, stats, solids);
   const std::vector<hsr::View> views =
       light_views(light, receivers.polygons(), receivers.planes(), parts.centre);
   stats.frusta = views.size();
-  std::vector<detail::LitPart> lit(parts.size());
+  std::vector<shadows::detail::LitPart> lit(parts.size());
   const hsr::HsrOptions hsr{.regions = options.image_regions};
   for (const hsr::View& view : views) {
-    detail::light_through_view(receivers, view, hsr, lit, stats);
+    shadows::detail::light_through_view(receivers, view, hsr, lit, stats);
   }
-  detail::relight_grazed_parts(receivers, lit, stats);
-  return detail::join_per_face(parts, std::move(lit), stats);
+  shadows::detail::relight_grazed_parts(receivers, lit, stats);
+  return shadows::detail::join_per_face(parts, std::move(lit), stats);
 }
 
 // light_one, its failures named by the face and the light being worked on.
-std::vector<std::vector<LitPolygon>> light_one_named(
-    const Scene& scene, const detail::FaceParts& parts, const detail::ClosedSolids* solids,
-    std::size_t light, const GenerateOptions& options, LightStats& stats) {
+std::vector<std::vector<LitPolygon>> light_one_named(const Scene& scene,
+                                                     const shadows::detail::FaceParts& parts,
+                                                     const shadows::detail::ClosedSolids* solids,
+                                                     std::size_t light,
+                                                     const GenerateOptions& options,
+                                                     LightStats& stats) {
   const std::string& light_id = scene.lights[light].id;
   try {
     return light_one(parts, solids, scene.lights[light], options, stats);
-  } catch (const detail::PartFailure& e) {
+  } catch (const shadows::detail::PartFailure& e) {
     const std::string& face_id = scene.faces[parts.owners[e.part()].face].id;
     throw GenerationError("", face_id, light_id,
                           "lit region not computed: " + std::string(e.what()));
@@ -101,18 +104,18 @@ GenerateResult generate_shadows(Scene&& input, const GenerateOptions& options) {
     return result;
   }
 
-  tbb::task_arena arena = detail::arena_of(options.threads);
-  detail::FaceParts parts;
-  std::optional<detail::ClosedSolids> solids;
+  tbb::task_arena arena = shadows::detail::arena_of(options.threads);
+  shadows::detail::FaceParts parts;
+  std::optional<shadows::detail::ClosedSolids> solids;
   arena.execute([&] {
-    parts = detail::flatten(scene);
+    parts = shadows::detail::flatten(scene);
     if (options.leave_out_solids_backs) solids.emplace(parts);
   });
   // Lights in parallel, and within each light the regions of its views (hsr/
   // image_regions.h) and its receivers, all on one pool of `threads` threads. With sun
   // paths, the lights go in batches, each summed before the next starts.
   arena.execute([&] {
-    detail::run_lights(
+    shadows::detail::run_lights(
         todo, !shadowed.sun_paths.empty(), options.on_light_done, result.stats,
         [&](std::size_t l, LightStats& stats) {
           return light_one_named(scene, parts, solids ? &*solids : nullptr, l, options, stats);

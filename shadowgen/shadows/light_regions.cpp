@@ -27,7 +27,8 @@ using SetPieces = std::vector<std::pair<LightSet, clipper::PolygonSet2>>;
 // Every set's pieces split by light l's region: the pieces inside go to the set with l
 // added, those outside stay (detail/chart_region.h: only pieces along l's shadow edges
 // are clipped).
-SetPieces split_by_light(SetPieces regions, const detail::ChartRegion& region, std::size_t l) {
+SetPieces split_by_light(SetPieces regions, const shadows::detail::ChartRegion& region,
+                         std::size_t l) {
   SetPieces split;
   for (auto& [set, pieces] : regions) {
     clipper::PolygonSet2 inside, outside;
@@ -88,7 +89,8 @@ std::vector<LightRegion> regions_of(const ShadowedScene& shadowed, std::size_t f
       if (lit_by_part[k][l].empty()) continue;
       clipper::PolygonSet2 clips;
       for (const hsr::Polygon3* q : lit_by_part[k][l]) clips.push_back(chart.flatten(*q));
-      regions = split_by_light(std::move(regions), detail::ChartRegion(whole, std::move(clips)), l);
+      regions = split_by_light(std::move(regions),
+                               shadows::detail::ChartRegion(whole, std::move(clips)), l);
     }
 
     // Pieces of one set cut by different lit polygons of a light share edges: merged.

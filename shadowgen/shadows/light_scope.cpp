@@ -39,7 +39,7 @@ std::vector<PartRole> part_roles(std::span<const hsr::Polygon3> polygons,
   for (std::size_t i = 0; i < n; ++i) {
     if (ranged && distance[i] > light.range->end) {
       roles[i] = distance[i] <= reach ? PartRole::kOccluder : PartRole::kLeftOut;
-    } else if (!detail::faces_light(planes[i], light)) {
+    } else if (!shadows::detail::faces_light(planes[i], light)) {
       roles[i] = PartRole::kTurnedAway;
     }
   }

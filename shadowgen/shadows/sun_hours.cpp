@@ -71,11 +71,11 @@ void FaceSunHours::add(std::span<const LitPolygon> lit) {
     }
     clipper::PolygonSet2 clips;
     for (const hsr::Polygon3* q : on_part) clips.push_back(part.chart.flatten(*q));
-    split_one_up(part, detail::ChartRegion(part.whole, std::move(clips)));
+    split_one_up(part, shadows::detail::ChartRegion(part.whole, std::move(clips)));
   }
 }
 
-void FaceSunHours::split_one_up(Part& part, const detail::ChartRegion& region) {
+void FaceSunHours::split_one_up(Part& part, const shadows::detail::ChartRegion& region) {
   // One split per count (detail/chart_region.h): over a sun path most pieces are far from
   // an instant's shadow edges, so the work per instant follows those edges.
   std::vector<CountPieces> next;

@@ -37,7 +37,7 @@
 
 namespace shadowgen {
 
-namespace detail {
+namespace shadows::detail {
 class ChartRegion;
 }
 
@@ -81,7 +81,7 @@ class FaceSunHours {
   };
 
   // Splits `part`'s pieces by a region of its chart: pieces inside go one up.
-  static void split_one_up(Part& part, const detail::ChartRegion& region);
+  static void split_one_up(Part& part, const shadows::detail::ChartRegion& region);
 
   std::vector<Part> parts_;
 };

@@ -38,7 +38,7 @@ std::vector<ColourPath> colour_paths(const Picture& picture) {
   std::vector<std::map<std::pair<long, long>, std::vector<clipper::PolygonWithHoles2>>> shapes;
   for (const Piece& piece : picture.pieces) {
     std::string hex;
-    detail::append_colour(hex, piece.colour);
+    view::detail::append_colour(hex, piece.colour);
     const Key key{piece.layer, hex, piece.light_set, banded(piece), piece.band, piece.back_side};
     const auto [it, added] = group_of.emplace(key, paths.size());
     if (added) {
@@ -59,7 +59,7 @@ std::vector<ColourPath> colour_paths(const Picture& picture) {
   }
   for (std::size_t g = 0; g < paths.size(); ++g) {
     for (const auto& [tile, pieces] : shapes[g]) {
-      clipper::PolygonSet2 merged = detail::merged_shapes(pieces);
+      clipper::PolygonSet2 merged = view::detail::merged_shapes(pieces);
       paths[g].shape.insert(paths[g].shape.end(), std::make_move_iterator(merged.begin()),
                             std::make_move_iterator(merged.end()));
     }

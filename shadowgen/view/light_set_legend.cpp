@@ -32,7 +32,7 @@ Legend light_set_legend(std::span<const Piece> pieces) {
   std::map<std::string, Rgb> colour_of;
   for (const Piece& piece : pieces) {
     std::string hex;
-    detail::append_colour(hex, piece.colour);
+    view::detail::append_colour(hex, piece.colour);
     colour_of.emplace(hex, piece.colour);
     SetDrawn& set = sets[piece.lights];
     set.name = piece.light_set;

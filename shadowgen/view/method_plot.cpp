@@ -241,8 +241,8 @@ std::string comparison_svg(const MethodComparison& comparison, const ViewCompari
       views.push_back(std::move(p));
     }
     draw_panel(svg, kHeight,
-               "View " + detail::xml_text(view->view) + ", " + std::to_string(view->width) + "×" +
-                   std::to_string(view->height) + ": pairs differing from exact against time",
+               "View " + view::detail::xml_text(view->view) + ", " + std::to_string(view->width) +
+                   "×" + std::to_string(view->height) + ": pairs differing from exact against time",
                "share of (pixel, light) pairs differing (log)", views);
   }
   svg << "</svg>\n";

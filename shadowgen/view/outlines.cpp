@@ -28,7 +28,7 @@ std::vector<Outline> picture_outlines(const Scene& scene, std::span<const Piece>
     shapes[it->second].push_back(piece.shape);
   }
   for (std::size_t o = 0; o < outlines.size(); ++o) {
-    outlines[o].shape = detail::merged_shapes(shapes[o]);
+    outlines[o].shape = view::detail::merged_shapes(shapes[o]);
   }
   return outlines;
 }

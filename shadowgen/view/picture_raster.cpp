@@ -26,7 +26,7 @@ void add_crossings(const clipper::Loop2& loop, double yc, std::vector<double>& x
 }
 
 void fill_piece(const Piece& piece, RgbImage& image) {
-  const std::array<std::uint8_t, 3> rgb = detail::colour_bytes(piece.colour);
+  const std::array<std::uint8_t, 3> rgb = view::detail::colour_bytes(piece.colour);
   double top = piece.shape.outer.front().y;
   double bottom = top;
   for (const clipper::Point2& p : piece.shape.outer) {
@@ -62,7 +62,7 @@ RgbImage rasterize_picture(const Picture& picture) {
   RgbImage image;
   image.width = picture.width;
   image.height = picture.height;
-  const std::array<std::uint8_t, 3> background = detail::colour_bytes(picture.background);
+  const std::array<std::uint8_t, 3> background = view::detail::colour_bytes(picture.background);
   image.rgb.resize(3 * static_cast<std::size_t>(image.width) * image.height);
   for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
     std::copy(background.begin(), background.end(), image.rgb.begin() + i);

@@ -140,8 +140,8 @@ void volume_weights(const Scene& scene, const PixelSurfaces& surfaces,
   const SceneParts parts(scene);
   const std::size_t lights = scene.lights.size();
   // Every part and every ray's start.
-  detail::Reach reach{glm::dvec3(std::numeric_limits<double>::infinity()),
-                      glm::dvec3(-std::numeric_limits<double>::infinity())};
+  view::detail::Reach reach{glm::dvec3(std::numeric_limits<double>::infinity()),
+                            glm::dvec3(-std::numeric_limits<double>::infinity())};
   auto add = [&](const glm::dvec3& p) {
     reach.lo = glm::min(reach.lo, p);
     reach.hi = glm::max(reach.hi, p);
@@ -155,7 +155,7 @@ void volume_weights(const Scene& scene, const PixelSurfaces& surfaces,
     if (!drawn[l]) continue;
     const Light& light = scene.lights[l];
     const std::vector<PartRole> roles = part_roles(parts.polygons, parts.planes, light);
-    const detail::ShadowVolumes volumes(light, parts.polygons, parts.planes, roles, reach);
+    const view::detail::ShadowVolumes volumes(light, parts.polygons, parts.planes, roles, reach);
     // Bergeron's eye in shadow: once for a perspective camera's one eye.
     std::vector<std::size_t> eye_holding;
     if (surfaces.perspective) eye_holding = volumes.holding(surfaces.eye);

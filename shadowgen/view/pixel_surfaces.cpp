@@ -46,8 +46,8 @@ PixelSurfaces pixel_surfaces(const Scene& scene, const Camera& camera, int width
       }
     }
   }
-  const detail::EmbreeDevice device;
-  const detail::TriangleScene hierarchy(device.get(), triangles, scene_centre(scene));
+  const view::detail::EmbreeDevice device;
+  const view::detail::TriangleScene hierarchy(device.get(), triangles, scene_centre(scene));
 
   PixelSurfaces surfaces;
   surfaces.camera = camera;
@@ -61,7 +61,7 @@ PixelSurfaces pixel_surfaces(const Scene& scene, const Camera& camera, int width
   const double tnear = view.is_perspective() ? view.near() : 0.0;
 
   hsr::for_each_in_parallel(static_cast<std::size_t>(height), [&](std::size_t y) {
-    std::vector<detail::SegmentHit> hits;
+    std::vector<view::detail::SegmentHit> hits;
     for (int x = 0; x < width; ++x) {
       const clipper::Point2 image =
           camera_view.from_pixels({static_cast<double>(x) + 0.5, static_cast<double>(y) + 0.5});
@@ -78,7 +78,7 @@ PixelSurfaces pixel_surfaces(const Scene& scene, const Camera& camera, int width
                      hits);
       double best_t = std::numeric_limits<double>::infinity();
       std::size_t best = planes.size();
-      for (const detail::SegmentHit& hit : hits) {
+      for (const view::detail::SegmentHit& hit : hits) {
         const std::size_t k = owner[hit.triangle];
         const PartPlane& plane = planes[k];
         const double denom = glm::dot(plane.normal, ray.direction);

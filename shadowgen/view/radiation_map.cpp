@@ -12,7 +12,7 @@ Rgb rgb(const glm::dvec3& colour) { return {colour.r, colour.g, colour.b}; }
 
 // Faces whole, without regions: every fragment is what no region takes, coloured by its
 // face's band.
-class RadiationTiling : public detail::FaceTiling {
+class RadiationTiling : public view::detail::FaceTiling {
  public:
   RadiationTiling(const ShadowedScene& shadowed, std::span<const double> kwh_per_m2,
                   const RadiationBands& bands)
@@ -21,7 +21,7 @@ class RadiationTiling : public detail::FaceTiling {
   void load(std::size_t /*face*/) override {}
   std::size_t size() const override { return 0; }
   std::span<const LitPolygon> polygons(std::size_t /*region*/) const override { return {}; }
-  std::size_t rest() const override { return detail::kNoRegion; }
+  std::size_t rest() const override { return view::detail::kNoRegion; }
 
   void style(Piece& piece, std::size_t /*region*/, const glm::dvec3& /*centroid*/,
              const glm::dvec3& /*normal*/) const override {
@@ -48,7 +48,7 @@ Picture render_radiation(const ShadowedScene& shadowed, std::span<const double> 
     throw std::invalid_argument("a radiation map needs one value per face");
   }
   RadiationTiling tiling(shadowed, kwh_per_m2, bands);
-  Picture picture = detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
   picture.legend.kind = "radiation";
   picture.legend.caption = bands.caption();
   for (const RadiationBand& band : bands.bands) {

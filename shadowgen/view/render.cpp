@@ -20,14 +20,14 @@ double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
 // Faces split by their light-set regions (shadowgen/shadows/light_regions.h), each piece
 // shaded by the lights of its set; the shadow gets what the lit regions leave.
-class LightSetTiling : public detail::FaceTiling {
+class LightSetTiling : public view::detail::FaceTiling {
  public:
   LightSetTiling(const ShadowedScene& shadowed, const RenderOptions& options)
       : shadowed_(shadowed), options_(options) {}
 
   void load(std::size_t face) override {
     regions_ = light_regions(shadowed_, face);
-    rest_ = detail::kNoRegion;
+    rest_ = view::detail::kNoRegion;
     for (std::size_t r = 0; r < regions_.size(); ++r) {
       if (regions_[r].lights.empty()) rest_ = r;
     }
@@ -42,7 +42,7 @@ class LightSetTiling : public detail::FaceTiling {
              const glm::dvec3& normal) const override {
     const Scene& scene = shadowed_.scene;
     piece.face_id = scene.faces[piece.face].id;
-    if (region != detail::kNoRegion) piece.lights = regions_[region].lights;
+    if (region != view::detail::kNoRegion) piece.lights = regions_[region].lights;
     piece.light_set = light_set_name(scene, piece.lights);
     piece.colour = shade(scene, piece.lights, centroid, normal, options_);
   }
@@ -51,12 +51,12 @@ class LightSetTiling : public detail::FaceTiling {
   const ShadowedScene& shadowed_;
   const RenderOptions& options_;
   std::vector<LightRegion> regions_;
-  std::size_t rest_ = detail::kNoRegion;
+  std::size_t rest_ = view::detail::kNoRegion;
 };
 
 // Each light's lit polygons a layer over the face in shadow, coloured by that light's
 // term of the shading formula alone.
-class LightLayerTiling : public detail::FaceTiling {
+class LightLayerTiling : public view::detail::FaceTiling {
  public:
   LightLayerTiling(const ShadowedScene& shadowed, const RenderOptions& options)
       : shadowed_(shadowed), options_(options) {}
@@ -72,7 +72,7 @@ class LightLayerTiling : public detail::FaceTiling {
   std::span<const LitPolygon> polygons(std::size_t region) const override {
     return shadowed_.lit.at(face_, lights_[region]);
   }
-  std::size_t rest() const override { return detail::kNoRegion; }
+  std::size_t rest() const override { return view::detail::kNoRegion; }
   bool layered() const override { return true; }
 
   void style(Piece& piece, std::size_t region, const glm::dvec3& centroid,
@@ -80,7 +80,7 @@ class LightLayerTiling : public detail::FaceTiling {
     const Scene& scene = shadowed_.scene;
     piece.face_id = scene.faces[piece.face].id;
     const Rgb shadow = shade(scene, {}, centroid, normal, options_);
-    if (region == detail::kNoRegion) {
+    if (region == view::detail::kNoRegion) {
       piece.light_set = light_set_name(scene, {});
       piece.colour = shadow;
       return;
@@ -165,7 +165,7 @@ Rgb shade_weighted(const Scene& scene, std::span<const double> weights, const gl
 Picture render(const ShadowedScene& shadowed, const Camera& camera, const RenderOptions& options) {
   check_lit_shape(shadowed, "render");
   LightSetTiling tiling(shadowed, options);
-  Picture picture = detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
   picture.legend = light_set_legend(picture.pieces);
   return picture;
 }
@@ -174,7 +174,7 @@ Picture render_by_light(const ShadowedScene& shadowed, const Camera& camera,
                         const RenderOptions& options) {
   check_lit_shape(shadowed, "render_by_light");
   LightLayerTiling tiling(shadowed, options);
-  Picture picture = detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
   picture.layered = true;
   return picture;
 }

@@ -17,7 +17,7 @@
 namespace shadowgen {
 namespace {
 
-const detail::GlLibrary& gl() { return detail::gl_library(); }
+const view::detail::GlLibrary& gl() { return view::detail::gl_library(); }
 
 using glm::dvec3;
 using glm::dvec4;
@@ -76,16 +76,16 @@ void draw(const std::vector<dvec4>& vertices) {
 
 StencilGlCamera stencil_gl_camera(const Scene& scene, const Light& light, const CameraView& view,
                                   const StencilOptions& options) {
-  return detail::make_stencil_plan(scene, light, view, options).camera;
+  return view::detail::make_stencil_plan(scene, light, view, options).camera;
 }
 
 std::vector<StencilEdge> stencil_silhouette_edges(const Scene& scene, const Light& light) {
-  const std::vector<detail::StencilPart> parts = detail::stencil_parts(scene, light);
-  const detail::SilhouetteMarks marks = detail::silhouette_marks(scene, light);
+  const std::vector<view::detail::StencilPart> parts = view::detail::stencil_parts(scene, light);
+  const view::detail::SilhouetteMarks marks = view::detail::silhouette_marks(scene, light);
   std::vector<StencilEdge> edges;
   for (std::size_t p = 0; p < parts.size(); ++p) {
-    if (!detail::builds_volume(parts[p], &marks)) continue;
-    detail::for_each_side_edge(parts[p], &marks[p], [&](const dvec3& a, const dvec3& b) {
+    if (!view::detail::builds_volume(parts[p], &marks)) continue;
+    view::detail::for_each_side_edge(parts[p], &marks[p], [&](const dvec3& a, const dvec3& b) {
       edges.push_back({a, b});
     });
   }
@@ -94,7 +94,8 @@ std::vector<StencilEdge> stencil_silhouette_edges(const Scene& scene, const Ligh
 
 StencilResult stencil_lit_mask(const Scene& scene, const Light& light, const CameraView& view,
                                const StencilOptions& options) {
-  const detail::StencilPlan plan = detail::make_stencil_plan(scene, light, view, options);
+  const view::detail::StencilPlan plan =
+      view::detail::make_stencil_plan(scene, light, view, options);
   const int w = view.width(), h = view.height();
   StencilResult result;
   result.width = w;

@@ -13,18 +13,18 @@ Rgb rgb(const glm::dvec3& colour) { return {colour.r, colour.g, colour.b}; }
 
 // Faces split by one sun path's sun-hours regions, each piece coloured by its band; the
 // region of largest area gets what the others leave.
-class SunHoursTiling : public detail::FaceTiling {
+class SunHoursTiling : public view::detail::FaceTiling {
  public:
   SunHoursTiling(const ShadowedScene& shadowed, const SunPathHours& path, const HourBands& bands)
       : shadowed_(shadowed), path_(path), bands_(bands) {}
 
   void load(std::size_t face) override {
     regions_ = &path_.regions[face];
-    rest_ = detail::kNoRegion;
+    rest_ = view::detail::kNoRegion;
     double largest = 0.0;
     for (std::size_t r = 0; r < regions_->size(); ++r) {
       const double area = lit_area((*regions_)[r].polygons);
-      if (rest_ == detail::kNoRegion || area > largest) {
+      if (rest_ == view::detail::kNoRegion || area > largest) {
         rest_ = r;
         largest = area;
       }
@@ -39,7 +39,7 @@ class SunHoursTiling : public detail::FaceTiling {
   void style(Piece& piece, std::size_t region, const glm::dvec3& /*centroid*/,
              const glm::dvec3& /*normal*/) const override {
     piece.face_id = shadowed_.scene.faces[piece.face].id;
-    const double hours = region == detail::kNoRegion ? 0.0 : (*regions_)[region].hours;
+    const double hours = region == view::detail::kNoRegion ? 0.0 : (*regions_)[region].hours;
     piece.sun_hours = hours;
     const HourBand& band = bands_.bands[bands_.band_of(hours)];
     piece.colour = rgb(band.colour);
@@ -51,7 +51,7 @@ class SunHoursTiling : public detail::FaceTiling {
   const SunPathHours& path_;
   const HourBands& bands_;
   const std::vector<SunHoursRegion>* regions_ = nullptr;
-  std::size_t rest_ = detail::kNoRegion;
+  std::size_t rest_ = view::detail::kNoRegion;
 };
 
 }  // namespace
@@ -64,7 +64,7 @@ Picture render_sun_hours(const ShadowedScene& shadowed, const SunPathHours& path
     throw std::invalid_argument("the sun path's sun-hours regions are not one list per face");
   }
   SunHoursTiling tiling(shadowed, path, bands);
-  Picture picture = detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
   picture.legend.kind = "sun-hours";
   picture.legend.caption = bands.caption();
   for (const HourBand& band : bands.bands) {

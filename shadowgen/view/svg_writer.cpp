@@ -19,11 +19,11 @@
 namespace shadowgen {
 namespace {
 
-using detail::append_colour;
+using view::detail::append_colour;
 
 void append_attribute_value(std::string& out, std::string_view text) {
   out += '"';
-  detail::append_xml_text(out, text);
+  view::detail::append_xml_text(out, text);
   out += '"';
 }
 
@@ -58,7 +58,7 @@ int legend_height(const Legend& legend) {
 
 void append_text(std::string& out, int x, int y, std::string_view text) {
   out += "<text x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(y) + "\">";
-  detail::append_xml_text(out, text);
+  view::detail::append_xml_text(out, text);
   out += "</text>\n";
 }
 
@@ -91,9 +91,9 @@ void append_legend(std::string& out, const Legend& legend, int left) {
 void append_map_path_data(std::string& out, std::span<const clipper::PolygonWithHoles2> shapes,
                           const SvgOptions& options) {
   if (options.full_precision) {
-    detail::append_exact_path_data(out, shapes);
+    view::detail::append_exact_path_data(out, shapes);
   } else {
-    detail::append_grid_path_data(out, shapes);
+    view::detail::append_grid_path_data(out, shapes);
   }
 }
 
@@ -115,7 +115,7 @@ void append_pieces(std::string& out, const std::vector<Piece>& pieces) {
   for (const Piece& piece : pieces) {
     switch_layer(out, open_layer, piece.layer, piece.light_set);
     out += "<path d=\"";
-    detail::append_exact_path_data(out, {&piece.shape, 1});
+    view::detail::append_exact_path_data(out, {&piece.shape, 1});
     out += "\" fill=\"";
     append_colour(out, piece.colour);
     out += "\" fill-rule=\"evenodd\" data-face=";
@@ -251,7 +251,7 @@ void append_scale_bar(std::string& out, const ScaleBar& bar, int height) {
          "\" fill=\"#000000\" stroke=\"#ffffff\" stroke-width=\"1\"/>\n";
   out += "<text x=\"" + std::to_string(x) + "\" y=\"" + std::to_string(y - 4) + "\" " +
          std::string(kMarkText) + ">";
-  detail::append_xml_text(out, bar.label);
+  view::detail::append_xml_text(out, bar.label);
   out += "</text>\n</g>\n";
 }
 

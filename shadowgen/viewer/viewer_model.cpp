@@ -158,7 +158,7 @@ std::string viewer_model_script(const ViewerModel& model) {
   std::string script = "window.shadowgenModel = {\"meta\": ";
   script += model.description;
   script += ", \"glb\": \"";
-  script += detail::base64(model.glb);
+  script += viewer::detail::base64(model.glb);
   script += "\"};\n";
   return script;
 }

@@ -8,14 +8,7 @@
 #
 #   cmake -DSOURCE_DIR=<repository root> -P detail_includes.cmake
 
-file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}
-  ${SOURCE_DIR}/clipper/*.h ${SOURCE_DIR}/clipper/*.cpp
-  ${SOURCE_DIR}/hsr/*.h ${SOURCE_DIR}/hsr/*.cpp
-  ${SOURCE_DIR}/shadowgen/*.h ${SOURCE_DIR}/shadowgen/*.cpp
-  ${SOURCE_DIR}/cli/*.h ${SOURCE_DIR}/cli/*.cpp
-  ${SOURCE_DIR}/bench/*.h ${SOURCE_DIR}/bench/*.cpp
-  ${SOURCE_DIR}/examples/*.h ${SOURCE_DIR}/examples/*.cpp
-  ${SOURCE_DIR}/tests/*.h ${SOURCE_DIR}/tests/*.cpp)
+include(${CMAKE_CURRENT_LIST_DIR}/layout_sources.cmake)
 
 # The folder whose detail/ a file may include.
 function(owner_of file out)

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-namespace shadowgen::detail {
+namespace shadowgen::json::detail {
 namespace {
 
 using Json = nlohmann::json;
@@ -307,4 +307,4 @@ ParseOutcome parse_json(std::istream& in, Json& root, const ElementStream* strea
   return outcome;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::json::detail

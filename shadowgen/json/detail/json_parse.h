@@ -15,7 +15,7 @@
 #include <string_view>
 #include <utility>
 
-namespace shadowgen::detail {
+namespace shadowgen::json::detail {
 
 // How deeply arrays and objects may nest. The formats need 6 levels at most (a hole's
 // vertex in a lit polygon of a database face); a file nested deeper is refused as soon as
@@ -79,4 +79,4 @@ std::string describe_parse_error(const Locate& locate, std::size_t position,
 LineColumn line_column(std::string_view text, std::size_t offset);
 LineColumn line_column(std::istream& in, std::size_t offset);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::json::detail

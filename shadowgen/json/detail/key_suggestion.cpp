@@ -4,7 +4,7 @@
 #include <cctype>
 #include <vector>
 
-namespace shadowgen::detail {
+namespace shadowgen::json::detail {
 namespace {
 
 char folded(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
@@ -46,4 +46,4 @@ std::optional<std::string> closest_key(std::string_view unknown,
   return best;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::json::detail

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::json::detail {
 
 // Edit distance counting an insertion, a deletion, a substitution or a swap of two
 // neighbouring characters as one edit (optimal string alignment), letters compared
@@ -21,4 +21,4 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 std::optional<std::string> closest_key(std::string_view unknown,
                                        std::span<const std::string> known);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::json::detail

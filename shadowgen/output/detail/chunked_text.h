@@ -10,7 +10,7 @@
 
 #include "hsr/parallel.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // Records per chunk: a row of a report takes about a microsecond to write, so a chunk is
 // far above a task's cost and far below a thread's share of a large scene's rows.
@@ -34,4 +34,4 @@ void append_in_chunks(std::string& out, std::size_t count, Write&& write) {
   for (const std::string& text : texts) out += text;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

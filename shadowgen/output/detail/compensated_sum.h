@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 class CompensatedSum {
  public:
@@ -25,4 +25,4 @@ class CompensatedSum {
   double compensation_ = 0.0;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -4,7 +4,7 @@
 
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 void append_csv_number(std::string& out, double value) {
   out += number_text(value, std::chars_format::general, 17);
@@ -28,4 +28,4 @@ void append_csv_field(std::string& out, std::string_view field, CsvIds ids) {
   out += '"';
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -8,7 +8,7 @@
 
 #include "shadowgen/output/report.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // %.17g, but independent of the C locale's decimal point.
 void append_csv_number(std::string& out, double value);
@@ -18,4 +18,4 @@ void append_csv_number(std::string& out, double value);
 // formula.
 void append_csv_field(std::string& out, std::string_view field, CsvIds ids);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

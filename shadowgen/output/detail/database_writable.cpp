@@ -8,7 +8,7 @@
 #include <unordered_set>
 #include <utility>
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 namespace {
 
 using hsr::Loop3;
@@ -164,4 +164,4 @@ void check_writable(const ShadowedScene& shadowed) {
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

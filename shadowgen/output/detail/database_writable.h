@@ -5,7 +5,7 @@
 
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // Throws std::invalid_argument ("shadowed database: <owner>: what") where `shadowed`
 // has two faces, lights or views of one id, a coordinate, area or hour that is not
@@ -13,4 +13,4 @@ namespace shadowgen::detail {
 // sums of a sun path not shaped per face and instant (in a shard, per instant of its own).
 void check_writable(const ShadowedScene& shadowed);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -4,7 +4,7 @@
 
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 namespace {
 
 std::string surface_name(const Face& face, const std::string& file) {
@@ -42,4 +42,4 @@ std::vector<std::string> energyplus_surface_names(const Scene& scene) {
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

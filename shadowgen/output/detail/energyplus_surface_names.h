@@ -10,11 +10,11 @@
 
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // [face] in scene order. InputError naming the input (Scene::file) and the face for a name
 // that cannot be an EnergyPlus surface name (empty, a comma or a control character in it,
 // spaces around it) or that is another face's in upper case.
 std::vector<std::string> energyplus_surface_names(const Scene& scene);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

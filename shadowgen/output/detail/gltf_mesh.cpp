@@ -5,7 +5,7 @@
 
 #include "hsr/chart_triangles.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 bool GltfMesh::add_piece(const Face& face, std::size_t face_index,
                          std::span<const LitPolygon> polygons, double area,
@@ -50,4 +50,4 @@ bool GltfMesh::add_piece(const Face& face, std::size_t face_index,
   return true;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -16,7 +16,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // The pieces by column: piece k is the region(s) of face face[k], its triangles from
 // first_triangle[k] on, its area `area[k]`, its sun hours `hours[k]` (sun hours only).
@@ -55,4 +55,4 @@ class GltfMesh {
   std::size_t shared_face_ = 0;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

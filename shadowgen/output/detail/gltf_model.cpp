@@ -12,7 +12,7 @@
 
 #include "shadowgen/output/gltf_space.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 namespace {
 
 // glTF's codes (glTF 2.0, 3.6.2 and 3.7.2): component types, targets, primitive mode.
@@ -262,4 +262,4 @@ std::string gltf_file(const std::vector<GltfMaterial>& materials,
   });
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -13,7 +13,7 @@
 #include "detail/gltf_mesh.h"
 #include "shadowgen/output/gltf_export.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 struct GltfMaterial {
   std::string name;
@@ -32,4 +32,4 @@ std::string gltf_file(const std::vector<GltfMaterial>& materials,
                       const nlohmann::json& scene_extras, GltfForm form,
                       const GltfOptions& options);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

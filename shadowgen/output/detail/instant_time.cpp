@@ -4,7 +4,7 @@
 
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 sun::CivilTime instant_time(const Light& light, const SunPathHours& path,
                             const std::string& weather_file) {
@@ -18,4 +18,4 @@ sun::CivilTime instant_time(const Light& light, const SunPathHours& path,
   return *time;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -8,11 +8,11 @@
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/sun/civil_time.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // The time of `light`, an instant of `path`; InputError naming `weather_file` where the
 // light has none.
 sun::CivilTime instant_time(const Light& light, const SunPathHours& path,
                             const std::string& weather_file);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

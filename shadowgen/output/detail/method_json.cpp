@@ -4,7 +4,7 @@
 
 #include "shadowgen/database/database_format.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 void write_method(JsonWriter& out, const Method& method) {
   namespace key = database::key;
@@ -16,4 +16,4 @@ void write_method(JsonWriter& out, const Method& method) {
   out.end_object();
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -7,8 +7,8 @@
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/model/method.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 void write_method(JsonWriter& out, const Method& method);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

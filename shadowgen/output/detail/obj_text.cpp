@@ -5,7 +5,7 @@
 #include "hsr/chart_triangles.h"
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 void append_vector(std::string& out, std::string_view tag, const glm::dvec3& v) {
   out += tag;
@@ -81,4 +81,4 @@ std::size_t ObjFaceBlock::normal(const glm::dvec3& n) {
   return it->second;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

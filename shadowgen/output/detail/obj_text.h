@@ -16,7 +16,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // "<tag> x y z\n", the numbers in their shortest round-trip form.
 void append_vector(std::string& out, std::string_view tag, const glm::dvec3& v);
@@ -62,4 +62,4 @@ class ObjFaceBlock {
   std::string lines_;  // the statements and "f" lines, after the "v" and "vn" lines
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -1,6 +1,6 @@
 #include "detail/origin_json.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 void write_origin(JsonWriter& out, const FaceOrigin& origin) {
   if (origin.empty()) return;
@@ -10,4 +10,4 @@ void write_origin(JsonWriter& out, const FaceOrigin& origin) {
   out.end_object();
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -8,8 +8,8 @@
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/model/source_model.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 void write_origin(JsonWriter& out, const FaceOrigin& origin);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -11,7 +11,7 @@
 #include <string>
 #include <system_error>
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 namespace {
 
 namespace fs = std::filesystem;
@@ -116,4 +116,4 @@ fs::path written_file(const Destination& destination) {
   return destination.target;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

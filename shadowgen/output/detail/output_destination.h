@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // What a destination path names.
 enum class DestinationKind {
@@ -46,4 +46,4 @@ Destination resolve(const std::filesystem::path& path);
 // link on /proc, anything else by the path its links lead to.
 std::filesystem::path written_file(const Destination& destination);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -1,6 +1,6 @@
 #include "detail/scene_regions.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 SceneRegions scene_regions(const ShadowedScene& shadowed, std::string_view who) {
   const Scene& scene = shadowed.scene;
@@ -28,4 +28,4 @@ LightSetNames light_set_names(const Scene& scene, const LightSets& sets,
   return names;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -14,7 +14,7 @@
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/shadows/light_regions.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 using LightSet = std::vector<std::size_t>;
 using LightSets = std::set<LightSet, LightSetLess>;
@@ -35,4 +35,4 @@ SceneRegions scene_regions(const ShadowedScene& shadowed, std::string_view who);
 LightSetNames light_set_names(const Scene& scene, const LightSets& sets,
                               std::string (*format_name)(std::string_view));
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -2,7 +2,7 @@
 
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 void require_sun_paths(const ShadowedScene& shadowed, std::string_view what) {
   if (!shadowed.sun_paths.empty()) return;
@@ -11,4 +11,4 @@ void require_sun_paths(const ShadowedScene& shadowed, std::string_view what) {
                        std::string(what) + " of");
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -8,10 +8,10 @@
 
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // InputError naming the input (Scene::file) when `shadowed` has no sun path; `what` says what
 // the report would have given ("sun hours").
 void require_sun_paths(const ShadowedScene& shadowed, std::string_view what);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -67,7 +67,7 @@ extern "C" void remove_temporaries_and_reraise(int signal_number) {
 
 }  // namespace
 
-namespace detail {
+namespace output::detail {
 
 int register_temporary(const std::filesystem::path& path) {
   // Absolute, so that a change of the working folder cannot send the unlink elsewhere.
@@ -89,7 +89,7 @@ void unregister_temporary(int slot) {
   if (slot >= 0) temporary_slots[static_cast<std::size_t>(slot)].state.store(kSlotFree);
 }
 
-}  // namespace detail
+}  // namespace output::detail
 
 void install_temporary_file_cleanup() {
   for (const int signal_number : kIgnoredSignals) {

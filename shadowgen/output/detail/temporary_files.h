@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 // Records `path` (made absolute, so that a change of the working folder cannot send the
 // unlink elsewhere) for the signal handlers to remove. Returns the slot now holding it,
@@ -19,4 +19,4 @@ int register_temporary(const std::filesystem::path& path);
 // signal in between still finds it.
 void unregister_temporary(int slot);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 namespace {
 
 std::size_t display_width(std::string_view text) {
@@ -34,4 +34,4 @@ void TextTable::append_to(std::string& out) const {
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace shadowgen::detail {
+namespace shadowgen::output::detail {
 
 class TextTable {
  public:
@@ -25,4 +25,4 @@ class TextTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::output::detail

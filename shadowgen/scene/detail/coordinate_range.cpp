@@ -6,7 +6,7 @@
 
 #include "numbers.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 std::optional<std::string> coordinate_problem(const glm::dvec3& p) {
   for (int axis = 0; axis < 3; ++axis) {
@@ -53,4 +53,4 @@ std::optional<std::string> coordinate_problem(const hsr::Polygon3& polygon) {
   return std::nullopt;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

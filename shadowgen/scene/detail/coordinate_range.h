@@ -10,7 +10,7 @@
 #include "hsr/polygon3.h"
 #include "shadowgen/model/coordinate_range.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // What is out of range in p, or nothing.
 std::optional<std::string> coordinate_problem(const glm::dvec3& p);
@@ -21,4 +21,4 @@ std::optional<std::string> vertex_problem(const hsr::Polygon3& polygon);
 // What is out of range in a face's polygon (a coordinate, then its extent), or nothing.
 std::optional<std::string> coordinate_problem(const hsr::Polygon3& polygon);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

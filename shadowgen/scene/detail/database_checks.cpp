@@ -8,7 +8,7 @@
 #include "lit_checks.h"
 #include "sun_hours_checks.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 // A check whose clip did not settle its snapping (docs/clipper.md, Limit): not the
@@ -73,4 +73,4 @@ void check_sun_hours_sums(const ShadowedScene& shadowed,
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

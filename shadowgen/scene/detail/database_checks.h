@@ -14,7 +14,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // One face's list of lit polygons for one light, and where it stands in the file.
 struct LitList {
@@ -38,4 +38,4 @@ void check_lit_lists(const ShadowedScene& shadowed, const std::vector<std::size_
 void check_sun_hours_sums(const ShadowedScene& shadowed,
                           const std::vector<std::vector<JsonPlace>>& places);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -12,7 +12,7 @@
 #include "shadowgen/sun/civil_time.h"
 #include "site_entry.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 namespace key = database::key;
@@ -236,4 +236,4 @@ DatabaseHeader read_database_header(JsonObject& top, ShadowedScene& shadowed) {
   return header;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -13,7 +13,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // What reading the faces needs of the header besides the shadowed scene.
 struct DatabaseHeader {
@@ -28,4 +28,4 @@ struct DatabaseHeader {
 // member out of its rules fails at its place in the file (InputError).
 DatabaseHeader read_database_header(JsonObject& top, ShadowedScene& shadowed);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -11,7 +11,7 @@
 #include "lit_checks.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace key = database::key;
 
@@ -74,4 +74,4 @@ std::vector<LitPolygon> read_database_lit(const JsonValue& value, const Face& fa
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

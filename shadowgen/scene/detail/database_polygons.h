@@ -14,7 +14,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // A part gets the checks a scene's face gets (strict: a part is planar, it was written
 // from a face already split into planar parts; planar within twice the face's vertex
@@ -39,4 +39,4 @@ struct LitLayout {
 std::vector<LitPolygon> read_database_lit(const JsonValue& value, const Face& face,
                                           const LitLayout& layout);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -5,7 +5,7 @@
 
 #include "shadowgen/model/instant_blocks.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 namespace key = database::key;
@@ -164,4 +164,4 @@ void read_face_sun_hours(JsonObject& entry, const Face& face, ShadowedScene& sha
   sums.finish();
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

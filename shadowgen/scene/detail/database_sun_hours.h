@@ -11,7 +11,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // Reads `face`'s sums over every path of `shadowed` from `entry` into the paths, the
 // regions' polygons as the face's lit polygons (`layout`), and appends where each path's
@@ -21,4 +21,4 @@ namespace shadowgen::detail {
 void read_face_sun_hours(JsonObject& entry, const Face& face, ShadowedScene& shadowed,
                          const LitLayout& layout, std::vector<std::vector<JsonPlace>>& places);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -21,7 +21,7 @@
 #include "region_less_holes.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -330,4 +330,4 @@ Face build_face(hsr::Polygon3 polygon, const FaceSource& source, bool strict,
   return FaceBuilder(source, strict, warnings).build(std::move(polygon));
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

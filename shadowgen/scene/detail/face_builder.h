@@ -47,7 +47,7 @@
 #include "hsr/polygon3.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 enum class FaceKind { kPolygon, kMeshFace };
 
@@ -71,4 +71,4 @@ Face build_face(hsr::Polygon3 polygon, const FaceSource& source, bool strict,
 std::string face_message(const std::string& file, const std::string& face_id,
                          const std::string& what);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -5,7 +5,7 @@
 
 #include "clipper/predicates.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 hsr::PlaneChart chart_without_normal(const hsr::Loop3& loop) {
   for (int axis : {2, 0, 1}) {
@@ -47,4 +47,4 @@ Planarity planarity(const hsr::Polygon3& polygon, const glm::dvec3& normal) {
   return result;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

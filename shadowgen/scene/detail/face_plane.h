@@ -11,7 +11,7 @@
 #include "hsr/plane_chart.h"
 #include "hsr/polygon3.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // A chart for a loop whose Newell normal came out zero (its signed areas cancel, as in a
 // figure-eight, or underflow): any chart in which it is not collinear; validation then
@@ -59,4 +59,4 @@ struct Planarity {
 // origin is measured as precisely as one at it.
 Planarity planarity(const hsr::Polygon3& polygon, const glm::dvec3& normal);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

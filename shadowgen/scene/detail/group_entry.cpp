@@ -6,7 +6,7 @@
 #include "detail/json_entities.h"
 #include "shadowgen/groups/face_pattern.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 bool matches_some(const groups::FacePattern& pattern, const std::vector<Face>& faces) {
@@ -44,4 +44,4 @@ std::vector<FaceGroupSpec> read_groups(const JsonValue& value, const std::vector
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -8,7 +8,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // The groups at `value`, in order. Fails, at the entry's path, where an id is missing,
 // empty or given twice (`groups[1] ('garden'): duplicate id 'garden' (already used by
@@ -18,4 +18,4 @@ namespace shadowgen::detail {
 // id`), so a scene read names the mistake before any shadow is computed.
 std::vector<FaceGroupSpec> read_groups(const JsonValue& value, const std::vector<Face>& faces);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

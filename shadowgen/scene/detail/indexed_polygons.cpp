@@ -6,7 +6,7 @@
 #include "coordinate_range.h"
 #include "shadowgen/database/database_format.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 namespace key = database::key;
@@ -87,4 +87,4 @@ LitPolygon read_indexed_lit(const JsonValue& value, const std::vector<glm::dvec3
   return lit;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -13,7 +13,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // The face's "numbers" and "vertices" (none where it has neither): every index within
 // "numbers", three per vertex, each vertex within the coordinate range of a scene.
@@ -24,4 +24,4 @@ std::vector<glm::dvec3> read_face_vertices(JsonObject& face);
 LitPolygon read_indexed_lit(const JsonValue& value, const std::vector<glm::dvec3>& vertices,
                             std::size_t parts);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -9,7 +9,7 @@
 #include "coordinate_range.h"
 #include "shadowgen/model/view_limits.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 // A position in the scene: [x, y, z] within the supported coordinate range.
@@ -181,4 +181,4 @@ hsr::Polygon3 read_polygon(JsonObject& object) {
   return polygon;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -12,7 +12,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // What a database holds that a scene may leave out: a scene's light may omit `intensity`
 // and parts of `range`, a scene's view `up` and `fov_deg` (defaults in scene.h); a
@@ -57,4 +57,4 @@ ViewSpec read_view(const JsonValue& value, IdRegistry& ids, Source source);
 // are the caller's. Other keys are left for the caller to read or report.
 hsr::Polygon3 read_polygon(JsonObject& object);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

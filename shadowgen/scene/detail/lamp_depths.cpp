@@ -9,7 +9,7 @@
 #include "shadowgen/model/coordinate_range.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 void check_lamp_depths(const Scene& scene) {
   std::vector<hsr::Polygon3> parts;
@@ -40,4 +40,4 @@ void check_lamp_depths(const Scene& scene) {
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

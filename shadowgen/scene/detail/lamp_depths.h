@@ -7,7 +7,7 @@
 
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // Throws InputError naming the nearest face's file and id, the light and both distances
 // where a point light of `scene` is nearer to a face than lamp_depths_supported allows.
@@ -15,4 +15,4 @@ namespace shadowgen::detail {
 // refused where they all pass.
 void check_lamp_depths(const Scene& scene);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

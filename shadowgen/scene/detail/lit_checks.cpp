@@ -12,7 +12,7 @@
 #include "hsr/perimeter.h"
 #include "numbers.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 double rounding_area_bound(const clipper::PolygonWithHoles2& polygon) {
@@ -257,4 +257,4 @@ std::optional<LitProblem> LitChecker::diagnose_inside(std::span<const LitPolygon
                                       short_number(tolerance * to_3d, 6) + " of area)"};
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

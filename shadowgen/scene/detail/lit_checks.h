@@ -39,7 +39,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 inline constexpr double kRoundingReach = 0x1p-40;
 
@@ -104,4 +104,4 @@ class LitChecker {
   bool several_parts_ = false;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

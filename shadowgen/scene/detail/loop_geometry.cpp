@@ -2,7 +2,7 @@
 
 #include "clipper/predicates.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -75,4 +75,4 @@ bool angle_less(const Point2& p, const Point2& q1, const Point2& q2) {
   return orient2d(p, q1, q2) == Orientation::kCounterClockwise;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

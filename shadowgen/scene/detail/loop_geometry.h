@@ -12,7 +12,7 @@
 
 #include "clipper/polygon.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // No edge: a bridge partner or next edge that does not exist.
 inline constexpr std::uint32_t kNoEdge = std::numeric_limits<std::uint32_t>::max();
@@ -58,4 +58,4 @@ struct Ray {
   bool out;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

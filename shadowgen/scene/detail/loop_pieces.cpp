@@ -6,7 +6,7 @@
 
 #include "clipper/predicates.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -178,4 +178,4 @@ PiecesCheck check_pieces(const CleanLoop& loop, std::span<const std::uint32_t> b
   return PieceChecker(loop, bridge_partner, name, pieces).run();
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -20,7 +20,7 @@
 #include "clipper/polygon.h"
 #include "loop_geometry.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // A pinched or bridged loop with its bridges taken out: after each edge into a point,
 // the edge out of it that the loop takes next, jumping over bridges.
@@ -43,4 +43,4 @@ struct PiecesCheck {
 PiecesCheck check_pieces(const CleanLoop& loop, std::span<const std::uint32_t> bridge_partner,
                          const std::string& name, LoopPieces& pieces);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -15,7 +15,7 @@
 #include "loop_geometry.h"
 #include "loop_pieces.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -396,4 +396,4 @@ LoopCheck check_loops(std::span<const clipper::Loop2> loops,
   return Checker(loops, loop_names).run();
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

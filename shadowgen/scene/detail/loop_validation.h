@@ -45,7 +45,7 @@
 
 #include "clipper/polygon.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 struct LoopCheck {
   // What is wrong, naming loops by `loop_names` and vertices by their index in the given
@@ -66,4 +66,4 @@ struct LoopCheck {
 LoopCheck check_loops(std::span<const clipper::Loop2> loops,
                       std::span<const std::string> loop_names);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

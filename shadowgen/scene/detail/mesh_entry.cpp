@@ -16,7 +16,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 // Row-major 4x4, applied to column vectors (x, y, z, 1); the last row gives w.
@@ -225,4 +225,4 @@ MeshEntryRead read_mesh_entry(const JsonValue& value, const std::filesystem::pat
   return {mesh_file, {}};
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

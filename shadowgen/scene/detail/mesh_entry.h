@@ -20,7 +20,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/scene/read_options.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 struct MeshEntryRead {
   std::string file;  // the file read, as Face::source_file names it
@@ -36,4 +36,4 @@ MeshEntryRead read_mesh_entry(const JsonValue& value, const std::filesystem::pat
                               const ReadOptions& options, IdRegistry& ids, std::vector<Face>& faces,
                               std::vector<std::string>& warnings);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -18,7 +18,7 @@
 #include "shadowgen/model/input_error.h"
 #include "stl_reader.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -186,4 +186,4 @@ MeshSoup read_mesh(const std::filesystem::path& file, const std::string& mesh_id
   return soup;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 struct MeshFaceRecord {
   std::vector<std::int64_t> vertices;  // 0-based; may be out of range (the caller checks)
@@ -50,4 +50,4 @@ struct MeshSoup {
 // at fault) when the file cannot be read or parsed, or holds no face record.
 MeshSoup read_mesh(const std::filesystem::path& file, const std::string& mesh_id);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -4,7 +4,7 @@
 
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 std::optional<std::string> text_problem(std::string_view bytes) {
   if (bytes.starts_with("\xFF\xFE") || bytes.starts_with("\xFE\xFF")) {
@@ -62,4 +62,4 @@ void MeshParser::fail_at(std::size_t line, const std::string& what, bool in_face
   fail("line " + std::to_string(line) + ": " + what, in_face);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -14,7 +14,7 @@
 #include "shadowgen/model/line_reader.h"
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // Why `bytes` is not text, or nullopt when it is. Text is ASCII or UTF-8 (any byte from
 // 0x80 up passes, so a Latin-1 comment does too) without control characters other than
@@ -48,4 +48,4 @@ class MeshParser {
   MeshSoup soup_;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

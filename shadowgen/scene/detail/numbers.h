@@ -8,7 +8,7 @@
 
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // `value` with `digits` significant digits, for messages ("1.24e-07").
 inline std::string short_number(double value, int digits) {
@@ -19,4 +19,4 @@ inline bool finite(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -7,7 +7,7 @@
 #include "mesh_text.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -122,4 +122,4 @@ MeshSoup parse_obj(std::string_view text, const std::filesystem::path& file,
   return ObjParser(file, mesh_id).parse(text);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

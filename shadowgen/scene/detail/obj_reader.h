@@ -14,10 +14,10 @@
 
 #include "mesh_reader.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // `text` is the file's content; `file` and `mesh_id` name it in InputErrors.
 MeshSoup parse_obj(std::string_view text, const std::filesystem::path& file,
                    const std::string& mesh_id);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

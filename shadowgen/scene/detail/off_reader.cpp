@@ -10,7 +10,7 @@
 #include "mesh_text.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -385,4 +385,4 @@ MeshSoup parse_off(std::string_view bytes, const std::filesystem::path& file,
   return OffParser(file, mesh_id).parse(bytes);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

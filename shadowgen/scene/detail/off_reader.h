@@ -31,10 +31,10 @@
 
 #include "mesh_reader.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // `bytes` is the file's content; `file` and `mesh_id` name it in InputErrors.
 MeshSoup parse_off(std::string_view bytes, const std::filesystem::path& file,
                    const std::string& mesh_id);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

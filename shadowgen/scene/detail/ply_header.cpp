@@ -7,7 +7,7 @@
 
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail::ply {
+namespace shadowgen::scene::detail::ply {
 
 namespace {
 
@@ -173,4 +173,4 @@ Header read_header(LineReader& lines, const std::string& file) {
   return HeaderReader(file).read(lines);
 }
 
-}  // namespace shadowgen::detail::ply
+}  // namespace shadowgen::scene::detail::ply

@@ -12,7 +12,7 @@
 
 #include "mesh_text.h"
 
-namespace shadowgen::detail::ply {
+namespace shadowgen::scene::detail::ply {
 
 enum class Type { kInt8, kUint8, kInt16, kUint16, kInt32, kUint32, kFloat32, kFloat64 };
 
@@ -53,4 +53,4 @@ struct Header {
 // list. Throws InputError(file, "", what is wrong), naming the line.
 Header read_header(LineReader& lines, const std::string& file);
 
-}  // namespace shadowgen::detail::ply
+}  // namespace shadowgen::scene::detail::ply

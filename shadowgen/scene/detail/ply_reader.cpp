@@ -12,7 +12,7 @@
 #include "ply_header.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 namespace {
 
@@ -278,4 +278,4 @@ MeshSoup parse_ply(std::string_view bytes, const std::filesystem::path& file,
   return PlyParser(file, mesh_id).parse(bytes);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -24,10 +24,10 @@
 
 #include "mesh_reader.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // `bytes` is the file's content; `file` and `mesh_id` name it in InputErrors.
 MeshSoup parse_ply(std::string_view bytes, const std::filesystem::path& file,
                    const std::string& mesh_id);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

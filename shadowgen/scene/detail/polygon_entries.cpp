@@ -10,7 +10,7 @@
 #include "hsr/parallel.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 // Polygons per task: a city's polygon (a wall, a roof) takes a few microseconds to parse
@@ -68,4 +68,4 @@ PolygonsRead read_polygon_texts(std::span<const std::string_view> texts, const s
   return all;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

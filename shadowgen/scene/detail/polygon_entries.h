@@ -14,7 +14,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // polygons[i]'s id: a non-empty string without '/' (mesh face ids use it).
 std::string read_polygon_id(JsonObject& entry, const std::string& file);
@@ -41,4 +41,4 @@ struct PolygonsRead {
 PolygonsRead read_polygon_texts(std::span<const std::string_view> texts, const std::string& file,
                                 bool strict);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

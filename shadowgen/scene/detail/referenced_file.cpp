@@ -5,7 +5,7 @@
 
 #include "shadowgen/json/document.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 std::filesystem::path referenced_file(const JsonValue& value,
                                       const std::filesystem::path& scene_path,
@@ -24,4 +24,4 @@ std::filesystem::path referenced_file(const JsonValue& value,
   return path;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

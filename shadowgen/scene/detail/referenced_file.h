@@ -8,7 +8,7 @@
 
 #include "shadowgen/json/json_reader.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // The path of the file named by `value` (a string), relative to the folder of
 // `scene_path`. An InputError at `value` when the name is empty, when no such file is
@@ -20,4 +20,4 @@ std::filesystem::path referenced_file(const JsonValue& value,
                                       const std::filesystem::path& scene_path,
                                       const std::string& what);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

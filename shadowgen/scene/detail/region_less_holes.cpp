@@ -4,7 +4,7 @@
 
 #include "clipper/clip.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 clipper::PolygonSet2 region_less_holes(std::span<const clipper::Loop2> loops) {
   const clipper::PolygonWithHoles2 outer{loops[0], {}};
@@ -14,4 +14,4 @@ clipper::PolygonSet2 region_less_holes(std::span<const clipper::Loop2> loops) {
   return clipper::clip(outer, holes).outside;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

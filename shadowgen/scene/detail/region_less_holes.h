@@ -25,9 +25,9 @@
 
 #include "clipper/polygon.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // loops[0] is the outer loop, the others holes, either orientation.
 clipper::PolygonSet2 region_less_holes(std::span<const clipper::Loop2> loops);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -7,7 +7,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/site_ranges.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 constexpr const char* kSceneSite = "the scene's site";
@@ -106,4 +106,4 @@ SiteGiver site_giver_of(const Weather& weather) {
   return {std::move(keys), weather.file, true};
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -23,7 +23,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/model/source_model.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // The scene's "site" keys, each optional here, each in its range.
 SourceSite read_site_keys(const JsonValue& value);
@@ -50,4 +50,4 @@ MergedSite merge_site(const std::vector<SiteGiver>& givers);
 // The keys a weather file's LOCATION gives, as a giver of the whole site.
 SiteGiver site_giver_of(const Weather& weather);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <string>
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 std::string lower(std::string_view text) {
@@ -128,4 +128,4 @@ std::string_view format_name(SourceFormat format) {
   return "a file";
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

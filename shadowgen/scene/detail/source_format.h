@@ -20,7 +20,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 enum class SourceFormat {
   kMesh,        // OBJ, STL, OFF, PLY or another OpenMesh format: mesh_reader.h
@@ -41,4 +41,4 @@ SourceFormat format_of_file(const std::filesystem::path& file);
 // How docs and messages name a format: "an EnergyPlus model", "a CityJSON file", ...
 std::string_view format_name(SourceFormat format);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

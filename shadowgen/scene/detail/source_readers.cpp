@@ -7,7 +7,7 @@
 #include "shadowgen/gltf/gltf_reader.h"
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 SourceModel read_source(SourceFormat format, const std::filesystem::path& file,
                         const SourceOptions& options) {
@@ -24,4 +24,4 @@ SourceModel read_source(SourceFormat format, const std::filesystem::path& file,
   throw InputError(file.string(), "", "is not a model file of another tool");
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -11,7 +11,7 @@
 #include "shadowgen/model/instant_blocks.h"
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // On a face of several parts: each part's lit area at most the part's, and the parts'
 // sum the face's lit area, at every instant, up to `tolerance` (the regions').
@@ -170,4 +170,4 @@ std::optional<std::string> nodes_problem(const Face& face, const SunPathHours& p
   return std::nullopt;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -13,7 +13,7 @@
 
 #include "shadowgen/model/shadowed_scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // A whole database's path on face f: its regions (where kept) on the face's planes, inside
 // it and not overlapping, their areas summing to the face's and Σ hours × area to the lit
@@ -34,4 +34,4 @@ std::optional<std::string> lit_areas_problem(const Face& face, const SunPathHour
 std::optional<std::string> part_lit_area_problem(const Face& face, const SunPathHours& path,
                                                  std::size_t f, double tolerance);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

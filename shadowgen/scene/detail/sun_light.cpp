@@ -10,7 +10,7 @@
 #include "shadowgen/sun/civil_time.h"
 #include "shadowgen/sun/sun_position.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 // The solar position algorithm's range (shadowgen/sun/sun_position.h); the format's four
@@ -170,4 +170,4 @@ SunEntryRead read_sun_light(const JsonValue& value, IdRegistry& ids,
   return read;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

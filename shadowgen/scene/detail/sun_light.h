@@ -24,7 +24,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 // A year at one minute's step has 525,600.
 inline constexpr std::size_t kMaxSunInstants = 1'000'000;
@@ -45,4 +45,4 @@ SunEntryRead read_sun_light(const JsonValue& value, IdRegistry& ids,
                             const std::optional<Site>& site,
                             const std::string& site_incomplete = {});
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -6,7 +6,7 @@
 #include "detail/face_builder.h"
 #include "shadowgen/scene/read_options.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 WarningSummary::WarningSummary(std::string file, std::string group)
     : file_(std::move(file)), group_(std::move(group)) {}
@@ -37,4 +37,4 @@ void WarningSummary::append_to(std::vector<std::string>& warnings, bool verbose)
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

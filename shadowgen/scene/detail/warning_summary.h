@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 class WarningSummary {
  public:
@@ -36,4 +36,4 @@ class WarningSummary {
   std::vector<Kind> kinds_;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

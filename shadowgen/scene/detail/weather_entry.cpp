@@ -7,7 +7,7 @@
 #include "shadowgen/model/number_text.h"
 #include "shadowgen/weather/epw_reader.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 Weather read_weather(const JsonValue& value, const std::filesystem::path& scene_path) {
   return weather::read_epw(referenced_file(value, scene_path, "weather file"));
@@ -27,4 +27,4 @@ void warn_if_site_differs(const Site& site, const JsonValue& site_value, const W
                   shortest(location.utc_offset_h) + "); the site is used");
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

@@ -10,7 +10,7 @@
 #include "shadowgen/json/json_reader.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 
 Weather read_weather(const JsonValue& value, const std::filesystem::path& scene_path);
 
@@ -19,4 +19,4 @@ Weather read_weather(const JsonValue& value, const std::filesystem::path& scene_
 // `site_value`: the two likely disagree by mistake.
 void warn_if_site_differs(const Site& site, const JsonValue& site_value, const Weather& weather);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

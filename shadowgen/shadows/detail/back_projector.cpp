@@ -4,7 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 BackProjector::BackProjector(const hsr::View& view, const hsr::Polygon3& polygon,
                              const hsr::Plane3& plane)
@@ -69,4 +69,4 @@ hsr::Polygon3 BackProjector::lift(const clipper::PolygonWithHoles2& p) const {
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

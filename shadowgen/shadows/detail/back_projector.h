@@ -9,7 +9,7 @@
 #include "hsr/polygon3.h"
 #include "hsr/view.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // Maps image points of one view back onto a part's plane: the part's own vertices come
 // back exactly, other points are cast onto the plane along the light's ray.
@@ -59,4 +59,4 @@ class BackProjector {
   std::unordered_map<clipper::Point2, glm::dvec3, clipper::Point2Hash> original_;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

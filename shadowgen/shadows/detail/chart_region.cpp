@@ -7,7 +7,7 @@
 #include "clipper/clip.h"
 #include "clipper/placement.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 bool overlaps_any(const clipper::Box2& box, const std::vector<clipper::Box2>& boxes) {
@@ -89,4 +89,4 @@ void ChartRegion::split(clipper::PolygonSet2 pieces, clipper::PolygonSet2& outsi
   for (auto& p : r.outside) outside.push_back(std::move(p));
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

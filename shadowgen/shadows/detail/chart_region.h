@@ -13,7 +13,7 @@
 #include "clipper/box.h"
 #include "clipper/polygon.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 class ChartRegion {
  public:
@@ -47,4 +47,4 @@ class ChartRegion {
   std::vector<clipper::Box2> outside_boxes_;  // of the part's complement of the region
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

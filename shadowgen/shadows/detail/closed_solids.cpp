@@ -17,7 +17,7 @@
 #include "hsr/chart_triangles.h"
 #include "hsr/parallel.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 constexpr double kUnit = 0x1p-53;
@@ -432,4 +432,4 @@ std::vector<char> ClosedSolids::need_not_occlude(const Light& light) const {
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

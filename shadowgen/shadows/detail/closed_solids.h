@@ -26,7 +26,7 @@
 #include "hsr/triangles_meet.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 class ClosedSolids {
  public:
@@ -52,4 +52,4 @@ class ClosedSolids {
   std::vector<std::vector<hsr::Triangle3>> part_triangles_;  // of solids' parts, those with area
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

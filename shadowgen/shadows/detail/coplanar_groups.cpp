@@ -9,7 +9,7 @@
 #include "hsr/parallel.h"
 #include "hsr/vector_length.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 // Plane orientation does not matter for coplanarity: flip so the largest component of
@@ -133,4 +133,4 @@ std::vector<int> coplanar_groups(std::span<const hsr::Polygon3> polygons,
   return group;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -7,7 +7,7 @@
 
 #include "hsr/polygon3.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // Group index per polygon, or -1 for a polygon that shares its plane with no other.
 // Candidates are found by sorting on the fitted planes; membership is then decided
@@ -16,4 +16,4 @@ namespace shadowgen::detail {
 std::vector<int> coplanar_groups(std::span<const hsr::Polygon3> polygons,
                                  std::span<const hsr::Plane3> planes);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -11,7 +11,7 @@
 #include "hsr/spatial_grid.h"
 #include "part_failure.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 // The visible pieces of one coplanar group in a grid of their boxes: a receiver clips
@@ -111,4 +111,4 @@ std::vector<clipper::PolygonSet2> seen_on_shared_planes(
   return extra;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -12,7 +12,7 @@
 #include "hsr/view.h"
 #include "receivers.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // Per receiver: the pieces that `view` saw of the other members of its coplanar group
 // (`seen`, per receiver, in image coordinates), within its own image.
@@ -20,4 +20,4 @@ std::vector<clipper::PolygonSet2> seen_on_shared_planes(
     const Receivers& receivers, const hsr::View& view,
     const std::vector<clipper::PolygonSet2>& seen);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -8,7 +8,7 @@
 #include "hsr/area.h"
 #include "hsr/parallel.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 FaceParts flatten(const Scene& scene) {
   FaceParts parts;
@@ -54,4 +54,4 @@ bool faces_light(const hsr::Plane3& plane, const Light& light) {
   return plane.signed_distance(light.position) > 0.0;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

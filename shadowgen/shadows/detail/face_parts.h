@@ -10,7 +10,7 @@
 #include "hsr/polygon3.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // Where a part of the list comes from.
 struct PartOwner {
@@ -39,4 +39,4 @@ FaceParts flatten(const Scene& scene);
 // parallel to it) leaves it unlit, as the spec settles.
 bool faces_light(const hsr::Plane3& plane, const Light& light);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

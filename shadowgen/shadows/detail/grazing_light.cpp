@@ -10,7 +10,7 @@
 #include "hsr/plane_chart.h"
 #include "hsr/vector_length.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 constexpr double kGrazingSine = 0x1p-20;
@@ -274,4 +274,4 @@ std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
   return plane.lift(clipper::clip(region, shadows).outside);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

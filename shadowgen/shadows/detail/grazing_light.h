@@ -37,7 +37,7 @@
 #include "hsr/polygon3.h"
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // How `light` meets the front side of `part`, in `plane`, by sin θ:
 //   kInPlane  sin θ = 0: a point light in the plane, a directional one parallel to it.
@@ -59,4 +59,4 @@ std::vector<hsr::Polygon3> lit_by_grazing_light(std::size_t part,
                                                 std::span<const hsr::Plane3> planes,
                                                 std::span<const int> coplanar, const Light& light);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

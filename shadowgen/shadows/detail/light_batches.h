@@ -18,7 +18,7 @@
 #include "hsr/parallel.h"
 #include "shadowgen/shadows/generate.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // Lights generated before their instants are summed: few enough that a path's lit
 // polygons never all sit in memory, enough to keep the threads busy.
@@ -61,4 +61,4 @@ void run_lights(const std::vector<std::size_t>& lights, bool batches,
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

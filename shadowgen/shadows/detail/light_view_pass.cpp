@@ -12,7 +12,7 @@
 #include "part_failure.h"
 #include "part_plane.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 // Stage 1: the fragments the view sees, per receiver, in image coordinates.
@@ -75,4 +75,4 @@ void light_through_view(const Receivers& receivers, const hsr::View& view,
   });
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

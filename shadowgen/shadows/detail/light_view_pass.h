@@ -15,7 +15,7 @@
 #include "receivers.h"
 #include "shadowgen/shadows/generate.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // Appends this view's lit polygons to `lit` (indexed like the FaceParts) for every
 // receiver the view lights; counts the fragments in stats.fragments. `hsr`: how the
@@ -23,4 +23,4 @@ namespace shadowgen::detail {
 void light_through_view(const Receivers& receivers, const hsr::View& view,
                         const hsr::HsrOptions& hsr, std::vector<LitPart>& lit, LightStats& stats);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -12,7 +12,7 @@
 #include "part_failure.h"
 #include "part_plane.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 // Whether `lit`, the lit polygons of `part` (of area `part_area`), cover it whole as far as
@@ -107,4 +107,4 @@ std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::
   return lit_by_face;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -12,7 +12,7 @@
 #include "shadowgen/model/shadowed_scene.h"
 #include "shadowgen/shadows/generate.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // The lit polygons of one face part, one list per light view that saw some of it (a
 // point light may see a part through several frusta).
@@ -41,4 +41,4 @@ void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
 std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::vector<LitPart> lit,
                                                    LightStats& stats);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

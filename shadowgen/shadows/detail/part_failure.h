@@ -12,7 +12,7 @@
 
 #include "clipper/clip.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 class PartFailure : public std::runtime_error {
  public:
@@ -32,4 +32,4 @@ auto on_part(std::size_t part, Work&& work) {
   return clipper::failing_as<PartFailure>(part, std::forward<Work>(work));
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -10,7 +10,7 @@
 #include "clipper/merge.h"
 #include "hsr/plane_chart.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 std::vector<hsr::Polygon3> unite_views(std::span<const std::vector<hsr::Polygon3>> per_view,
                                        const hsr::Plane3& plane) {
@@ -87,4 +87,4 @@ bool inside_box_of(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part
   });
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -15,7 +15,7 @@
 
 #include "hsr/polygon3.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 // `per_view`: the lit polygons of one part, grouped by the view that saw them. Returns the
 // union as polygons with holes in the part's plane, outer loops counter-clockwise seen
@@ -39,4 +39,4 @@ double part_reach(const hsr::Polygon3& part);
 // part_reach (then within_part has nothing to cut but roundings).
 bool inside_box_of(std::span<const hsr::Polygon3> lit, const hsr::Polygon3& part);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

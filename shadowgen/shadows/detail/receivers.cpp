@@ -2,7 +2,7 @@
 
 #include "shadowgen/shadows/light_scope.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 Receivers::Receivers(const FaceParts& parts, const Light& light, LightStats& stats,
                      const ClosedSolids* solids)
@@ -54,4 +54,4 @@ std::span<const hsr::Plane3> Receivers::planes() const {
   return parts_.planes;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -15,7 +15,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/shadows/generate.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 
 class Receivers {
  public:
@@ -52,4 +52,4 @@ class Receivers {
   std::vector<hsr::Plane3> planes_in_range_;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

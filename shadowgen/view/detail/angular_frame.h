@@ -22,7 +22,7 @@
 
 #include "shadowgen/model/scene.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 class AngularFrame {
  public:
@@ -91,4 +91,4 @@ class AngularFrame {
   glm::dvec3 x_{1.0, 0.0, 0.0}, y_{0.0, 1.0, 0.0}, w_{0.0, 0.0, -1.0};
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

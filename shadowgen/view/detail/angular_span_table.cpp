@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 // One loop of a hidden part in local coordinates, each vertex with what the edge leaving it
@@ -171,4 +171,4 @@ bool AngularSpanTable::in_shadow(const glm::dvec3& q) const {
   return false;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -41,7 +41,7 @@
 #include "hsr/polygon3.h"
 #include "ridge_edge_loops.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 // What a pair's end crosses: a ridge edge, a hidden edge, an open or non-manifold edge of a
 // hidden face, or the hemisphere's boundary W = 0 (special case 11.2).
@@ -80,4 +80,4 @@ class AngularSpanTable {
   std::vector<std::vector<double>> reach_;  // running maximum of φb per row
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 std::array<std::uint8_t, 3> colour_bytes(const Rgb& colour) {
   std::array<std::uint8_t, 3> bytes{};
@@ -24,4 +24,4 @@ void append_colour(std::string& out, const Rgb& colour) {
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

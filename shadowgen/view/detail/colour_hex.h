@@ -9,9 +9,9 @@
 
 #include "shadowgen/view/render.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 std::array<std::uint8_t, 3> colour_bytes(const Rgb& colour);
 void append_colour(std::string& out, const Rgb& colour);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

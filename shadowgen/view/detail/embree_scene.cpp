@@ -8,7 +8,7 @@
 
 #include "shadowgen/sampled/embree_triangles.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 // The query's own context: Embree's, then where the hits go.
@@ -72,4 +72,4 @@ void TriangleScene::hits(const glm::dvec3& origin, const glm::dvec3& direction, 
   rtcIntersect1(scene_, &context.context, &query);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -20,7 +20,7 @@
 
 #include "shadowgen/sampled/part_triangles.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 // An Embree device (its thread pool and settings) for one picture.
 class EmbreeDevice {
@@ -69,4 +69,4 @@ class TriangleScene {
   double magnitude_ = 0.0;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

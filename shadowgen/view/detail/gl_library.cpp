@@ -7,7 +7,7 @@
 #include <string>
 #include <type_traits>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 constexpr const char* kLibrary = "libOSMesa.so.8";
@@ -72,4 +72,4 @@ const GlLibrary& gl_library() {
   return library;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -9,7 +9,7 @@
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 struct GlLibrary {
   decltype(&::OSMesaCreateContextExt) OSMesaCreateContextExt = nullptr;
@@ -49,4 +49,4 @@ struct GlLibrary {
 // library where it cannot be opened or lacks one of them.
 const GlLibrary& gl_library();
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

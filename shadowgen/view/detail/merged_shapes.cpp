@@ -7,7 +7,7 @@
 #include "clipper/merge.h"
 #include "clipper/normalize.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 namespace {
 
@@ -33,4 +33,4 @@ clipper::PolygonSet2 merged_shapes(std::span<const clipper::PolygonWithHoles2> p
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

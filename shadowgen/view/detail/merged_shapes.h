@@ -7,7 +7,7 @@
 
 #include "clipper/polygon.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 // The union of `pieces`, which do not overlap, by clipper::merge_adjacent; where its snap
 // rounding does not settle (clipper::SnapRoundingError), the pieces as they are: the same
@@ -16,4 +16,4 @@ namespace shadowgen::detail {
 // where a joined boundary runs straight on are dropped (exactly: the area is unchanged).
 clipper::PolygonSet2 merged_shapes(std::span<const clipper::PolygonWithHoles2> pieces);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -14,7 +14,7 @@
 #include "shadowgen/view/map_marks.h"
 #include "shadowgen/view/outlines.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 // The most vertices of a region's image clipped whole; larger ones are cut into tiles
@@ -360,4 +360,4 @@ Picture paint_picture(const Scene& scene, const Camera& camera, const RenderOpti
   return picture;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

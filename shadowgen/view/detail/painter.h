@@ -17,7 +17,7 @@
 #include "shadowgen/view/camera.h"
 #include "shadowgen/view/render.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 // No region of the face: a piece seen from the face's back side, or what a fragment
 // leaves where the tiling names no region to take it.
@@ -52,4 +52,4 @@ class FaceTiling {
 Picture paint_picture(const Scene& scene, const Camera& camera, const RenderOptions& options,
                       FaceTiling& tiling);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -7,7 +7,7 @@
 
 #include "shadowgen/model/number_text.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 // A vertex in whole steps of the grid.
@@ -179,4 +179,4 @@ void append_grid_path_data(std::string& out, std::span<const clipper::PolygonWit
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

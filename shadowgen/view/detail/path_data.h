@@ -27,7 +27,7 @@
 
 #include "clipper/polygon.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 inline constexpr double kPathGrid = 1000.0;  // steps per pixel
 
@@ -35,4 +35,4 @@ void append_exact_path_data(std::string& out, std::span<const clipper::PolygonWi
 
 void append_grid_path_data(std::string& out, std::span<const clipper::PolygonWithHoles2> shapes);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

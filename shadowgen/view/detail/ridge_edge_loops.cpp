@@ -7,7 +7,7 @@
 #include <numeric>
 #include <utility>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 // Visible (the papers' footnote): the ray from the light to the face against its normal.
@@ -141,4 +141,4 @@ RidgeEdgeLoops ridge_edge_loops(std::span<const hsr::Polygon3> polygons,
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

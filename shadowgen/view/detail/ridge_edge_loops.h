@@ -40,7 +40,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/shadows/light_scope.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 inline constexpr std::size_t kNoObject = static_cast<std::size_t>(-1);
 
@@ -83,4 +83,4 @@ RidgeEdgeLoops ridge_edge_loops(std::span<const hsr::Polygon3> polygons,
                                 std::span<const hsr::Plane3> planes,
                                 std::span<const PartRole> roles, const Light& light);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

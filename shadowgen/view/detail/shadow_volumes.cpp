@@ -9,7 +9,7 @@
 #include "detail/embree_scene.h"
 #include "shadowgen/sampled/part_triangles.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 // The most a point light's edge piece subtends: its quad's far edge then lies at least
@@ -211,4 +211,4 @@ int ShadowVolumes::count(const glm::dvec3& from, std::span<const std::size_t> fr
   return count;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

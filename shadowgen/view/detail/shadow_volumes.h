@@ -59,7 +59,7 @@
 #include "shadowgen/model/scene.h"
 #include "shadowgen/shadows/light_scope.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 // Float spacings of the volumes' largest |coordinate| an eye ray stops short of its point.
 inline constexpr double kVolumeOffsetUlps = 8.0;
@@ -101,4 +101,4 @@ class ShadowVolumes {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

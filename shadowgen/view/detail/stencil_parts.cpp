@@ -2,7 +2,7 @@
 
 #include "ridge_edge_loops.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 using glm::dvec3;
@@ -58,4 +58,4 @@ bool builds_volume(const StencilPart& part, const SilhouetteMarks* marks) {
   return casts_volume(part) && (marks == nullptr || part.light_side > 0);
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -16,7 +16,7 @@
 #include "shadowgen/sampled/part_triangles.h"
 #include "shadowgen/shadows/light_scope.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 // One part of a face under the light.
 struct StencilPart {
@@ -67,4 +67,4 @@ void for_each_side_edge(const StencilPart& part, const std::vector<std::vector<b
   }
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

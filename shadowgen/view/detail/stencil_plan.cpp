@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <stdexcept>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 using glm::dvec3;
@@ -341,4 +341,4 @@ StencilPlan make_stencil_plan(const Scene& scene, const Light& light, const Came
   return plan;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -12,7 +12,7 @@
 #include "shadowgen/view/stencil_shadows.h"
 #include "stencil_parts.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 // Everything the GL passes draw: the camera and the volumes' triangles, as homogeneous
 // vertices relative to the camera's origin.
@@ -29,4 +29,4 @@ struct StencilPlan {
 StencilPlan make_stencil_plan(const Scene& scene, const Light& light, const CameraView& view,
                               const StencilOptions& options);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 namespace {
 
 // Length of the valid UTF-8 sequence starting at text[i] that XML 1.0 allows, or 0.
@@ -84,4 +84,4 @@ std::string xml_text(std::string_view text) {
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -8,9 +8,9 @@
 #include <string>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::view::detail {
 
 void append_xml_text(std::string& out, std::string_view text);
 std::string xml_text(std::string_view text);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::view::detail

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace shadowgen::detail {
+namespace shadowgen::viewer::detail {
 
 std::string base64(std::string_view bytes) {
   static constexpr char kAlphabet[] =
@@ -33,4 +33,4 @@ std::string base64(std::string_view bytes) {
   return out;
 }
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::viewer::detail

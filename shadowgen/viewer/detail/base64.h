@@ -6,8 +6,8 @@
 #include <string>
 #include <string_view>
 
-namespace shadowgen::detail {
+namespace shadowgen::viewer::detail {
 
 std::string base64(std::string_view bytes);
 
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::viewer::detail

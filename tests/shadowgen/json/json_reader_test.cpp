@@ -116,13 +116,13 @@ TEST(JsonReader, AKeyGivenTwiceIsRefusedWithItsPath) {
             "(no error)");
 }
 
-// Nesting is limited (detail::kMaxJsonDepth): a file of nothing but '[' is refused at
+// Nesting is limited (json::detail::kMaxJsonDepth): a file of nothing but '[' is refused at
 // the limit, with the path of the innermost container, not built to its end (20 million
 // of them once took 2.4 GB).
 TEST(JsonReader, NestingBeyondTheLimitIsRefusedAtTheLimit) {
   std::string at_limit = R"({"a": )";
-  for (std::size_t i = 1; i < detail::kMaxJsonDepth; ++i) at_limit += '[';
-  at_limit += std::string(detail::kMaxJsonDepth - 1, ']') + "}";
+  for (std::size_t i = 1; i < json::detail::kMaxJsonDepth; ++i) at_limit += '[';
+  at_limit += std::string(json::detail::kMaxJsonDepth - 1, ']') + "}";
   EXPECT_EQ(parse_error(at_limit), "(no error)");
 
   const std::string deep = R"({"faces": [{"id": "w", "k": )" + std::string(20'000'000, '[');
@@ -160,15 +160,15 @@ TEST(JsonReader, SyntaxErrorsAndOverflowsAreLocated) {
 
 TEST(KeySuggestion, TyposAreCloseOtherWordsAreNot) {
   const std::vector<std::string> known = {"id", "outer", "holes", "range", "transform", "up"};
-  EXPECT_EQ(detail::closest_key("rnage", known), "range");         // two letters swapped
-  EXPECT_EQ(detail::closest_key("tranform", known), "transform");  // one left out
-  EXPECT_EQ(detail::closest_key("hole", known), "holes");
-  EXPECT_EQ(detail::closest_key("Outer", known), "outer");
-  EXPECT_EQ(detail::closest_key("colour", known), std::nullopt);
-  EXPECT_EQ(detail::closest_key("ip", known), "id");  // one edit: the first of equals
-  EXPECT_EQ(detail::closest_key("xy", known), std::nullopt);
-  EXPECT_EQ(detail::edit_distance("abc", "acb"), 1u);
-  EXPECT_EQ(detail::edit_distance("", "abc"), 3u);
+  EXPECT_EQ(json::detail::closest_key("rnage", known), "range");         // two letters swapped
+  EXPECT_EQ(json::detail::closest_key("tranform", known), "transform");  // one left out
+  EXPECT_EQ(json::detail::closest_key("hole", known), "holes");
+  EXPECT_EQ(json::detail::closest_key("Outer", known), "outer");
+  EXPECT_EQ(json::detail::closest_key("colour", known), std::nullopt);
+  EXPECT_EQ(json::detail::closest_key("ip", known), "id");  // one edit: the first of equals
+  EXPECT_EQ(json::detail::closest_key("xy", known), std::nullopt);
+  EXPECT_EQ(json::detail::edit_distance("abc", "acb"), 1u);
+  EXPECT_EQ(json::detail::edit_distance("", "abc"), 3u);
 }
 
 }  // namespace

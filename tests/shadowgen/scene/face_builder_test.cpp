@@ -40,9 +40,11 @@ struct Built {
   std::vector<std::string> warnings;
 };
 
-Built build(hsr::Polygon3 polygon, detail::FaceKind kind = detail::FaceKind::kPolygon) {
+Built build(hsr::Polygon3 polygon,
+            scene::detail::FaceKind kind = scene::detail::FaceKind::kPolygon) {
   Built b;
-  b.face = detail::build_face(std::move(polygon), {"wall", "scene.json", kind}, false, b.warnings);
+  b.face = scene::detail::build_face(std::move(polygon), {"wall", "scene.json", kind}, false,
+                                     b.warnings);
   return b;
 }
 
@@ -161,7 +163,7 @@ TEST(FaceBuilderSharedEdges, VerticesFarFromTheOriginAreTheInputsBitForBit) {
 }
 
 TEST(FaceBuilderSharedEdges, MeshFacesAreResolvedAlike) {
-  const Built b = build({kWall, {rectangle(4, 0, 5, 2)}}, detail::FaceKind::kMeshFace);
+  const Built b = build({kWall, {rectangle(4, 0, 5, 2)}}, scene::detail::FaceKind::kMeshFace);
   ASSERT_EQ(b.face.parts.size(), 1u);
   EXPECT_EQ(hsr::area(b.face.parts), 28.0);
 }

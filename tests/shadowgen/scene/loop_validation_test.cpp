@@ -81,7 +81,7 @@ TEST(LoopValidation, AgreesWithTheExactOracle) {
     }
     std::vector<std::string> names{"outer loop"};
     for (std::size_t h = 1; h < loops.size(); ++h) names.push_back("hole " + std::to_string(h - 1));
-    const detail::LoopCheck ours = detail::check_loops(loops, names);
+    const scene::detail::LoopCheck ours = scene::detail::check_loops(loops, names);
     const clipper::PolygonWithHoles2 polygon{loops[0], {loops.begin() + 1, loops.end()}};
     const std::string theirs = test::validity_problem(test::oriented({polygon})[0]);
     const bool each_simple = std::all_of(loops.begin(), loops.end(), [](const clipper::Loop2& l) {
@@ -166,7 +166,7 @@ TEST(LoopValidation, HolesSharingEdgesAreValidExactlyWhenTheAreasSaySo) {
     }
     std::vector<std::string> names{"outer loop"};
     for (std::size_t h = 1; h < loops.size(); ++h) names.push_back("hole " + std::to_string(h - 1));
-    const detail::LoopCheck ours = detail::check_loops(loops, names);
+    const scene::detail::LoopCheck ours = scene::detail::check_loops(loops, names);
     const bool valid = valid_by_areas(loops);
     EXPECT_EQ(!ours.problem, valid)
         << "trial " << trial << ": " << ours.problem.value_or("accepted");
@@ -198,7 +198,7 @@ TEST(Triangulate, RandomHolesTouchingTheBoundaryAndEachOther) {
       continue;
     }
     std::vector<std::string> names(loops.size(), "loop");
-    const detail::LoopCheck check = detail::check_loops(loops, names);
+    const scene::detail::LoopCheck check = scene::detail::check_loops(loops, names);
     if (check.problem || check.shares_edges) continue;  // triangulate's precondition
     ++triangulated;
     const auto triangles = clipper::triangulate(loops);

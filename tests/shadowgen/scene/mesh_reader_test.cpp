@@ -64,14 +64,14 @@ fs::path write(const std::string& name, const std::string& bytes) {
   return path;
 }
 
-detail::MeshSoup read(const std::string& name, const std::string& bytes) {
-  return detail::read_mesh(write(name, bytes), "m");
+scene::detail::MeshSoup read(const std::string& name, const std::string& bytes) {
+  return scene::detail::read_mesh(write(name, bytes), "m");
 }
 
 // The InputError reading `bytes` as `name` gives; a failure when there is none.
 InputError read_error(const std::string& name, const std::string& bytes) {
   try {
-    const detail::MeshSoup soup = read(name, bytes);
+    const scene::detail::MeshSoup soup = read(name, bytes);
     ADD_FAILURE() << name << ": read without an error, " << soup.vertices.size() << " vertices, "
                   << soup.faces.size() << " faces";
   } catch (const InputError& e) {
@@ -187,7 +187,7 @@ TEST(ObjReader, ControlBytesAreNotText) {
 }
 
 TEST(ObjReader, TextWithUtf8AndLatin1CommentsIsRead) {
-  const detail::MeshSoup soup =
+  const scene::detail::MeshSoup soup =
       read("accents.obj",
            "\xEF\xBB\xBF# Cr\xC3\xA9\xC3\xA9 / cr\xE9\xE9\nv 0 0 0\nv 1 0 0\n"
            "v 0 1 0\f\nf 1 2 3\n");
@@ -198,7 +198,7 @@ TEST(ObjReader, TextWithUtf8AndLatin1CommentsIsRead) {
 TEST(ObjReader, OldMacLineEndingsAreLines) {
   // A lone carriage return ends a line; read as one line, the first vertex would have
   // swallowed the rest of the file.
-  const detail::MeshSoup soup = read("mac.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+  const scene::detail::MeshSoup soup = read("mac.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
   ASSERT_EQ(soup.vertices.size(), 3u);
   ASSERT_EQ(soup.faces.size(), 1u);
   EXPECT_EQ(soup.faces[0].line, 4u);
@@ -235,7 +235,7 @@ std::string binary_stl(std::uint32_t triangles, std::uint32_t present) {
 }
 
 TEST(StlReader, BinaryWithASolidHeaderIsBinary) {
-  const detail::MeshSoup soup = read("solid_header.stl", binary_stl(2, 2));
+  const scene::detail::MeshSoup soup = read("solid_header.stl", binary_stl(2, 2));
   ASSERT_EQ(soup.faces.size(), 2u);
   EXPECT_EQ(soup.vertices[4], glm::dvec3(2, 0, 0));
 }
@@ -314,7 +314,7 @@ TEST(OffReader, MalformedRecordsAreErrors) {
 
 TEST(OffReader, CoordinatesKeepFullDoublePrecision) {
   // OpenMesh's reader passed them through single precision.
-  const detail::MeshSoup soup =
+  const scene::detail::MeshSoup soup =
       read("tenth.off", "OFF\n3 1 0\n0.1 0 0\n1 0 0\n0 1 1e-300\n3 0 1 2\n");
   ASSERT_EQ(soup.vertices.size(), 3u);
   EXPECT_EQ(soup.vertices[0].x, 0.1);
@@ -324,24 +324,24 @@ TEST(OffReader, CoordinatesKeepFullDoublePrecision) {
 TEST(OffReader, VariantsOfTheFormat) {
   // Comments, colours after the indices, the prefixes, the header run together with the
   // counts, no header at all, CRLF lines.
-  const detail::MeshSoup plain =
+  const scene::detail::MeshSoup plain =
       read("plain.off",
            "# a triangle\r\nOFF\r\n\r\n3 1 0 # counts\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n"
            "3 0 1 2 255 0 0\r\n");
   ASSERT_EQ(plain.faces.size(), 1u);
   EXPECT_EQ(plain.faces[0].vertices, indices({0, 1, 2}));
   EXPECT_EQ(plain.faces[0].line, 8u);
-  const detail::MeshSoup coff =
+  const scene::detail::MeshSoup coff =
       read("c.off", "COFF\n3 1 0\n0 0 0 1 1 1 1\n1 0 0 0 0 0 1\n0 1 0 9\n3 0 1 2\n");
   ASSERT_EQ(coff.vertices.size(), 3u);
   EXPECT_EQ(coff.vertices[1], glm::dvec3(1, 0, 0));
-  const detail::MeshSoup stcnoff =
+  const scene::detail::MeshSoup stcnoff =
       read("stcn.off",
            "STCNOFF\n3 1\n0 0 0 0 0 1 1 1 1 0.5 0.5\n1 0 0 0 0 1 1 1 1 0.5 0.5\n"
            "0 1 0 0 0 1 1 1 1 0.5 0.5\n3 0 1 2\n");
   ASSERT_EQ(stcnoff.vertices.size(), 3u);
   EXPECT_EQ(stcnoff.vertices[2], glm::dvec3(0, 1, 0));
-  const detail::MeshSoup homogeneous =
+  const scene::detail::MeshSoup homogeneous =
       read("h.off", "4OFF\n3 1 0\n0 0 0 2\n2 0 0 2\n0 3 0 0.5\n3 0 1 2\n");
   ASSERT_EQ(homogeneous.vertices.size(), 3u);
   EXPECT_EQ(homogeneous.vertices[1], glm::dvec3(1, 0, 0));
@@ -349,16 +349,19 @@ TEST(OffReader, VariantsOfTheFormat) {
   EXPECT_TRUE(
       Contains(read_error("w0.off", "4OFF\n3 1 0\n0 0 0 0\n2 0 0 2\n0 3 0 1\n3 0 1 2\n").problem(),
                "at infinity"));
-  const detail::MeshSoup run_together =
+  const scene::detail::MeshSoup run_together =
       read("modelnet.off", "OFF3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 2 1 0\n");
   ASSERT_EQ(run_together.faces.size(), 1u);
   EXPECT_EQ(run_together.faces[0].vertices, indices({2, 1, 0}));
-  const detail::MeshSoup n_off = read("n.off", "nOFF\n3\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const scene::detail::MeshSoup n_off =
+      read("n.off", "nOFF\n3\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(n_off.faces.size(), 1u);
-  const detail::MeshSoup headerless = read("bare.off", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const scene::detail::MeshSoup headerless =
+      read("bare.off", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(headerless.faces.size(), 1u);
   // Records of fewer than 3 indices are kept, for the scene reader to reject with the id.
-  const detail::MeshSoup two = read("two.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1\n");
+  const scene::detail::MeshSoup two =
+      read("two.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1\n");
   ASSERT_EQ(two.faces.size(), 2u);
   EXPECT_EQ(two.faces[1].vertices, indices({0, 1}));
 }
@@ -380,7 +383,7 @@ std::string binary_off(bool big, std::int32_t faces_announced = 2, bool trailing
 
 TEST(OffReader, BinaryInEitherByteOrder) {
   for (const bool big : {true, false}) {
-    const detail::MeshSoup soup = read("binary.off", binary_off(big));
+    const scene::detail::MeshSoup soup = read("binary.off", binary_off(big));
     ASSERT_EQ(soup.faces.size(), 2u) << big;
     ASSERT_EQ(soup.vertices.size(), 4u);
     EXPECT_EQ(soup.faces[1].vertices, indices({0, 1, 2, 3}));
@@ -443,7 +446,7 @@ TEST(PlyReader, AnAsciiBodyShorterThanTheHeaderSaysIsAnError) {
 }
 
 TEST(PlyReader, AsciiCoordinatesKeepFullDoublePrecision) {
-  const detail::MeshSoup soup =
+  const scene::detail::MeshSoup soup =
       read("tenth.ply", ply_header("ascii", "float", 3, 1) + "0.1 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   ASSERT_EQ(soup.faces.size(), 1u);
   EXPECT_EQ(soup.vertices[0].x, 0.1);
@@ -479,12 +482,12 @@ std::string binary_ply(bool big, bool doubles, std::int64_t faces, const std::st
 
 TEST(PlyReader, BinaryInEitherByteOrderInFullPrecision) {
   for (const bool big : {true, false}) {
-    const detail::MeshSoup soup = read("binary.ply", binary_ply(big, true, 2));
+    const scene::detail::MeshSoup soup = read("binary.ply", binary_ply(big, true, 2));
     ASSERT_EQ(soup.faces.size(), 2u) << big;
     ASSERT_EQ(soup.vertices.size(), 4u);
     EXPECT_EQ(soup.faces[1].vertices, indices({0, 1, 2, 3}));
     EXPECT_EQ(soup.vertices[3].z, 0.1);  // OpenMesh's reader gave float(0.1)
-    const detail::MeshSoup floats = read("floats.ply", binary_ply(big, false, 2));
+    const scene::detail::MeshSoup floats = read("floats.ply", binary_ply(big, false, 2));
     ASSERT_EQ(floats.vertices.size(), 4u);
     EXPECT_EQ(floats.vertices[3].z, static_cast<double>(0.1f));
   }
@@ -530,10 +533,10 @@ TEST(PlyReader, MalformedHeadersAreErrors) {
 
 // ---- Pinched and bridged loops ---------------------------------------------------------
 
-detail::LoopCheck check(const std::vector<clipper::Loop2>& loops) {
+scene::detail::LoopCheck check(const std::vector<clipper::Loop2>& loops) {
   std::vector<std::string> names{"the face"};
   for (std::size_t h = 1; h < loops.size(); ++h) names.push_back("hole " + std::to_string(h - 1));
-  return detail::check_loops(loops, names);
+  return scene::detail::check_loops(loops, names);
 }
 
 std::string problem_of(const std::vector<clipper::Loop2>& loops) {
@@ -550,7 +553,7 @@ clipper::Loop2 reversed(clipper::Loop2 loop) {
 const clipper::Loop2 kBow{{0, 0}, {2, -1}, {2, 1}, {0, 0}, {-2, 1}, {-2, -1}};
 
 TEST(PinchedLoops, ALoopTouchingItselfAtAVertexWithoutCrossingIsValid) {
-  const detail::LoopCheck bow = check({kBow});
+  const scene::detail::LoopCheck bow = check({kBow});
   EXPECT_FALSE(bow.problem) << *bow.problem;
   EXPECT_EQ(bow.counter_clockwise, std::vector<bool>{true});
   EXPECT_EQ(check({reversed(kBow)}).counter_clockwise, std::vector<bool>{false});
@@ -601,7 +604,7 @@ const clipper::Loop2 kKeyhole{{-2, -2}, {2, -2}, {2, 2}, {-2, 2}, {-2, -2},
                               {-1, -1}, {-1, 1}, {1, 1}, {1, -1}, {-1, -1}};
 
 TEST(PinchedLoops, ABridgeRunOnceEachWayIsValid) {
-  const detail::LoopCheck keyhole = check({kKeyhole});
+  const scene::detail::LoopCheck keyhole = check({kKeyhole});
   EXPECT_FALSE(keyhole.problem) << *keyhole.problem;
   EXPECT_EQ(keyhole.counter_clockwise, std::vector<bool>{true});
   EXPECT_EQ(check({reversed(kKeyhole)}).counter_clockwise, std::vector<bool>{false});

@@ -10,7 +10,7 @@
 
 #include "shadowgen/model/input_error.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 SourceSite keys(std::optional<double> lat, std::optional<double> lon, std::optional<double> utc,
@@ -96,4 +96,4 @@ TEST(SiteEntry, AModelValueOutOfRangeNamesTheFileAndWhereItCameFrom) {
 }
 
 }  // namespace
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

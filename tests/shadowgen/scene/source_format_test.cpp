@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace shadowgen::detail {
+namespace shadowgen::scene::detail {
 namespace {
 
 TEST(SourceFormat, BinaryGltfByItsMagicWhateverTheName) {
@@ -49,4 +49,4 @@ TEST(SourceFormat, ExtensionWhenTheContentDoesNotSay) {
 }
 
 }  // namespace
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::scene::detail

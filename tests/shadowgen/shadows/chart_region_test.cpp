@@ -9,7 +9,7 @@
 #include "tests/support/cgal_oracle.h"
 #include "tests/support/random_polygons.h"
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 using clipper::PolygonSet2;
@@ -63,4 +63,4 @@ TEST(ChartRegion, ARegionThatIsTheWholePartTakesEveryPieceWithoutAClip) {
 }
 
 }  // namespace
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -26,8 +26,8 @@ using glm::dvec3;
 
 // The solid of each face's first part, in scene order.
 std::vector<int> solids_of(const Scene& scene) {
-  const detail::FaceParts parts = detail::flatten(scene);
-  const detail::ClosedSolids solids(parts);
+  const shadows::detail::FaceParts parts = shadows::detail::flatten(scene);
+  const shadows::detail::ClosedSolids solids(parts);
   std::vector<int> out;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     if (parts.owners[i].part == 0) out.push_back(solids.solid(i));
@@ -37,8 +37,8 @@ std::vector<int> solids_of(const Scene& scene) {
 
 // The faces whose parts all need not occlude `light`, by id.
 std::vector<std::string> left_out(const Scene& scene, const Light& light) {
-  const detail::FaceParts parts = detail::flatten(scene);
-  const detail::ClosedSolids solids(parts);
+  const shadows::detail::FaceParts parts = shadows::detail::flatten(scene);
+  const shadows::detail::ClosedSolids solids(parts);
   const std::vector<char> out = solids.need_not_occlude(light);
   std::vector<std::string> ids;
   for (std::size_t i = 0; i < parts.size(); ++i) {

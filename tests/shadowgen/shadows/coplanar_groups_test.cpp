@@ -4,7 +4,7 @@
 
 #include <vector>
 
-namespace shadowgen::detail {
+namespace shadowgen::shadows::detail {
 namespace {
 
 hsr::Polygon3 square_at_height(double x, double z) {
@@ -32,4 +32,4 @@ TEST(CoplanarGroups, GroupsAreNumberedInTheOrderOfTheirPlanes) {
 }
 
 }  // namespace
-}  // namespace shadowgen::detail
+}  // namespace shadowgen::shadows::detail

@@ -163,13 +163,13 @@ TEST(AngularShadows, RidgeEdgeLoopOfACube) {
           .scene;
   const ScenePartPlanes parts(scene);
   const std::vector<PartRole> roles = part_roles(parts.polygons, parts.planes, scene.lights[0]);
-  const detail::RidgeEdgeLoops loops =
-      detail::ridge_edge_loops(parts.polygons, parts.planes, roles, scene.lights[0]);
+  const view::detail::RidgeEdgeLoops loops =
+      view::detail::ridge_edge_loops(parts.polygons, parts.planes, roles, scene.lights[0]);
   EXPECT_EQ(loops.objects, 2u);  // the ground, the cube
-  EXPECT_EQ(loops.count(detail::EdgeKind::kRidge), 6u);
-  EXPECT_EQ(loops.count(detail::EdgeKind::kHidden), 3u);
-  EXPECT_EQ(loops.count(detail::EdgeKind::kVisible), 3u);
-  EXPECT_EQ(loops.count(detail::EdgeKind::kOpen), 4u);  // the ground's border
+  EXPECT_EQ(loops.count(view::detail::EdgeKind::kRidge), 6u);
+  EXPECT_EQ(loops.count(view::detail::EdgeKind::kHidden), 3u);
+  EXPECT_EQ(loops.count(view::detail::EdgeKind::kVisible), 3u);
+  EXPECT_EQ(loops.count(view::detail::EdgeKind::kOpen), 4u);  // the ground's border
   ASSERT_EQ(loops.loops.size(), 1u);
   EXPECT_TRUE(loops.loops[0].closed);
   EXPECT_EQ(loops.loops[0].vertices.size(), 6u);
@@ -177,18 +177,18 @@ TEST(AngularShadows, RidgeEdgeLoopOfACube) {
 
   // Every row of the table: the cube's spans begin and end at ridge crossings, hidden edge
   // crossings (in duplicate) only inside them.
-  const detail::AngularFrame frame(scene.lights[0], glm::dvec3(0.0));
-  const detail::AngularSpanTable table(frame, 1, loops, parts.polygons, 50);
+  const view::detail::AngularFrame frame(scene.lights[0], glm::dvec3(0.0));
+  const view::detail::AngularSpanTable table(frame, 1, loops, parts.polygons, 50);
   ASSERT_EQ(table.rows(), 50);
   std::size_t hidden_ends = 0;
   for (int k = 0; k < table.rows(); ++k) {
     const auto row = table.row(k);
     ASSERT_FALSE(row.empty()) << k;
-    EXPECT_EQ(row.front().end0, detail::Crossing::kRidge) << k;
-    EXPECT_EQ(row.back().end1, detail::Crossing::kRidge) << k;
+    EXPECT_EQ(row.front().end0, view::detail::Crossing::kRidge) << k;
+    EXPECT_EQ(row.back().end1, view::detail::Crossing::kRidge) << k;
     for (std::size_t i = 0; i + 1 < row.size(); ++i) {
-      EXPECT_EQ(row[i].end1, detail::Crossing::kHidden);
-      EXPECT_EQ(row[i + 1].end0, detail::Crossing::kHidden);
+      EXPECT_EQ(row[i].end1, view::detail::Crossing::kHidden);
+      EXPECT_EQ(row[i + 1].end0, view::detail::Crossing::kHidden);
       EXPECT_NEAR(row[i].phi1, row[i + 1].phi0, 1e-12);
       ++hidden_ends;
     }
@@ -274,10 +274,10 @@ TEST(AngularShadows, ConcaveObjectShadesItself) {
   const Scene& scene = shadowed.scene;
   const ScenePartPlanes parts(scene);
   const std::vector<PartRole> roles = part_roles(parts.polygons, parts.planes, scene.lights[0]);
-  const detail::RidgeEdgeLoops loops =
-      detail::ridge_edge_loops(parts.polygons, parts.planes, roles, scene.lights[0]);
+  const view::detail::RidgeEdgeLoops loops =
+      view::detail::ridge_edge_loops(parts.polygons, parts.planes, roles, scene.lights[0]);
   EXPECT_EQ(loops.objects, 2u);
-  for (const detail::RidgeLoop& loop : loops.loops) EXPECT_TRUE(loop.closed);
+  for (const view::detail::RidgeLoop& loop : loops.loops) EXPECT_TRUE(loop.closed);
 
   // Seen from the north-east, where the inner walls show.
   const PixelSurfaces surfaces =

@@ -14,13 +14,13 @@ namespace {
 
 std::string grid(const std::vector<clipper::PolygonWithHoles2>& shapes) {
   std::string out;
-  detail::append_grid_path_data(out, shapes);
+  view::detail::append_grid_path_data(out, shapes);
   return out;
 }
 
 std::string exact(const std::vector<clipper::PolygonWithHoles2>& shapes) {
   std::string out;
-  detail::append_exact_path_data(out, shapes);
+  view::detail::append_exact_path_data(out, shapes);
   return out;
 }
 

@@ -209,8 +209,8 @@ TEST(PixelShadows, EyeInsideAShadowVolume) {
     planes.push_back(hsr::plane_of(face.parts[0]));
   }
   const std::vector<PartRole> roles = part_roles(parts, planes, shadowed.scene.lights[0]);
-  const detail::ShadowVolumes volumes(shadowed.scene.lights[0], parts, planes, roles,
-                                      {{-10, -10, 0}, {10, 10, 6}});
+  const view::detail::ShadowVolumes volumes(shadowed.scene.lights[0], parts, planes, roles,
+                                            {{-10, -10, 0}, {10, 10, 6}});
   std::vector<std::string> holding;
   for (const std::size_t part : volumes.holding(eye)) {
     holding.push_back(shadowed.scene.faces[part].id);

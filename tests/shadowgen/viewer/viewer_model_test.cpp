@@ -205,14 +205,14 @@ TEST(ViewerModel, TheScriptHandsThePageTheDescriptionAndTheGlbInBase64) {
 }
 
 TEST(Base64, EncodesTheTestVectorsOfRfc4648) {
-  EXPECT_EQ(detail::base64(""), "");
-  EXPECT_EQ(detail::base64("f"), "Zg==");
-  EXPECT_EQ(detail::base64("fo"), "Zm8=");
-  EXPECT_EQ(detail::base64("foo"), "Zm9v");
-  EXPECT_EQ(detail::base64("foob"), "Zm9vYg==");
-  EXPECT_EQ(detail::base64("fooba"), "Zm9vYmE=");
-  EXPECT_EQ(detail::base64("foobar"), "Zm9vYmFy");
-  EXPECT_EQ(detail::base64(std::string("\xff\xfe\x00", 3)), "//4A");
+  EXPECT_EQ(viewer::detail::base64(""), "");
+  EXPECT_EQ(viewer::detail::base64("f"), "Zg==");
+  EXPECT_EQ(viewer::detail::base64("fo"), "Zm8=");
+  EXPECT_EQ(viewer::detail::base64("foo"), "Zm9v");
+  EXPECT_EQ(viewer::detail::base64("foob"), "Zm9vYg==");
+  EXPECT_EQ(viewer::detail::base64("fooba"), "Zm9vYmE=");
+  EXPECT_EQ(viewer::detail::base64("foobar"), "Zm9vYmFy");
+  EXPECT_EQ(viewer::detail::base64(std::string("\xff\xfe\x00", 3)), "//4A");
 }
 
 std::string read_text(const std::filesystem::path& path) {
