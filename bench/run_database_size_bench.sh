@@ -29,17 +29,10 @@ threads=${THREADS:-2}
 repetitions=${REPETITIONS:-2}
 old=${OLD:?set OLD to the shadowgen executable to compare with}
 new=$build/cli/shadowgen
-if [ -n "${KEEP:-}" ]; then
-  work=$KEEP
-  mkdir -p "$work"
-else
-  work=$(mktemp -d)
-  trap 'rm -rf "$work"' EXIT
-fi
+. "$(dirname "$0")/city_work.sh"
+work_folder
 
-"$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
-python3 "$(dirname "$0")/city_sun_scene.py" "$work/city.db.json" "$work/scene.json" "$from" "$to" \
-  "$step" >/dev/null
+city_sun_scene "$faces" "$work/scene.json" "$from" "$to" "$step" >/dev/null
 instants=$("$new" sun "$work/scene.json" | tail -n +2 | wc -l)
 echo "city of $faces faces, sun path $from to $to every $step min: $instants instants with" \
   "the sun up, $threads threads; scene $(stat -c %s "$work/scene.json") bytes"

@@ -31,19 +31,11 @@ step=${4:-30}
 build=${BUILD_DIR:-build/release}
 threads=${THREADS:-2}
 repetitions=${REPETITIONS:-3}
-if [ -n "${KEEP:-}" ]; then
-  work=$KEEP
-  mkdir -p "$work"
-else
-  work=$(mktemp -d)
-  trap 'rm -rf "$work"' EXIT
-fi
+. "$(dirname "$0")/city_work.sh"
+work_folder
 
-[ -f "$work/city.db.json" ] && [ -n "${REUSE:-}" ] ||
-  "$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
 # The scene, and the middle of its bounding box: where the camera looks down from.
-centre=$(python3 "$(dirname "$0")/city_sun_scene.py" "$work/city.db.json" "$work/scene.json" \
-  "$from" "$to" "$step")
+centre=$(city_sun_scene "$faces" "$work/scene.json" "$from" "$to" "$step")
 read -r cx cy top <<<"$centre"
 instants=$("$build/cli/shadowgen" sun "$work/scene.json" | tail -n +2 | wc -l)
 polygons=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['polygons']))" "$work/scene.json")

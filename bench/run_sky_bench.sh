@@ -27,17 +27,10 @@ build=${BUILD_DIR:-build/release}
 threads=${THREADS:-2}
 repetitions=${REPETITIONS:-3}
 shadowgen=$build/cli/shadowgen
-if [ -n "${KEEP:-}" ]; then
-  work=$KEEP
-  mkdir -p "$work"
-else
-  work=$(mktemp -d)
-  trap 'rm -rf "$work"' EXIT
-fi
+. "$(dirname "$0")/city_work.sh"
+work_folder
 
-"$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
-python3 "$(dirname "$0")/city_sun_scene.py" "$work/city.db.json" "$work/scene.json" "$from" "$to" \
-  "$step" >/dev/null
+city_sun_scene "$faces" "$work/scene.json" "$from" "$to" "$step" >/dev/null
 instants=$("$shadowgen" sun "$work/scene.json" | tail -n +2 | wc -l)
 sky_args=()
 [ -n "$sky" ] && sky_args=(--sky "$sky")

@@ -22,17 +22,10 @@ build=${BUILD_DIR:-build/release}
 threads=${THREADS:-2}
 repetitions=${REPETITIONS:-1}
 new=$build/cli/shadowgen
-if [ -n "${KEEP:-}" ]; then
-  work=$KEEP
-  mkdir -p "$work"
-else
-  work=$(mktemp -d)
-  trap 'rm -rf "$work"' EXIT
-fi
+. "$(dirname "$0")/city_work.sh"
+work_folder
 
-"$build/bench/output_bench" --write-database="city:$faces:$work/city.db.json" >/dev/null
-python3 "$(dirname "$0")/city_sun_scene.py" "$work/city.db.json" "$work/year.json" \
-  2026-01-01T00:00 2026-12-31T23:00 60 >/dev/null
+city_sun_scene "$faces" "$work/year.json" 2026-01-01T00:00 2026-12-31T23:00 60 >/dev/null
 if [ "$days" = year ]; then
   scene=$work/year.json
 else
