@@ -122,6 +122,20 @@ class CliFolderTest : public Base {
     return run_shadowgen(args, dir_ / "run");
   }
 
+  // The bytes of what `command` writes to `file` (standard output where `file` is empty),
+  // from `database`: the file's name in the command is the placeholder "DB". Expects the
+  // command to succeed.
+  std::string output(std::vector<std::string> command, const fs::path& database,
+                     const fs::path& file = {}) const {
+    for (std::string& arg : command) {
+      if (arg == "DB") arg = database.string();
+    }
+    fs::remove(file.empty() ? dir_ / "none" : file);
+    const Outcome o = run(command);
+    EXPECT_EQ(o.code, 0) << o.err;
+    return file.empty() ? o.out : contents(file);
+  }
+
   // The files in `folder` (default: the test's folder, without its run/ folder): what the
   // command left behind.
   std::vector<std::string> files(const fs::path& folder = {}) const {

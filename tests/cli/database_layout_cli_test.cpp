@@ -28,19 +28,6 @@ class DatabaseLayoutCli : public CliFolderTest<> {
     write_file(out, database_json(read_database(database), database::Layout::kInline));
     return out;
   }
-
-  // The bytes of what `command` writes to `file` (standard output where `file` is empty),
-  // from `database`: the file's name in the command is the placeholder "DB".
-  std::string output(std::vector<std::string> command, const fs::path& database,
-                     const fs::path& file = {}) const {
-    for (std::string& arg : command) {
-      if (arg == "DB") arg = database.string();
-    }
-    fs::remove(file.empty() ? dir_ / "none" : file);
-    const Outcome o = run(command);
-    EXPECT_EQ(o.code, 0) << o.err;
-    return file.empty() ? o.out : contents(file);
-  }
 };
 
 TEST_F(DatabaseLayoutCli, EveryOutputIsTheSameFromEitherLayout) {
