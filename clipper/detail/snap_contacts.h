@@ -2,8 +2,8 @@
 
 // Contact finding for snap rounding (snap_rounding.h): given the pieces the input edges
 // are currently routed through, which pairs of them meet other than at a common endpoint,
-// and what that asks of the routes. The snapping loop (snap_rounding.cpp) owns the routes
-// and applies what is found; this is the per-pair decision, kept apart because it is the
+// and what that asks of the routes. The snapping rounds (snap_rounds.cpp) own the routes
+// and apply what is found; this is the per-pair decision, kept apart because it is the
 // geometric core of the step and reads nothing but the two pieces and their segments.
 //
 // For each close pair of pieces, in this order (the first that applies decides):
