@@ -66,7 +66,7 @@ std::vector<FormatOutput> export_outputs(const ExportArgs& args) {
   const auto gltf_as = [&](GltfForm f) { return form == f ? args.gltf : std::string(); };
   std::vector<FormatOutput> formats{
       {"OBJ file", ".obj", "--obj", args.obj, ""},
-      {"binary glTF file", ".glb", "--gltf", gltf_as(GltfForm::kBinary), ""},
+      {"binary glTF file", ".glb", "--gltf", gltf_as(GltfForm::kBinary), "", true},
       {"glTF file", ".gltf", "--gltf", gltf_as(GltfForm::kText), ""}};
   assign_outputs(args.outputs, formats);
   if (formats[0].path.empty() && formats[1].path.empty() && formats[2].path.empty()) {
@@ -90,7 +90,9 @@ void run_export(const ExportArgs& args) {
   if (!obj.empty()) {
     if (obj == "-") throw UsageError("--obj -: an OBJ and its MTL are two files, not one stream");
     const std::filesystem::path obj_path = obj;
-    mtl_path = obj_path.parent_path() / (obj_name(obj_path.stem().string()) + ".mtl");
+    // A gzip OBJ (x.obj.gz) names a plain x.mtl: `gzip -d x.obj.gz` gives the pair.
+    const std::filesystem::path plain = gzip_named(obj_path) ? obj_path.stem() : obj_path;
+    mtl_path = obj_path.parent_path() / (obj_name(plain.stem().string()) + ".mtl");
     if (mtl_path == obj_path || obj_path.filename().empty()) {
       throw InputError(obj, "",
                        "not a usable OBJ file name: the MTL file goes next to it, named with "

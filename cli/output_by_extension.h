@@ -5,6 +5,8 @@
 // and may take -o once per format; its older options that name one format's file
 // (--svg, --png, --obj) keep naming it. -o and such an option for the same format is a
 // usage error naming both, as are two -o for one format and an extension of no format.
+// A name ending in ".gz" after the extension (`-o plan.svg.gz`) is that format written as
+// gzip (shadowgen/output/atomic_file.h), but for a binary format, which it refuses.
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -19,6 +21,7 @@ struct FormatOutput {
   std::string option;     // the older option naming this format's file: "--svg"
   std::string path;       // the file; empty when none is named
   std::string named_by;   // the option that named it ("-o" or `option`), for messages
+  bool binary = false;    // gzip gains nothing: a name ending in ".gz" is refused
 };
 
 // -o/--output on `command` for a subcommand writing several formats: given once per
@@ -31,6 +34,7 @@ CLI::Option* add_outputs_option(CLI::App& command, std::vector<std::string>& out
 // `named_by` of every format named. Throws UsageError:
 //   "-o x.jpg: the extension tells what to write: .svg (SVG picture) or .png (PNG picture)"
 //   "-o x.svg and --svg y.svg both name the SVG picture; give one"
+//   "-o x.png.gz: a PNG picture is compressed already; it is not written as gzip"
 void assign_outputs(const std::vector<std::string>& outputs, std::vector<FormatOutput>& formats);
 
 }  // namespace shadowgen::cli

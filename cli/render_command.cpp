@@ -167,7 +167,7 @@ std::string png_picture(const RenderArgs& args, const ShadowedScene& shadowed, c
 RenderArgs with_outputs(const RenderArgs& given) {
   RenderArgs args = given;
   std::vector<FormatOutput> formats{{"SVG picture", ".svg", "--svg", args.svg, ""},
-                                    {"PNG picture", ".png", "--png", args.png, ""}};
+                                    {"PNG picture", ".png", "--png", args.png, "", true}};
   assign_outputs(args.outputs, formats);
   args.svg = formats[0].path;
   args.svg_option = formats[0].named_by;

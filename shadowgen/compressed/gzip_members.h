@@ -27,8 +27,8 @@ namespace shadowgen::compressed {
 // 18 bytes), while a 100 MB text still makes 25 members for the threads to share.
 inline constexpr std::size_t kGzipMemberBytes = std::size_t{4} << 20;
 
-// zlib's levels: 1 fastest, 9 smallest. Databases are written at kDatabaseGzipLevel
-// (shadowgen/output/compressed_output.h says why).
+// zlib's levels: 1 fastest, 9 smallest. Files named *.gz are written at kGzipOutputLevel
+// (shadowgen/output/atomic_file.h says why).
 inline constexpr int kFastestGzipLevel = 1;
 inline constexpr int kSmallestGzipLevel = 9;
 

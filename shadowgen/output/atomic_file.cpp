@@ -18,6 +18,7 @@
 
 #include "detail/output_destination.h"
 #include "detail/temporary_files.h"
+#include "shadowgen/compressed/gzip_members.h"
 
 namespace shadowgen {
 namespace {
@@ -256,19 +257,37 @@ std::unique_ptr<Output> open_output(Destination destination) {
   return std::make_unique<TemporaryFile>(destination);
 }
 
+// Hands what `produce` makes to `output`, compressed where `path` is gzip_named.
+void produce_into(Output& output, const fs::path& path,
+                  const std::function<void(const OutputSink&)>& produce) {
+  if (!gzip_named(path)) {
+    produce([&output](std::string_view data) { output.write(data); });
+    return;
+  }
+  compressed::GzipMembers members([&output](std::string_view data) { output.write(data); },
+                                  kGzipOutputLevel);
+  produce([&members](std::string_view text) { members.write(text); });
+  members.finish();
+}
+
+void write_into(Output& output, const fs::path& path, std::string_view content) {
+  produce_into(output, path, [content](const OutputSink& sink) { sink(content); });
+}
+
 }  // namespace
+
+bool gzip_named(const std::filesystem::path& path) { return path.extension() == ".gz"; }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
   const std::unique_ptr<Output> output = open_output(resolve(path));
-  output->write(content);
+  write_into(*output, path, content);
   output->commit();
 }
 
 void stream_file_atomically(const std::filesystem::path& path,
                             const std::function<void(const OutputSink&)>& produce) {
   const std::unique_ptr<Output> output = open_output(resolve(path));
-  Output& target = *output;
-  produce([&target](std::string_view data) { target.write(data); });
+  produce_into(*output, path, produce);
   output->commit();
 }
 
@@ -291,7 +310,7 @@ void write_files_atomically(const std::vector<OutputText>& files) {
     const Kind kind = destinations[i].kind;
     if (kind != Kind::kNewFile && kind != Kind::kReplace) continue;
     prepared[i] = std::make_unique<TemporaryFile>(destinations[i]);
-    prepared[i]->write(files[i].content);
+    write_into(*prepared[i], files[i].path, files[i].content);
     prepared[i]->finish();
   }
   // Devices and standard output cannot be prepared: they take the text at commit time.
@@ -300,7 +319,7 @@ void write_files_atomically(const std::vector<OutputText>& files) {
       prepared[i]->commit();
     } else {
       const std::unique_ptr<Output> output = open_output(destinations[i]);
-      output->write(files[i].content);
+      write_into(*output, files[i].path, files[i].content);
       output->commit();
     }
   }

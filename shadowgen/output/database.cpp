@@ -18,7 +18,6 @@
 #include "shadowgen/json/document.h"
 #include "shadowgen/json/json_writer.h"
 #include "shadowgen/output/atomic_file.h"
-#include "shadowgen/output/compressed_output.h"
 
 namespace shadowgen {
 namespace {
@@ -334,7 +333,7 @@ std::string database_json(const ShadowedScene& shadowed, database::Layout layout
 void write_database(const ShadowedScene& shadowed, const std::filesystem::path& path,
                     database::Layout layout) {
   // Streamed: a sun path's sums can make hundreds of megabytes of text.
-  stream_file_compressed_as_named(path, [&shadowed, layout](const OutputSink& sink) {
+  stream_file_atomically(path, [&shadowed, layout](const OutputSink& sink) {
     JsonWriter out(sink);
     write_database_to(shadowed, out, layout);
     out.finish();
