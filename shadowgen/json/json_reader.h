@@ -204,8 +204,9 @@ class JsonDocument {
   using ElementTaker = std::function<bool(const JsonValue& root, const JsonValue& element)>;
   JsonDocument(std::string_view text, JsonSource source, std::string_view streamed_key,
                const ElementTaker& take);
-  // The same from a file, read as it is parsed (the stream must seek: it is looked
-  // through for a NUL byte first): the text is never held whole.
+  // The same from a file, read once as it is parsed, NUL bytes looked for on the way (the
+  // stream must rewind to its start: it is read again only to place a NUL or an error):
+  // the text is never held whole.
   JsonDocument(std::istream& in, JsonSource source, std::string_view streamed_key,
                const ElementTaker& take);
 

@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "detail/nul_watching_input.h"
+
 namespace shadowgen::json::detail {
 namespace {
 
@@ -294,13 +296,22 @@ ParseOutcome parse_json_at_depth(std::string_view text, Json& root, std::size_t 
 }
 
 ParseOutcome parse_json(std::istream& in, Json& root, const ElementStream* stream) {
-  // As for text: the parser would take a NUL byte for the end.
-  if (std::optional<std::string> nul = nul_problem(in)) {
-    root = Json();
-    return {std::move(nul)};
-  }
+  // As for text: the parser would take a NUL byte for the end. It is looked for as the
+  // parse reads, in one pass (a gzip file is inflated once): a parse that reaches the end
+  // without one has seen every byte. Only where the parse stops early or a NUL came by is
+  // the stream read again from its start, to say where the first NUL is, if anywhere: as
+  // before any parse, the NUL is the problem wherever it stands.
+  in.clear();
+  in.seekg(0);
+  NulWatchingInput watched(in);
   DomBuilder builder([&in](std::size_t offset) { return line_column(in, offset); }, root, stream);
-  Json::sax_parse(in, &builder);
+  const bool parsed = Json::sax_parse(watched, &builder);
+  if (!parsed || builder.problem || watched.saw_nul()) {
+    if (std::optional<std::string> nul = nul_problem(in)) {
+      root = Json();
+      return {std::move(nul)};
+    }
+  }
   ParseOutcome outcome;
   outcome.problem = std::move(builder.problem);
   if (outcome.problem) root = Json();

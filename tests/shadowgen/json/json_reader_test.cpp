@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <istream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -144,6 +146,77 @@ TEST(JsonReader, ANulByteAnywhereIsRefusedWhereItIs) {
   EXPECT_EQ(parse_error("{\"a\": \"x\0y\"}"s),
             "in.json: line 1, column 9: invalid JSON: a NUL byte (JSON text has none; is this a "
             "binary file?)");
+}
+
+// A text handed out 100 bytes at a time, counting the bytes handed out; it rewinds to its
+// start, as a file (or a gzip file inflated as it is read) does.
+class CountingText : public std::streambuf {
+ public:
+  explicit CountingText(std::string text) : text_(std::move(text)) {}
+  std::size_t handed_out = 0;
+
+ protected:
+  int_type underflow() override {
+    if (at_ >= text_.size()) return traits_type::eof();
+    const std::size_t n = std::min<std::size_t>(100, text_.size() - at_);
+    setg(text_.data() + at_, text_.data() + at_, text_.data() + at_ + n);
+    at_ += n;
+    handed_out += n;
+    return traits_type::to_int_type(*gptr());
+  }
+  pos_type seekpos(pos_type at, std::ios_base::openmode) override {
+    if (at != pos_type(0)) return pos_type(off_type(-1));
+    at_ = 0;
+    setg(nullptr, nullptr, nullptr);
+    return at;
+  }
+  pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode) override {
+    if (off == 0 && dir == std::ios_base::beg) return seekpos(0, std::ios_base::in);
+    return pos_type(off_type(-1));
+  }
+
+ private:
+  std::string text_;
+  std::size_t at_ = 0;
+};
+
+// The message of what a streamed parse of `text` throws, or "(no error)".
+std::string streamed_parse_error(const std::string& text) {
+  CountingText source(text);
+  std::istream in(&source);
+  return error_of(
+      [&] { JsonDocument(in, {"in.json"}, "faces", [](auto&, auto&) { return true; }); });
+}
+
+// A file is read once as it is parsed (a gzip database inflated once), not once to look for
+// NUL bytes and again to parse.
+TEST(JsonReader, AStreamedFileIsReadOnce) {
+  std::string text = "{\"format\": \"x\", \"faces\": [";
+  for (int i = 0; i < 1000; ++i) text += (i ? ", " : "") + std::string("{\"id\": \"f\"}");
+  text += "]}\n";
+  CountingText source(text);
+  std::istream in(&source);
+  int faces = 0;
+  const JsonDocument document(in, {"in.json"}, "faces", [&faces](auto&, auto&) {
+    ++faces;
+    return true;
+  });
+  EXPECT_EQ(faces, 1000);
+  EXPECT_EQ(source.handed_out, text.size());
+}
+
+TEST(JsonReader, ANulByteInAStreamedFileIsRefusedWhereItIs) {
+  using namespace std::string_literals;
+  const std::string nul = ": invalid JSON: a NUL byte (JSON text has none; is this a binary file?)";
+  EXPECT_EQ(streamed_parse_error("{\"a\": 1}\n\0garbage"s), "in.json: line 2, column 1" + nul);
+  EXPECT_EQ(streamed_parse_error("{\"a\": 1}\0"s), "in.json: line 1, column 9" + nul);
+  EXPECT_EQ(streamed_parse_error("{\"a\": \"x\0y\"}"s), "in.json: line 1, column 9" + nul);
+  // Where the syntax fails before it, the NUL is still what is said.
+  EXPECT_EQ(streamed_parse_error("{\"a\": ]" + std::string(300, ' ') + "\0"s),
+            "in.json: line 1, column 308" + nul);
+  EXPECT_EQ(streamed_parse_error("{\"a\": ]}"),
+            "in.json: line 1, column 7: invalid JSON: syntax error while parsing value - "
+            "unexpected ']'; expected '[', '{', or a literal");
 }
 
 TEST(JsonReader, SyntaxErrorsAndOverflowsAreLocated) {
