@@ -4,8 +4,8 @@
 #
 # Usage: SCENE=city.json SHARDS=16 examples/shards/submit-slurm.sh
 #
-# Environment: SCENE, SHARDS, OUT, DATABASE and SHADOWGEN as slurm.sh and slurm-merge.sh
-# read them (exported here, so that both jobs see the same), and
+# Environment: SCENE, SHARDS, OUT, SHARD_FORMAT, DATABASE and SHADOWGEN as slurm.sh and
+# slurm-merge.sh read them (exported here, so that both jobs see the same), and
 #   CPUS_PER_TASK  CPUs of each shard and of the merge, their --threads (default: 1)
 #   MEM_PER_TASK   memory of each shard, as sbatch --mem takes it: a whole number of
 #                  megabytes, or with the suffix K, M, G or T (default: 1G)
@@ -37,6 +37,7 @@ here=$(cd -- "$(dirname -- "$0")" && pwd)
 export SCENE=${SCENE:-scene.json}
 export SHARDS=${SHARDS:-8}
 export OUT=${OUT:-shards}
+export SHARD_FORMAT=${SHARD_FORMAT:-json.gz}
 export SHADOWGEN=${SHADOWGEN:-shadowgen}
 if [[ -n ${DATABASE:-} ]]; then export DATABASE; fi
 cpus=${CPUS_PER_TASK:-1}
@@ -50,6 +51,8 @@ fail() {
   exit 1
 }
 
+[[ $SHARD_FORMAT == json || $SHARD_FORMAT == json.gz ]] ||
+  fail "SHARD_FORMAT=$SHARD_FORMAT: expected json.gz (gzip) or json (plain text)"
 [[ $cpus =~ ^[1-9][0-9]*$ ]] || fail "CPUS_PER_TASK=$cpus: expected a positive whole number"
 # Megabytes of a memory size as sbatch --mem reads it (no suffix: megabytes), rounded up.
 megabytes() {

@@ -131,6 +131,8 @@ if ((cpus >= 2)); then
 else
   echo "not checked: a partition's limit that only sbatch --test-only sees (the node has 1 CPU)"
 fi
+expect_refused "submit-slurm.sh: SHARD_FORMAT=xml: expected json.gz (gzip) or json (plain text)" \
+  SHARD_FORMAT=xml
 expect_refused "submit-slurm.sh: CPUS_PER_TASK=0: expected a positive whole number" CPUS_PER_TASK=0
 expect_refused "submit-slurm.sh: MEM_PER_TASK=2GB: expected a memory size such as 500M or 2G (sbatch --mem)" \
   MEM_PER_TASK=2GB
@@ -167,4 +169,12 @@ if cmp -- one-run.json street.shadowed.json; then
 else
   fail "the database merged by Slurm differs from one generate's"
 fi
+# The shards as the recipe writes them by default: gzip, each with gzip's magic bytes.
+for k in 1 2 3 4; do
+  magic=$(od -An -tx1 -N2 -- "shards/shard-$k.json.gz" 2>/dev/null | tr -d ' ' || true)
+  if [[ $magic != 1f8b ]]; then
+    fail "shards/shard-$k.json.gz is not a gzip file (first bytes '$magic'): $(ls shards | paste -sd ' ')"
+  fi
+done
+[[ $failed == 1 ]] || echo "ok: the shards were written as gzip (shards/shard-K.json.gz) and merged"
 exit "$failed"
