@@ -323,7 +323,7 @@ void define_module(py::module_& module) {
   module.def(
       "sky_report",
       [](const py::object& path, int subdivisions, bool csv_safe, int threads,
-         const py::object& lights, bool strict) {
+         const py::object& lights, bool strict, bool energyplus, bool energyplus_fine) {
         Warnings warnings;
         api::LoadSettings settings;
         settings.read = read_settings(strict, lights, warnings);
@@ -332,16 +332,21 @@ void define_module(py::module_& module) {
         std::string text;
         {
           const py::gil_scoped_release unlocked;
-          text = api::sky_report(file, settings, {subdivisions, csv_safe});
+          text = api::sky_report(file, settings,
+                                 {subdivisions, csv_safe, energyplus, energyplus_fine});
         }
         warnings.issue();
         return text;
       },
       "path"_a, py::kw_only(), "subdivisions"_a = api::SkyReportSettings{}.subdivisions,
       "csv_safe"_a = false, "threads"_a = 0, "lights"_a = py::none(), "strict"_a = false,
+      "energyplus"_a = false, "energyplus_fine"_a = false,
       "`shadowgen report --format sky` of the scene (or database) at `path`, byte for byte: "
       "each face's sky view factor with exact obstruction, the sky's patches (Reinhart MF:N, "
-      "1: Tregenza's 145) generated as lights.");
+      "1: Tregenza's 145) generated as lights. With `energyplus`, `--format energyplus-sky`'s "
+      "CSV instead: EnergyPlus's diffuse sky shading ratios per surface from its 144 sky "
+      "directions, and with `energyplus_fine` the ratio over the `subdivisions` patches beside "
+      "them (the command's `--sky`).");
   module.def(
       "radiation_report",
       [](const py::object& path, const py::object& weather, const py::object& albedo,

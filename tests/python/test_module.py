@@ -197,3 +197,13 @@ def test_the_radiation_report_is_the_commands_byte_for_byte(tmp_path):
 def test_the_sky_report_is_the_commands_byte_for_byte(scenes, subdivisions, sky):
     assert shadowgen.sky_report(scenes / "courtyard.json", subdivisions=subdivisions) == \
         run_shadowgen("report", scenes / "courtyard.json", "--format", "sky", "--sky", sky)
+
+
+@pytest.mark.parametrize("fine,sky", [(False, []), (True, ["--sky", "tregenza"])])
+def test_the_energyplus_sky_report_is_the_commands_byte_for_byte(scenes, fine, sky):
+    text = shadowgen.sky_report(scenes / "courtyard.json", subdivisions=1, energyplus=True,
+                                energyplus_fine=fine)
+    assert text == run_shadowgen("report", scenes / "courtyard.json", "--format",
+                                 "energyplus-sky", *sky)
+    rows = csv_tables(text)[0]
+    assert rows and all(0 <= float(row["dif_shdg_ratio_iso_sky"]) <= 1 for row in rows)
