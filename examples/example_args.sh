@@ -16,7 +16,8 @@
 #   sun_hours_maps  the scenes whose sun path gets a sun-hours map, and the path's id
 #   sun_hours_plans those of them whose map is also drawn as a plan, and its centre
 #   radiation_maps  the scenes whose sun path gets a radiation map, and the path's id;
-#   radiation_weather  the weather file of each, relative to this folder
+#   radiation_weather  the weather file of each, relative to the folder of weather files
+#                   the build makes (BUILD/examples/weather: the target example_weather)
 # and gives scene_file NAME (the scene's file) and databases_folder FOLDER (FOLDER made,
 # or where FOLDER is empty a temporary folder removed when the script ends). A usage
 # mistake prints the usage line and exits 2; a missing executable or scene exits 1.
@@ -29,10 +30,10 @@ declare -A sun_hours_maps=([garden]=march21 [roof]=dec21 [district]=march21)
 # the middle of the scene's box.
 declare -A sun_hours_plans=([garden]=5,9,0 [roof]=5,2.5,0)
 # The scenes whose sun path also gets a radiation map (render --radiation), and the weather
-# file it reads, relative to this folder: a synthetic clear sky at the scene's site
-# (weather/clear_sky_epw.py).
+# file it reads, in the folder the build writes them to: a synthetic clear sky at the
+# scene's site (weather/clear_sky_epw.py, run by the target example_weather).
 declare -A radiation_maps=([garden]=march21)
-declare -A radiation_weather=([garden]=weather/greenwich-clear-sky.epw)
+declare -A radiation_weather=([garden]=greenwich-clear-sky.epw)
 
 example_usage() {
   local line="usage: $0 SHADOWGEN"

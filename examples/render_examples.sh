@@ -8,12 +8,15 @@
 # (tests/cli/examples_cli_test.cpp) runs it into a temporary folder and compares the bytes
 # with the pictures checked in.
 #
-#   examples/render_examples.sh SHADOWGEN [--out FOLDER] [--databases FOLDER] [NAME ...]
+#   examples/render_examples.sh SHADOWGEN [--out FOLDER] [--databases FOLDER]
+#                               [--weather FOLDER] [NAME ...]
 #
 # SHADOWGEN is the built executable (e.g. build/release/cli/shadowgen). NAME is a scene's
 # name (scenes/NAME.json), all of whose pictures are made; without any, every scene's. The
 # pictures go to --out (default: examples/, beside this script); the databases to
-# --databases when given (kept), else to a temporary folder (removed at the end). Usually
+# --databases when given (kept), else to a temporary folder (removed at the end). A
+# radiation map reads its weather file from --weather, the folder the build writes it to
+# (BUILD/examples/weather, the target example_weather); a scene with one needs it. Usually
 # run through
 #
 #   cmake --build --preset release --target example_pictures
@@ -21,10 +24,21 @@
 # The command line is read by example_args.sh, as the other example scripts' are.
 set -euo pipefail
 
-example_options=(--out=FOLDER --databases=FOLDER)
+example_options=(--out=FOLDER --databases=FOLDER --weather=FOLDER)
 example_required=()
 source "$(dirname "${BASH_SOURCE[0]}")/example_args.sh" "$@"
 pictures=${option_values[--out]:-$examples}
+
+weather=${option_values[--weather]:-}
+for name in "${names[@]}"; do
+  file=${radiation_weather[$name]:-}
+  if [[ -n $file && ! -f $weather/$file ]]; then
+    echo "$0: the radiation map of $name reads $file: give --weather FOLDER, the folder the" \
+      "build writes it to (cmake --build --preset release --target example_weather:" \
+      "build/release/examples/weather)" >&2
+    exit 2
+  fi
+done
 
 mkdir -p "$pictures"
 databases_folder "${option_values[--databases]:-}"
@@ -47,7 +61,7 @@ for name in "${names[@]}"; do
   fi
   if [[ -n ${radiation_maps[$name]:-} ]]; then
     "$shadowgen" render "$database" --view main --radiation "${radiation_maps[$name]}" \
-      --weather "$examples/${radiation_weather[$name]}" --svg "$pictures/$name-radiation.svg"
+      --weather "$weather/${radiation_weather[$name]}" --svg "$pictures/$name-radiation.svg"
     echo "$name: $pictures/$name-radiation.svg"
   fi
 done

@@ -24,16 +24,18 @@ The albedo (field 33) is 0.2 every hour; the other weather fields are fixed, pla
 values (10 C, 80 % humidity, calm), which shadowgen does not read.
 
   examples/weather/clear_sky_epw.py [--latitude 51.4779 --longitude -0.0015
-      --elevation 45 --time-zone 0 --city Greenwich --year 2026] > FILE.epw
+      --elevation 45 --time-zone 0 --city Greenwich --year 2026] [--output FILE.epw]
 
-The defaults are the garden example's site (examples/scenes/garden.json);
-examples/weather/greenwich-clear-sky.epw is this script's output with them, and the test
-ExampleScript.TheClearSkyWeatherFileIsTheScriptsOutput (tests/cli/examples_cli_test.cpp)
-checks that it regenerates that file byte for byte.
+(without --output, to standard output). The defaults are the garden example's site
+(examples/scenes/garden.json): the build writes its output with them to
+BUILD/examples/weather/greenwich-clear-sky.epw (the target example_weather,
+examples/CMakeLists.txt), the weather of the garden's radiation map, so that no file of
+a year's hours is kept in the repository.
 """
 
 import argparse
 import math
+import os
 import sys
 
 DAYS_IN_MONTH = [31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31]
@@ -103,8 +105,18 @@ def main():
     parser.add_argument("--time-zone", type=float, default=0.0, help="hours from GMT")
     parser.add_argument("--city", default="Greenwich")
     parser.add_argument("--year", type=int, default=2026)
+    parser.add_argument("--output", help="the file to write (default: standard output)")
     args = parser.parse_args()
-    sys.stdout.write("".join(line + "\n" for line in epw_lines(args)))
+    text = "".join(line + "\n" for line in epw_lines(args))
+    if args.output is None:
+        sys.stdout.write(text)
+        return
+    # Written beside the file and renamed over it: a build stopped midway leaves no
+    # half-written file that make would take for up to date.
+    partial = args.output + ".partial"
+    with open(partial, "w", encoding="ascii", newline="\n") as out:
+        out.write(text)
+    os.replace(partial, args.output)
 
 
 if __name__ == "__main__":
