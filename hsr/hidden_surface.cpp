@@ -11,7 +11,9 @@
 #include "clipper/clip.h"
 #include "clipper/merge.h"
 #include "detail/area_sort.h"
+#include "hsr/concatenated.h"
 #include "hsr/image_regions.h"
+#include "hsr/index_groups.h"
 #include "hsr/parallel.h"
 
 namespace shadowgen::hsr {
@@ -24,31 +26,24 @@ using detail::Piece;
 using detail::within_rectangle;
 
 // Fragments of one parent that share edges joined: tiles of a wide polygon, pieces cut at
-// region sides, pieces of one polygon that the templates left side by side. Parents are
-// merged in parallel, in order.
-std::vector<Fragment> merge_by_parent(std::vector<Fragment> fragments) {
-  std::stable_sort(fragments.begin(), fragments.end(),
-                   [](const Fragment& a, const Fragment& b) { return a.parent < b.parent; });
-  std::vector<std::size_t> starts;
-  for (std::size_t i = 0; i < fragments.size(); ++i) {
-    if (i == 0 || fragments[i].parent != fragments[i - 1].parent) starts.push_back(i);
-  }
-  starts.push_back(fragments.size());
-  std::vector<PolygonSet2> merged(starts.size() - 1);
-  for_each_in_parallel(merged.size(), [&](std::size_t g) {
+// region sides, pieces of one polygon that the templates left side by side. Parents (each
+// below `parents`) are grouped by a counting sort, merged in parallel, and come out in
+// order, each parent's fragments in the order they came.
+std::vector<Fragment> merge_by_parent(std::vector<Fragment> fragments, std::size_t parents) {
+  const IndexGroups by_parent = index_groups(
+      fragments.size(), parents, [&fragments](std::size_t i) { return fragments[i].parent; });
+  std::vector<std::vector<Fragment>> merged(parents);
+  for_each_in_parallel(parents, [&](std::size_t parent) {
+    if (by_parent.first(parent) == by_parent.last(parent)) return;
     PolygonSet2 group;
-    for (std::size_t i = starts[g]; i < starts[g + 1]; ++i) {
-      group.push_back(std::move(fragments[i].shape));
+    for (std::size_t j = by_parent.first(parent); j < by_parent.last(parent); ++j) {
+      group.push_back(std::move(fragments[by_parent.order[j]].shape));
     }
-    const std::size_t parent = fragments[starts[g]].parent;
-    merged[g] = clip_of(parent, [&] { return clipper::merge_adjacent(group); });
+    for (PolygonWithHoles2& p : clip_of(parent, [&] { return clipper::merge_adjacent(group); })) {
+      merged[parent].push_back({parent, std::move(p)});
+    }
   });
-  std::vector<Fragment> out;
-  for (std::size_t g = 0; g < merged.size(); ++g) {
-    for (PolygonWithHoles2& p : merged[g])
-      out.push_back({fragments[starts[g]].parent, std::move(p)});
-  }
-  return out;
+  return concatenated(std::move(merged));
 }
 
 // The pieces each region settles: whole where a piece's box lies in the region, else
@@ -127,16 +122,14 @@ std::vector<Fragment> sort_regions(std::vector<std::vector<Piece>> by_region,
   for (const std::exception_ptr& failure : failures) {
     if (failure) std::rethrow_exception(failure);
   }
-  std::vector<Fragment> fragments;
-  for (std::size_t r = 0; r < found.size(); ++r) {
-    stats.templates += region_stats[r].templates;
-    stats.clips += region_stats[r].clips;
-    stats.depth_errors += region_stats[r].depth_errors;
-    stats.depth_splits += region_stats[r].depth_splits;
-    stats.cycle_breaks += region_stats[r].cycle_breaks;
-    for (Fragment& f : found[r]) fragments.push_back(std::move(f));
+  for (const HsrStats& region : region_stats) {
+    stats.templates += region.templates;
+    stats.clips += region.clips;
+    stats.depth_errors += region.depth_errors;
+    stats.depth_splits += region.depth_splits;
+    stats.cycle_breaks += region.cycle_breaks;
   }
-  return fragments;
+  return concatenated(std::move(found));
 }
 
 }  // namespace
@@ -161,7 +154,7 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons,
   result.nearness.resize(polygons.size());
   std::vector<char> facing(polygons.size(), 0);
   // Each polygon's nearness and image, in parallel; the pieces then in input order.
-  std::vector<PolygonSet2> images(polygons.size());
+  std::vector<std::vector<Piece>> images(polygons.size());
   std::vector<char> edge_on(polygons.size(), 0);
   for_each_in_parallel(polygons.size(), [&](std::size_t i) {
     // Relative to the eye: far from the origin, the order of two faces meeting at an edge
@@ -176,9 +169,11 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons,
     result.nearness[i] = *nearness;
     facing[i] = view.is_perspective() ? view.offset_from_eye(polygons[i].outer, normal) < 0.0
                                       : glm::dot(normal, view.forward()) < 0.0;
-    images[i] = clip_of(i, [&] { return project_polygon(polygons[i], view, planes[i]); });
+    for (PolygonWithHoles2& p :
+         clip_of(i, [&] { return project_polygon(polygons[i], view, planes[i]); })) {
+      images[i].push_back({std::move(p), i});
+    }
   });
-  std::vector<Piece> pieces;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     if (edge_on[i]) {
       ++stats.edge_on;
@@ -186,27 +181,38 @@ VisibleSurfaces remove_hidden_surfaces(std::span<const Polygon3> polygons,
       ++stats.outside_view;
     } else {
       ++stats.projected_polygons;
-      for (PolygonWithHoles2& p : images[i]) pieces.push_back({std::move(p), i});
     }
   }
+  std::vector<Piece> pieces = concatenated(std::move(images));
 
-  std::vector<clipper::Box2> boxes;
-  boxes.reserve(pieces.size());
-  for (const Piece& p : pieces) boxes.push_back(clipper::box_of(p.shape));
+  std::vector<clipper::Box2> boxes(pieces.size());
+  for_each_in_parallel(pieces.size(),
+                       [&](std::size_t i) { boxes[i] = clipper::box_of(pieces[i].shape); });
   const std::size_t count = options.regions ? options.regions : region_count_for(pieces.size());
   const std::vector<clipper::Box2> regions = image_regions(boxes, count);
   stats.regions = regions.size();
   result.fragments = sort_regions(split_into_regions(std::move(pieces), regions, stats),
                                   result.nearness, facing, stats);
   stats.fragments_before_merge = result.fragments.size();
-  if (options.merge_fragments) result.fragments = merge_by_parent(std::move(result.fragments));
+  if (options.merge_fragments) {
+    result.fragments = merge_by_parent(std::move(result.fragments), polygons.size());
+  }
   // Pieces that meet exactly can get vertices an ulp apart from two chains of clips, each
   // rounded on its own; the needle left between them is thinner than the rounding of its
-  // coordinates and is no visible piece (hidden_surface.h).
+  // coordinates and is no visible piece (hidden_surface.h). Which ones, in parallel.
   const std::size_t before = result.fragments.size();
-  std::erase_if(result.fragments, [](const Fragment& f) {
-    return clipper::area(f.shape) <= clipper::rounding_area_bound(f.shape.outer);
+  std::vector<char> sliver(before, 0);
+  for_each_in_parallel(before, [&](std::size_t i) {
+    const PolygonWithHoles2& shape = result.fragments[i].shape;
+    sliver[i] = clipper::area(shape) <= clipper::rounding_area_bound(shape.outer);
   });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < before; ++i) {
+    if (sliver[i]) continue;
+    if (kept != i) result.fragments[kept] = std::move(result.fragments[i]);
+    ++kept;
+  }
+  result.fragments.resize(kept);
   stats.slivers_dropped = before - result.fragments.size();
   stats.fragments = result.fragments.size();
   return result;

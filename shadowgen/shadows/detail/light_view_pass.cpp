@@ -8,6 +8,7 @@
 #include "clipper/merge.h"
 #include "coplanar_receivers.h"
 #include "hsr/hidden_surface.h"
+#include "hsr/index_groups.h"
 #include "hsr/parallel.h"
 #include "part_failure.h"
 #include "part_plane.h"
@@ -25,8 +26,17 @@ std::vector<clipper::PolygonSet2> seen_by_view(const Receivers& receivers, const
     throw PartFailure(receivers.part(e.polygon()), e.problem());
   }
   stats.fragments += visible.fragments.size();
+  // Each receiver gathers its own fragments, in their order, in parallel.
+  std::vector<hsr::Fragment>& fragments = visible.fragments;
+  const hsr::IndexGroups by_receiver =
+      hsr::index_groups(fragments.size(), receivers.size(),
+                        [&fragments](std::size_t i) { return fragments[i].parent; });
   std::vector<clipper::PolygonSet2> seen(receivers.size());
-  for (hsr::Fragment& f : visible.fragments) seen[f.parent].push_back(std::move(f.shape));
+  hsr::for_each_in_parallel(receivers.size(), [&](std::size_t k) {
+    for (std::size_t j = by_receiver.first(k); j < by_receiver.last(k); ++j) {
+      seen[k].push_back(std::move(fragments[by_receiver.order[j]].shape));
+    }
+  });
   return seen;
 }
 

@@ -7,6 +7,7 @@
 
 #include "grazing_light.h"
 #include "hsr/area.h"
+#include "hsr/index_groups.h"
 #include "hsr/parallel.h"
 #include "hsr/perimeter.h"
 #include "part_failure.h"
@@ -72,19 +73,23 @@ void relight_grazed_parts(const Receivers& receivers, std::vector<LitPart>& lit,
   const std::span<const hsr::Polygon3> polygons = receivers.polygons();
   const std::span<const hsr::Plane3> planes = receivers.planes();
   const Light& light = receivers.light();
-  for (std::size_t k = 0; k < receivers.size(); ++k) {
-    if (!receivers.lit_side(k)) continue;
+  // Receivers in parallel, each writing only its own part's list; the first that fails is
+  // the one named, as in order.
+  std::vector<char> grazed(receivers.size(), 0);
+  hsr::for_each_in_parallel(receivers.size(), [&](std::size_t k) {
+    if (!receivers.lit_side(k)) return;
     const Incidence how = incidence(polygons[k], planes[k], light);
-    if (how == Incidence::kInPlane) lit[receivers.part(k)].by_view.clear();
-    if (how != Incidence::kGrazing) continue;
-    ++stats.faces_grazed;
     const std::size_t part = receivers.part(k);
+    if (how == Incidence::kInPlane) lit[part].by_view.clear();
+    if (how != Incidence::kGrazing) return;
+    grazed[k] = 1;
     lit[part].by_view = {on_part(part, [&] {
       return lit_by_grazing_light(k, polygons, planes, receivers.coplanar(), light);
     })};
     lit[part].may_stray = false;  // worked out in the part's own plane
     lit[part].lit_reach = 0.0;
-  }
+  });
+  stats.faces_grazed += static_cast<std::size_t>(std::count(grazed.begin(), grazed.end(), 1));
 }
 
 std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::vector<LitPart> lit,
@@ -96,13 +101,20 @@ std::vector<std::vector<LitPolygon>> join_per_face(const FaceParts& parts, std::
       return joined(std::move(lit[i]), parts.polygons[i], parts.planes[i], parts.areas[i]);
     });
   });
+  // A face's parts are consecutive (flatten): each face gathers its own, in parallel.
+  const hsr::IndexGroups by_face = hsr::index_groups(
+      parts.size(), parts.face_count, [&parts](std::size_t i) { return parts.owners[i].face; });
   std::vector<std::vector<LitPolygon>> lit_by_face(parts.face_count);
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    const PartOwner& owner = parts.owners[i];
-    for (hsr::Polygon3& p : joined_parts[i]) {
-      ++stats.lit_polygons;
-      lit_by_face[owner.face].push_back({owner.part, std::move(p)});
+  hsr::for_each_in_parallel(parts.face_count, [&](std::size_t f) {
+    for (std::size_t j = by_face.first(f); j < by_face.last(f); ++j) {
+      const std::size_t i = by_face.order[j];
+      for (hsr::Polygon3& p : joined_parts[i]) {
+        lit_by_face[f].push_back({parts.owners[i].part, std::move(p)});
+      }
     }
+  });
+  for (const std::vector<hsr::Polygon3>& polygons : joined_parts) {
+    stats.lit_polygons += polygons.size();
   }
   return lit_by_face;
 }
