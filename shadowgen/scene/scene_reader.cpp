@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "detail/distinct_ids.h"
 #include "detail/group_entry.h"
 #include "detail/json_entities.h"
 #include "detail/lamp_depths.h"
@@ -59,7 +60,7 @@ class SceneParser {
     result_.scene.files.push_back(file_);
     scene::detail::WarningSummary polygon_warnings(file_, "polygons");
     if (cut != nullptr) {
-      read_polygon_texts(cut->elements, polygon_warnings);
+      read_polygon_texts(cut->elements, polygon_warnings, top.has("meshes"));
     } else {
       for_each_entry(top, "polygons",
                      [&](const JsonValue& entry) { read_polygon_entry(entry, polygon_warnings); });
@@ -157,21 +158,28 @@ class SceneParser {
     for (std::string& line : face_warnings) summary.add(id, std::move(line));
   }
 
-  // The same for every polygon from its own text, in parallel; their ids claimed in order
-  // afterwards. A clash throws, without the place: the caller reads the document again in
-  // order, which names it.
+  // The same for every polygon from its own text, in parallel; then their ids checked. A
+  // clash throws, without the place: the caller reads the document again in order, which
+  // names it. Only where meshes follow, whose ids share the polygons' namespace, are the
+  // polygons' ids claimed one by one; else they are checked distinct in parallel.
   void read_polygon_texts(std::span<const std::string_view> texts,
-                          scene::detail::WarningSummary& summary) {
+                          scene::detail::WarningSummary& summary, bool meshes_follow) {
     scene::detail::PolygonsRead read =
         scene::detail::read_polygon_texts(texts, file_, options_.strict);
     std::vector<Face>& faces = result_.scene.faces;
-    face_ids_.reserve_more(read.faces.size());
-    for (std::size_t i = 0; i < read.faces.size(); ++i) {
-      const std::string& id = read.faces[i].id;
-      if (!face_ids_.try_claim(id, polygon_owner(id))) {
-        throw InputError(file_, id, "duplicate id");
+    if (meshes_follow) {
+      face_ids_.reserve_more(read.faces.size());
+      for (const Face& face : read.faces) {
+        if (!face_ids_.try_claim(face.id, polygon_owner(face.id))) {
+          throw InputError(file_, face.id, "duplicate id");
+        }
       }
-      for (std::string& line : read.face_warnings[i]) summary.add(id, std::move(line));
+    } else if (!scene::detail::ids_distinct(read.faces)) {
+      throw InputError(file_, "", "duplicate id");
+    }
+    for (std::size_t i = 0; i < read.faces.size(); ++i) {
+      for (std::string& line : read.face_warnings[i])
+        summary.add(read.faces[i].id, std::move(line));
     }
     std::move(read.warnings.begin(), read.warnings.end(), std::back_inserter(result_.warnings));
     if (faces.empty()) {

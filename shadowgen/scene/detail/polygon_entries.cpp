@@ -7,6 +7,7 @@
 
 #include "detail/face_builder.h"
 #include "detail/json_entities.h"
+#include "hsr/concatenated.h"
 #include "hsr/parallel.h"
 #include "shadowgen/model/input_error.h"
 
@@ -56,15 +57,17 @@ PolygonsRead read_polygon_texts(std::span<const std::string_view> texts, const s
       out.faces.push_back(read_polygon_face(entry, id, file, strict, out.face_warnings.back()));
     }
   });
+  // The chunks joined in order, the faces and their warnings moved on the threads.
   PolygonsRead all;
-  all.faces.reserve(texts.size());
-  all.face_warnings.reserve(texts.size());
-  for (PolygonsRead& chunk : read) {
-    std::move(chunk.faces.begin(), chunk.faces.end(), std::back_inserter(all.faces));
-    std::move(chunk.warnings.begin(), chunk.warnings.end(), std::back_inserter(all.warnings));
-    std::move(chunk.face_warnings.begin(), chunk.face_warnings.end(),
-              std::back_inserter(all.face_warnings));
+  std::vector<std::vector<Face>> faces(chunks);
+  std::vector<std::vector<std::vector<std::string>>> face_warnings(chunks);
+  for (std::size_t c = 0; c < chunks; ++c) {
+    faces[c] = std::move(read[c].faces);
+    face_warnings[c] = std::move(read[c].face_warnings);
+    std::move(read[c].warnings.begin(), read[c].warnings.end(), std::back_inserter(all.warnings));
   }
+  all.faces = hsr::concatenated(std::move(faces));
+  all.face_warnings = hsr::concatenated(std::move(face_warnings));
   return all;
 }
 
