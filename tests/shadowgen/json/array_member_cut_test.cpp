@@ -5,6 +5,7 @@
 #include "shadowgen/json/array_member_cut.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <optional>
 #include <string>
@@ -63,13 +64,44 @@ TEST(ArrayMemberCut, CutsTheFirstOfTwoMembersOfThatName) {
   EXPECT_EQ(cut->rest, R"({"polygons": 5, "polygons": []})");
 }
 
-// A bracket inside an element that does not match is the element's parse to refuse: the
-// cut keeps the element whole up to the bracket that closes its depth.
+// A bracket inside an element that does not match, or two values between two commas, is
+// the element's parse to refuse: the cut keeps the element whole up to the bracket that
+// closes its depth, or the next comma.
 TEST(ArrayMemberCut, LeavesAnElementsOwnMistakesToItsParse) {
   const std::optional<ArrayMemberCut> cut =
-      cut_array_member(R"({"polygons": [[1}, tru, {"a" 1}]})", "polygons");
+      cut_array_member(R"({"polygons": [[1}, tru, {"a" 1}, 1 2, "a" [3]]})", "polygons");
   ASSERT_TRUE(cut.has_value());
-  EXPECT_EQ(elements_of(*cut), (std::vector<std::string>{"[1}", "tru", "{\"a\" 1}"}));
+  EXPECT_EQ(elements_of(*cut),
+            (std::vector<std::string>{"[1}", "tru", "{\"a\" 1}", "1 2", "\"a\" [3]"}));
+}
+
+// An array of many chunks' length (the scan's chunks are 256 KiB, scanned in parallel):
+// strings that hold brackets, commas and escaped quotes, and runs of backslashes, cross
+// the chunks' edges wherever they fall; the elements are the same on one thread and on
+// four, each exactly as written.
+TEST(ArrayMemberCut, CutsAnArrayOfManyChunksTheSameOnAnyThreads) {
+  std::vector<std::string> expected;
+  std::string text = R"({"format": "f", "polygons": [)";
+  for (int i = 0; i < 40000; ++i) {
+    std::string element =
+        i % 3 == 0 ? R"({"id": "p)" + std::to_string(i) + R"(", "outer": [[0, 1, 2], [3, 4, 5]]})"
+        : i % 3 == 1
+            ? R"({"id": "q)" + std::to_string(i) + R"(,]}\"[{\\", "x": ["a\"", {"b": []}]})"
+            : R"("s)" + std::string(static_cast<std::size_t>(i % 37), '\\') +
+                  std::string(static_cast<std::size_t>(i % 37), '\\') + R"(]\"")";
+    text += (i == 0 ? "" : i % 5 == 0 ? " ,\n  " : ",") + element;
+    expected.push_back(std::move(element));
+  }
+  text += R"(], "lights": []})";
+  ASSERT_GT(text.size(), std::size_t{4} << 18);
+  for (const int threads : {1, 4}) {
+    tbb::task_arena arena(threads);
+    const std::optional<ArrayMemberCut> cut =
+        arena.execute([&] { return cut_array_member(text, "polygons"); });
+    ASSERT_TRUE(cut.has_value()) << threads;
+    EXPECT_EQ(elements_of(*cut), expected) << threads;
+    EXPECT_EQ(cut->rest, R"({"format": "f", "polygons": [], "lights": []})") << threads;
+  }
 }
 
 TEST(ArrayMemberCut, RefusesWhatDoesNotScanOrHoldsNoSuchArray) {
@@ -78,7 +110,6 @@ TEST(ArrayMemberCut, RefusesWhatDoesNotScanOrHoldsNoSuchArray) {
            R"({"lights": [1]})",                  // no such member
            R"({"polygons": {"a": 1}})",           // not an array
            R"({"polygon\u0073": [1]})",           // the key written with an escape
-           R"({"polygons": [1 2]})",              // no comma between elements
            R"({"polygons": [1,, 2]})",            // an empty element
            R"({"polygons": [1, 2,]})",            // a comma before the end
            R"({"polygons": [1, 2)",               // the array not closed
