@@ -1,5 +1,6 @@
 #include "shadowgen/api/shadows.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -10,6 +11,7 @@
 #include "shadowgen/model/input_error.h"
 #include "shadowgen/model/method.h"
 #include "shadowgen/model/one_line.h"
+#include "shadowgen/model/parallel_release.h"
 #include "shadowgen/output/report.h"
 #include "shadowgen/output/sun_hours_report.h"
 #include "shadowgen/pipeline/load_shadowed.h"
@@ -158,7 +160,18 @@ const char* version() { return SHADOWGEN_VERSION; }
 namespace detail {
 
 Shadows shadows_handle(ShadowedScene shadowed, unsigned threads) {
-  auto owned = std::make_shared<const ShadowedScene>(std::move(shadowed));
+  // Freed on the threads it was made with, face by face (model/parallel_release.h): where
+  // the arena cannot be had, the destructor frees it all on the calling thread.
+  std::shared_ptr<const ShadowedScene> owned(
+      new ShadowedScene(std::move(shadowed)), [threads](const ShadowedScene* held) {
+        auto* owned_scene = const_cast<ShadowedScene*>(held);  // made non-const just above
+        try {
+          tbb::task_arena arena = arena_of(threads);
+          arena.execute([owned_scene] { release_faces_in_parallel(*owned_scene); });
+        } catch (...) {
+        }
+        delete owned_scene;
+      });
   return Shadows(std::make_shared<const Shadows::Impl>(Shadows::Impl{std::move(owned), threads}));
 }
 

@@ -15,11 +15,15 @@
 
 namespace shadowgen::api::detail {
 
+// An arena of `threads` threads (GenerateSettings::threads; 0: every hardware thread).
+inline tbb::task_arena arena_of(unsigned threads) {
+  return tbb::task_arena(threads != 0 ? static_cast<int>(threads)
+                                      : tbb::info::default_concurrency());
+}
+
 template <class Work>
 decltype(auto) on_threads(const Shadows& shadows, Work&& work) {
-  const unsigned threads = shadows.impl().threads;
-  tbb::task_arena arena(threads != 0 ? static_cast<int>(threads)
-                                     : tbb::info::default_concurrency());
+  tbb::task_arena arena = arena_of(shadows.impl().threads);
   return arena.execute([&]() -> decltype(auto) { return translated(std::forward<Work>(work)); });
 }
 
