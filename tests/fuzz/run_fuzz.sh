@@ -7,9 +7,11 @@
 #   tests/fuzz/run_fuzz.sh [SECONDS] [LIBFUZZER_FLAG...]      (default 60 seconds)
 #
 # SECONDS is the whole run, split evenly between the targets, which run one after the
-# other. Exits non-zero when a fuzzer finds a crash (both run all the same); the crashing
-# input is kept in build/fuzz/artifacts/, named clip-* or readers-* (the fuzzer prints it
-# as well). Extra flags go to libFuzzer, for every target, e.g. -jobs=2 or -only_ascii=1.
+# other, or side by side, each for its same share, with SHADOWGEN_FUZZ_PARALLEL=1 (a
+# core each, as on CI's two; each target's output is printed once it ends). Exits
+# non-zero when a fuzzer finds a crash (both run all the same); the crashing input is
+# kept in build/fuzz/artifacts/, named clip-* or readers-* (the fuzzer prints it as
+# well). Extra flags go to libFuzzer, for every target, e.g. -jobs=2 or -only_ascii=1.
 # Environment:
 #   SHADOWGEN_FUZZ_TARGETS="clip readers"   the targets to run, in this order;
 #   SHADOWGEN_FUZZ_SKIP=name,...            skips checks that guard a bug already reported
@@ -60,9 +62,10 @@ mkdir -p "$artifacts"
 share=$((seconds / ${#targets[@]}))
 [ "$share" -ge 1 ] || share=1
 
-status=0
-failed=()
-for target in "${targets[@]}"; do
+parallel=${SHADOWGEN_FUZZ_PARALLEL:-0}
+# Runs one target for its share; its exit status is the fuzzer's.
+run_target() {
+  local target=$1 binary corpus flags
   case $target in
     # -max_len: the clip fuzzer's input format reads at most a few hundred bytes; the
     # readers take a scene or mesh of up to 64 KiB. -timeout: seconds for one input.
@@ -75,13 +78,34 @@ for target in "${targets[@]}"; do
   esac
   echo "== run_fuzz.sh: $binary for $share s"
   cp -R "tests/fuzz/corpus/$corpus" "$work/$corpus"
-  one=0
   "$build/tests/fuzz/$binary" "$work/$corpus" \
     -max_total_time="$share" "${flags[@]}" -print_final_stats=1 \
-    -artifact_prefix="$artifacts/$target-" "$@" || one=$?
+    -artifact_prefix="$artifacts/$target-" "${@:2}"
+}
+
+status=0
+failed=()
+pids=()
+for target in "${targets[@]}"; do
+  if [ "$parallel" = 1 ]; then
+    run_target "$target" "$@" >"$work/$target.log" 2>&1 &
+    pids+=($!)
+    continue
+  fi
+  one=0
+  run_target "$target" "$@" || one=$?
   if [ "$one" -ne 0 ]; then
     status=$one
-    failed+=("$binary (status $one)")
+    failed+=("$target (status $one)")
+  fi
+done
+for i in "${!pids[@]}"; do
+  one=0
+  wait "${pids[$i]}" || one=$?
+  cat "$work/${targets[$i]}.log"
+  if [ "$one" -ne 0 ]; then
+    status=$one
+    failed+=("${targets[$i]} (status $one)")
   fi
 done
 
