@@ -103,15 +103,18 @@ std::vector<Fragment> sort_regions(std::vector<std::vector<Piece>> by_region,
                                    const std::vector<char>& facing, HsrStats& stats) {
   std::vector<std::vector<Fragment>> found(by_region.size());
   std::vector<HsrStats> region_stats(by_region.size());
-  // The regions with the most pieces first, so that the last to finish is a small one
-  // rather than one thread left with a large region while the others idle.
+  // The regions with the most pieces first, each thread taking the next one not yet
+  // taken when it is free (largest first, the classic list schedule), so that the last to
+  // finish is a small one rather than one thread left with a large region while the
+  // others idle. Each region writes only its own slots: the result does not depend on
+  // which thread sorted it.
   std::vector<std::size_t> order(by_region.size());
   for (std::size_t r = 0; r < order.size(); ++r) order[r] = r;
   std::stable_sort(order.begin(), order.end(), [&by_region](std::size_t a, std::size_t b) {
     return by_region[a].size() > by_region[b].size();
   });
   std::vector<std::exception_ptr> failures(by_region.size());
-  for_each_in_parallel(order.size(), [&](std::size_t k) {
+  for_each_taken_in_order(order.size(), [&](std::size_t k) {
     const std::size_t r = order[k];
     try {
       detail::area_sort(std::move(by_region[r]), nearness, facing, region_stats[r], found[r]);
