@@ -20,7 +20,7 @@ inline GenerateResult timed_exact_one_thread(benchmark::State& state, const Scen
   GenerateResult result;
   for (auto _ : state) {
     result = exact_one_thread(scene);
-    benchmark::DoNotOptimize(result.shadowed.lit);
+    benchmark::DoNotOptimize(result.shadowed.lit());
   }
   return result;
 }

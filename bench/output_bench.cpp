@@ -110,8 +110,8 @@ Camera corner_camera(const Scene& scene) {
 }
 
 void counters(benchmark::State& state, const ShadowedScene& shadowed) {
-  state.counters["faces"] = static_cast<double>(shadowed.scene.faces.size());
-  state.counters["lights"] = static_cast<double>(shadowed.scene.lights.size());
+  state.counters["faces"] = static_cast<double>(shadowed.scene().faces.size());
+  state.counters["lights"] = static_cast<double>(shadowed.scene().lights.size());
 }
 
 void time_export(benchmark::State& state, const ShadowedScene& shadowed,
@@ -147,7 +147,7 @@ void time_render(benchmark::State& state, const ShadowedScene& shadowed,
                  Picture (*renderer)(const ShadowedScene&, const Camera&,
                                      const RenderOptions&) = render) {
   try {
-    const Camera camera = corner_camera(shadowed.scene);
+    const Camera camera = corner_camera(shadowed.scene());
     Picture picture;
     for (auto _ : state) {
       picture = renderer(shadowed, camera, RenderOptions{});

@@ -82,7 +82,7 @@ void run(benchmark::State& state, const Scene& scene, unsigned threads = 1) {
     GenerateResult result;
     for (auto _ : state) {
       result = generate(scene, threads);
-      benchmark::DoNotOptimize(result.shadowed.lit);
+      benchmark::DoNotOptimize(result.shadowed.lit());
     }
     const LitAreas areas = checked_lit_areas(result.shadowed);
     double lit = 0.0;

@@ -108,7 +108,7 @@ Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
   Camera camera;
   if (!args.view.empty()) {
     const ViewSpec* spec = nullptr;
-    for (const ViewSpec& v : shadowed.scene.views) {
+    for (const ViewSpec& v : shadowed.scene().views) {
       if (v.id == args.view) spec = &v;
     }
     if (spec == nullptr) {
@@ -222,12 +222,12 @@ std::vector<double> radiation_per_face(const RenderArgs& args, const ShadowedSce
   progress.stage("generating the sky's patches");
   sky::SkyOptions sky_options;
   sky_options.subdivisions = args.radiation_args.sky_subdivisions;
-  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene, sky_options);
+  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene(), sky_options);
   RadiationOptions options;
   options.albedo = args.radiation_args.albedo;
   std::vector<std::string> warnings;  // after the progress line
   options.on_warning = [&warnings](const std::string& warning) { warnings.push_back(warning); };
-  std::vector<double> values(shadowed.scene.faces.size(), 0.0);
+  std::vector<double> values(shadowed.scene().faces.size(), 0.0);
   for (const RadiationRow& row : radiation_rows(shadowed, exposure, weather, options)) {
     if (row.path == path_index && row.area > 0.0)
       values[row.face] = row.total_wh() / row.area / 1000.0;

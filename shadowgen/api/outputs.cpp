@@ -59,15 +59,15 @@ std::vector<groups::FaceGroup> report_groups(const shadowgen::Scene& scene,
 Weather weather_for(const ShadowedScene& shadowed, const std::string& file,
                     const std::string& report) {
   if (!file.empty()) return weather::read_epw(file);
-  if (shadowed.scene.weather) return *shadowed.scene.weather;
-  throw shadowgen::InputError(shadowed.scene.file, "",
+  if (shadowed.scene().weather) return *shadowed.scene().weather;
+  throw shadowgen::InputError(shadowed.scene().file, "",
                               "the " + report +
                                   " report needs a weather file: a scene's \"weather\" key, or "
                                   "--weather FILE.epw");
 }
 
 std::string report_text(const ShadowedScene& shadowed, const ReportSettings& settings) {
-  const std::vector<groups::FaceGroup> groups = report_groups(shadowed.scene, settings);
+  const std::vector<groups::FaceGroup> groups = report_groups(shadowed.scene(), settings);
   const CsvIds ids = settings.csv_safe ? CsvIds::kSpreadsheetSafe : CsvIds::kExact;
   switch (settings.format) {
     case ReportFormat::kJson:
@@ -85,9 +85,9 @@ std::string report_text(const ShadowedScene& shadowed, const ReportSettings& set
       return report_table(shadowed, settings.top, groups);
     case ReportFormat::kSunHours:
     case ReportFormat::kSunHoursTable:
-      if (!shadowed.method.exact()) {
+      if (shadowed.estimate()) {
         throw shadowgen::InputError(
-            shadowed.scene.file, "",
+            shadowed.scene().file, "",
             "holds the lit areas a sampled method estimated, without the exact "
             "sun-hours regions a sun-hours report needs");
       }
@@ -129,9 +129,9 @@ sky::SkyExposure exposure_of(const shadowgen::Scene& scene, int subdivisions,
 
 // What draws lit polygons needs exact shadows.
 void require_exact(const ShadowedScene& shadowed, const std::string& what) {
-  if (shadowed.method.exact()) return;
+  if (shadowed.is_exact()) return;
   throw shadowgen::InputError(
-      shadowed.scene.file, "",
+      shadowed.scene().file, "",
       "holds the lit areas a sampled method estimated, no lit polygons " + what);
 }
 
@@ -176,7 +176,8 @@ std::string radiation_report(const std::string& path, const LoadSettings& settin
   return detail::on_threads(shadows, [&] {
     const ShadowedScene& shadowed = detail::model(shadows);
     const Weather weather = weather_for(shadowed, radiation.weather, "radiation");
-    const sky::SkyExposure exposure = exposure_of(shadowed.scene, radiation.subdivisions, settings);
+    const sky::SkyExposure exposure =
+        exposure_of(shadowed.scene(), radiation.subdivisions, settings);
     RadiationOptions options;
     options.albedo = radiation.albedo;
     options.on_warning = radiation.on_warning;
@@ -230,11 +231,11 @@ void write_svg(const Shadows& shadows, const std::string& path, const std::strin
     const ShadowedScene& shadowed = detail::model(shadows);
     require_exact(shadowed, "to draw");
     const ViewSpec* spec = nullptr;
-    for (const ViewSpec& view : shadowed.scene.views) {
+    for (const ViewSpec& view : shadowed.scene().views) {
       if (view.id == view_id) spec = &view;
     }
     if (spec == nullptr) {
-      throw shadowgen::InputError(shadowed.scene.file, "", "no view with id '" + view_id + "'");
+      throw shadowgen::InputError(shadowed.scene().file, "", "no view with id '" + view_id + "'");
     }
     RenderOptions options;
     options.width = width;

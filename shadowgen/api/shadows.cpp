@@ -70,13 +70,13 @@ PolygonData polygon_data(const hsr::Polygon3& polygon) {
 Shadows::Shadows(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
 Scene Shadows::scene() const {
-  std::shared_ptr<const shadowgen::Scene> scene(impl_->shadowed, &impl_->shadowed->scene);
+  std::shared_ptr<const shadowgen::Scene> scene(impl_->shadowed, &impl_->shadowed->scene());
   return Scene(std::make_shared<const Scene::Impl>(Scene::Impl{std::move(scene)}));
 }
 
-bool Shadows::exact() const { return detail::model(*this).method.exact(); }
+bool Shadows::exact() const { return detail::model(*this).is_exact(); }
 
-std::string Shadows::method() const { return method_label(detail::model(*this).method); }
+std::string Shadows::method() const { return method_label(detail::model(*this).method()); }
 
 std::vector<LitArea> Shadows::lit_areas() const {
   const ShadowedScene& shadowed = detail::model(*this);
@@ -84,27 +84,28 @@ std::vector<LitArea> Shadows::lit_areas() const {
   const std::vector<ReportRow> report =
       detail::on_threads(*this, [&] { return report_rows(shadowed); });
   for (const ReportRow& row : report) {
-    rows.push_back({row.face, row.light, shadowed.scene.faces[row.face].id,
-                    shadowed.scene.lights[row.light].id, row.area, row.lit_area, row.lit_fraction});
+    rows.push_back({row.face, row.light, shadowed.scene().faces[row.face].id,
+                    shadowed.scene().lights[row.light].id, row.area, row.lit_area,
+                    row.lit_fraction});
   }
   return rows;
 }
 
 std::vector<PolygonData> Shadows::lit_polygons(std::size_t face, std::size_t light) const {
   const ShadowedScene& shadowed = detail::model(*this);
-  if (face >= shadowed.scene.faces.size() || light >= shadowed.scene.lights.size()) {
+  if (face >= shadowed.scene().faces.size() || light >= shadowed.scene().lights.size()) {
     throw std::out_of_range("lit_polygons: face or light index out of range");
   }
-  if (!shadowed.method.exact() || !shadowed.lit.kept(light)) {
+  if (shadowed.estimate() || !shadowed.lit().kept(light)) {
     detail::translated([&] {
-      throw shadowgen::InputError(shadowed.scene.file, "",
-                                  "light '" + one_line(shadowed.scene.lights[light].id) +
+      throw shadowgen::InputError(shadowed.scene().file, "",
+                                  "light '" + one_line(shadowed.scene().lights[light].id) +
                                       "': no lit polygons kept (a sampled method's estimate, or "
                                       "a sun path's instant summed into sun hours)");
     });
   }
   std::vector<PolygonData> polygons;
-  for (const LitPolygon& lit : shadowed.lit.at(face, light)) {
+  for (const LitPolygon& lit : shadowed.lit().at(face, light)) {
     polygons.push_back(polygon_data(lit.polygon));
   }
   return polygons;
@@ -115,9 +116,9 @@ std::vector<SunHours> Shadows::sun_hours(const std::vector<double>& thresholds) 
     const ShadowedScene& shadowed = detail::model(*this);
     std::vector<SunHours> rows;
     for (SunHoursRow& row : sun_hours_rows(shadowed, thresholds)) {
-      rows.push_back({row.face, shadowed.scene.faces[row.face].id, shadowed.sun_paths[row.path].id,
-                      row.area, row.mean_hours, row.min_hours, row.max_hours,
-                      std::move(row.area_at_least)});
+      rows.push_back({row.face, shadowed.scene().faces[row.face].id,
+                      shadowed.sun_paths[row.path].id, row.area, row.mean_hours, row.min_hours,
+                      row.max_hours, std::move(row.area_at_least)});
     }
     return rows;
   });

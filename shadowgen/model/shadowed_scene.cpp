@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hsr/area.h"
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/keep_marked.h"
 #include "shadowgen/model/one_line.h"
 
 namespace shadowgen {
@@ -93,18 +95,83 @@ double part_lit_area(const SunPathHours& path, std::size_t face, std::size_t par
   return parts.at(part).at(k);
 }
 
-void check_lit_shape(const ShadowedScene& shadowed, std::string_view who) {
-  const Scene& scene = shadowed.scene;
-  if (shadowed.lit.size() != scene.faces.size() || shadowed.lit.lights() != scene.lights.size()) {
-    throw std::invalid_argument(
-        std::string(who) + ": lit polygons for " + std::to_string(shadowed.lit.size()) +
-        " faces and " + std::to_string(shadowed.lit.lights()) + " lights, the scene has " +
-        std::to_string(scene.faces.size()) + " and " + std::to_string(scene.lights.size()));
+ShadowedScene::ShadowedScene(Scene scene, LitTable lit)
+    : scene_(std::move(scene)), lit_(std::move(lit)) {
+  check();
+}
+
+ShadowedScene::ShadowedScene(Scene scene, LitTable lit, Estimate estimate)
+    : scene_(std::move(scene)), lit_(std::move(lit)), estimate_(std::move(estimate)) {
+  check();
+}
+
+void ShadowedScene::check() const {
+  const std::size_t faces = scene_.faces.size(), lights = scene_.lights.size();
+  if (lit_.size() != faces || lit_.lights() != lights) {
+    throw std::invalid_argument("ShadowedScene: lit polygons for " + std::to_string(lit_.size()) +
+                                " faces and " + std::to_string(lit_.lights()) +
+                                " lights, the scene has " + std::to_string(faces) + " and " +
+                                std::to_string(lights));
+  }
+  if (!estimate_) return;
+  if (estimate_->method.exact()) {
+    throw std::invalid_argument("ShadowedScene: an estimate by the exact method");
+  }
+  if (estimate_->lit_area.size() != lights) {
+    throw std::invalid_argument("ShadowedScene: estimated lit areas for " +
+                                std::to_string(estimate_->lit_area.size()) +
+                                " lights, the scene has " + std::to_string(lights));
+  }
+  for (std::size_t l = 0; l < lights; ++l) {
+    const Light& light = scene_.lights[l];
+    if (lit_.kept(l)) {
+      throw std::invalid_argument("ShadowedScene: an estimate with lit polygons for light '" +
+                                  one_line(light.id) + "'");
+    }
+    const std::size_t given = estimate_->lit_area[l].size();
+    if (given != faces && !(given == 0 && in_sun_path(light))) {
+      throw std::invalid_argument("ShadowedScene: estimated lit areas of " + std::to_string(given) +
+                                  " faces for light '" + one_line(light.id) + "', the scene has " +
+                                  std::to_string(faces));
+    }
   }
 }
 
+void ShadowedScene::add_face(Face face, const std::vector<std::optional<double>>& estimated) {
+  const std::size_t lights = scene_.lights.size();
+  if (estimate_ ? estimated.size() != lights : !estimated.empty()) {
+    throw std::invalid_argument("ShadowedScene::add_face: estimated lit areas for " +
+                                std::to_string(estimated.size()) + " lights, " +
+                                std::to_string(estimate_ ? lights : 0) + " wanted");
+  }
+  const std::size_t faces = scene_.faces.size();
+  for (std::size_t l = 0; l < estimated.size(); ++l) {
+    if (estimate_->lit_area[l].size() != (estimated[l] ? faces : 0)) {
+      throw std::invalid_argument(
+          "ShadowedScene::add_face: light '" + one_line(scene_.lights[l].id) + "' " +
+          (estimated[l] ? "has" : "lacks") + " an estimated lit area, unlike the faces before");
+    }
+  }
+  scene_.faces.push_back(std::move(face));
+  lit_.add_face();
+  for (std::size_t l = 0; l < estimated.size(); ++l) {
+    if (estimated[l]) estimate_->lit_area[l].push_back(*estimated[l]);
+  }
+  check();
+}
+
+void ShadowedScene::keep_lights(const std::vector<bool>& keep) {
+  if (keep.size() != scene_.lights.size()) {
+    throw std::invalid_argument("ShadowedScene::keep_lights: " + std::to_string(keep.size()) +
+                                " flags for " + std::to_string(scene_.lights.size()) + " lights");
+  }
+  keep_marked(scene_.lights, keep);
+  lit_.keep_lights(keep);
+  if (estimate_) keep_marked(estimate_->lit_area, keep);
+}
+
 LitAreas::LitAreas(const ShadowedScene& shadowed)
-    : shadowed_(shadowed), place_(shadowed.scene.lights.size()) {
+    : shadowed_(shadowed), place_(shadowed.scene().lights.size()) {
   for (const SunPathHours& path : shadowed.sun_paths) {
     if (path.lit_polygons_kept) continue;
     for (std::size_t k = 0; k < path.instants.size(); ++k) {
@@ -116,8 +183,10 @@ LitAreas::LitAreas(const ShadowedScene& shadowed)
 double LitAreas::operator()(std::size_t face, std::size_t light) const {
   const Place& place = place_.at(light);
   if (place.path) return place.path->lit_area.at(face).at(place.instant);
-  if (!shadowed_.method.exact()) return shadowed_.estimated_lit_area.at(light).at(face);
-  return lit_area(shadowed_.lit.at(face, light));
+  if (const std::optional<Estimate>& estimate = shadowed_.estimate()) {
+    return estimate->lit_area.at(light).at(face);
+  }
+  return lit_area(shadowed_.lit().at(face, light));
 }
 
 }  // namespace shadowgen

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -81,23 +82,90 @@ struct SunPathHours {
   std::vector<std::vector<SunHoursNode>> nodes;
 };
 
-struct ShadowedScene {
-  Scene scene;
-  // lit[face][light]: polygons with holes covering exactly the lit region; empty when
+// A sampled method's answer (docs/scene-format.md, "Methods"): lit areas alone, no lit
+// polygons, so that an estimate is never taken for the exact answer.
+struct Estimate {
+  Method method;  // a sampled one: never Method::exact()
+  // [light][face]: the estimated lit area of every face, for each light that is no
+  // instant of a sun path (in_sun_path); empty for an instant, whose lit areas are its
+  // path's (SunPathHours::lit_area).
+  std::vector<std::vector<double>> lit_area;
+};
+
+// A shadowed scene, exact or estimated. Its rules hold from construction and through every
+// change it allows, so no consumer checks them again: the lit table has one row per face of
+// the scene and one list per light; an estimate keeps no light's polygons, and has one row
+// per light, of one area per face (empty only for an instant of a sun path). Breaking a
+// rule is a caller's mistake, never bad input: std::invalid_argument, naming what does not
+// fit.
+class ShadowedScene {
+ public:
+  // No face, no light: exact.
+  ShadowedScene() = default;
+  // The exact method's result: `lit` holds the lit polygons of `scene`.
+  ShadowedScene(Scene scene, LitTable lit);
+  // A sampled method's result: `lit` keeps no light (Estimate::lit_area holds the areas).
+  ShadowedScene(Scene scene, LitTable lit, Estimate estimate);
+
+  const Scene& scene() const { return scene_; }
+  // lit()[face][light]: polygons with holes covering exactly the lit region; empty when
   // unlit. The instants of a path in sun_paths that keeps only their lit areas are lights
   // the table does not keep (see LitAreas). The polygons of one part do not overlap.
-  LitTable lit;
+  const LitTable& lit() const { return lit_; }
+  // How the lit areas were found: absent for the exact method, the lit polygons
+  // themselves; a sampled method's lit areas otherwise.
+  const std::optional<Estimate>& estimate() const { return estimate_; }
+  bool is_exact() const { return !estimate_; }
+  // The method that found the lit areas, to be named (a report's "method"): the exact one,
+  // or the estimate's.
+  Method method() const { return estimate_ ? estimate_->method : Method{}; }
+
+  // The lit polygons of (face, light), to fill: throws std::out_of_range outside the table,
+  // std::logic_error for a light the table does not keep.
+  LitTable::Polygons& lit_at(std::size_t face, std::size_t light) { return lit_.at(face, light); }
+  // Appends `face` with no lit polygon (a database is read face by face). For an
+  // estimate, `estimated` holds its lit area for every light, none for the instants of a
+  // sun path (as for the faces before it); for the exact method, nothing.
+  void add_face(Face face, const std::vector<std::optional<double>>& estimated = {});
+  // Changes the scene but its faces (the file, groups, sun paths, the lights' kinds):
+  // `edit` gets it without its faces, which it cannot change, and may change the lights but
+  // not so as to break the rules above; where it does, the lights are as they were and
+  // std::invalid_argument is thrown.
+  template <class Edit>
+  void edit_scene(const Edit& edit) {
+    std::vector<Face> faces = std::move(scene_.faces);
+    scene_.faces.clear();
+    std::vector<Light> lights = scene_.lights;
+    edit(scene_);
+    if (!scene_.faces.empty()) {
+      scene_.faces = std::move(faces);
+      scene_.lights = std::move(lights);
+      throw std::invalid_argument("ShadowedScene::edit_scene: the faces cannot change");
+    }
+    scene_.faces = std::move(faces);
+    try {
+      check();
+    } catch (const std::invalid_argument&) {
+      scene_.lights = std::move(lights);
+      throw;
+    }
+  }
+  // Keeps the lights marked in `keep` (one flag per light), in order, renumbered, with
+  // their lit polygons and estimated areas.
+  void keep_lights(const std::vector<bool>& keep);
+
   std::vector<SunPathHours> sun_paths;
   // Set in a shard of a sun-path run, which only `merge` reads: lights that are not
   // instants of a path are lit in shard 0 alone.
   std::optional<ShardPlace> shard;
-  // How the lit areas were found. A sampled method leaves `lit` without polygons (no light
-  // kept) and its sun paths without regions: it has areas alone, estimated_lit_area's for
-  // the lights that are no instant of a path, the paths' lit_area for their instants.
-  Method method;
-  // [light][face]: a sampled method's lit area of every face, for each light that is no
-  // instant of a sun path (empty for those); empty for the exact method.
-  std::vector<std::vector<double>> estimated_lit_area;
+
+ private:
+  // Throws std::invalid_argument where a rule above does not hold.
+  void check() const;
+
+  Scene scene_;
+  LitTable lit_;
+  std::optional<Estimate> estimate_;
 };
 
 // The sun path whose id is `id`. Throws InputError naming `file` where there is none,
@@ -115,13 +183,9 @@ void require_sun_path(const Scene& scene, std::string_view id, const std::string
 // (SunPathHours::regions_kept false), for what needs its sun-hours regions (`what`).
 void require_regions(const SunPathHours& path, const std::string& file, std::string_view what);
 
-// Throws std::invalid_argument, the message starting with `who`, where the lit table is
-// not one row per face of one list per light: a caller's mistake, never bad input.
-void check_lit_shape(const ShadowedScene& shadowed, std::string_view who);
-
 // Lit area of every (face, light): from its lit polygons or, for an instant of a sun path
 // that keeps only its instants' lit areas, from the path's, or a sampled method's estimate
-// (ShadowedScene::estimated_lit_area).
+// (Estimate::lit_area).
 class LitAreas {
  public:
   explicit LitAreas(const ShadowedScene& shadowed);

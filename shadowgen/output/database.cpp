@@ -120,8 +120,8 @@ class LitWriter {
     const auto add = [&](std::span<const LitPolygon> lit) {
       for (const LitPolygon& p : lit) loops_.push_back(table.add(p.polygon));
     };
-    if (shadowed.method.exact()) {
-      for (std::size_t l = 0; l < shadowed.scene.lights.size(); ++l) add(shadowed.lit[f][l]);
+    if (shadowed.is_exact()) {
+      for (std::size_t l = 0; l < shadowed.scene().lights.size(); ++l) add(shadowed.lit()[f][l]);
     }
     for (const SunPathHours& path : shadowed.sun_paths) {
       if (!path.regions_kept || !path.nodes.empty()) continue;
@@ -253,9 +253,9 @@ void write_sun_hours(JsonWriter& out, std::size_t face, const std::vector<SunPat
 
 void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f,
                 database::Layout layout) {
-  const Face& face = shadowed.scene.faces[f];
-  const std::vector<Light>& lights = shadowed.scene.lights;
-  const LitTable::ConstRow lit = shadowed.lit[f];
+  const Face& face = shadowed.scene().faces[f];
+  const std::vector<Light>& lights = shadowed.scene().lights;
+  const LitTable::ConstRow lit = shadowed.lit()[f];
   out.begin_object(Layout::kLines);
   out.key(key::kId).value(face.id).key(key::kSourceFile).value(face.source_file);
   output::detail::write_origin(out, face.origin);
@@ -265,10 +265,11 @@ void write_face(JsonWriter& out, const ShadowedScene& shadowed, std::size_t f,
   out.end_array();
   LitWriter lit_writer(layout, face.parts.size() > 1);
   lit_writer.write_tables(out, shadowed, f);
-  if (!shadowed.method.exact()) {  // areas alone, of every light that is no path's instant
+  if (const std::optional<Estimate>& estimate = shadowed.estimate()) {
+    // areas alone, of every light that is no path's instant
     out.key(key::kLitArea).begin_object();
     for (std::size_t l = 0; l < lights.size(); ++l) {
-      const std::vector<double>& column = shadowed.estimated_lit_area[l];
+      const std::vector<double>& column = estimate->lit_area[l];
       if (!column.empty()) out.key(lights[l].id).value(column[f]);
     }
     out.end_object();
@@ -291,7 +292,7 @@ namespace {
 
 void write_database_to(const ShadowedScene& shadowed, JsonWriter& out, database::Layout layout) {
   output::detail::check_writable(shadowed);
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   out.begin_object(Layout::kLines).key(key::kFormat);
   out.value(layout == database::Layout::kIndexed ? database::kIndexedFormat
                                                  : database::kInlineFormat);
@@ -302,7 +303,9 @@ void write_database_to(const ShadowedScene& shadowed, JsonWriter& out, database:
         .value(std::uint64_t{shadowed.shard->index + 1});
     out.key(key::kCount).value(std::uint64_t{shadowed.shard->count}).end_object();
   }
-  if (!shadowed.method.exact()) output::detail::write_method(out, shadowed.method);
+  if (const std::optional<Estimate>& estimate = shadowed.estimate()) {
+    output::detail::write_method(out, estimate->method);
+  }
   if (scene.site) write_site(out, *scene.site);
   out.key(key::kLights).begin_array(Layout::kLines);
   for (const Light& light : scene.lights) write_light(out, light);

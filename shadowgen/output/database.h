@@ -19,7 +19,7 @@ namespace shadowgen {
 
 // Throws std::invalid_argument (naming the face or light) for what the format cannot
 // hold: a non-finite number, a loop of fewer than three vertices, a face without parts,
-// duplicate ids, or `lit` not shaped [face][light].
+// or duplicate ids.
 std::string database_json(const ShadowedScene& shadowed,
                           database::Layout layout = database::Layout::kIndexed);
 

@@ -20,7 +20,7 @@ constexpr std::int64_t kSecondsPerDay = 86'400;
 
 std::string header(const ShadowedScene& shadowed) {
   std::string out = "Surface Name,";
-  for (const std::string& name : output::detail::energyplus_surface_names(shadowed.scene)) {
+  for (const std::string& name : output::detail::energyplus_surface_names(shadowed.scene())) {
     out += name + ',';
   }
   return out + '\n';
@@ -55,7 +55,7 @@ void append_fraction(std::string& out, double fraction) {
 
 EnergyPlusShading energyplus_shading(const ShadowedScene& shadowed) {
   output::detail::require_sun_paths(shadowed, "a shading schedule");
-  const std::string file = shadowed.scene.file;
+  const std::string file = shadowed.scene().file;
   if (shadowed.sun_paths.size() > 1) {
     std::string ids;
     for (const SunPathHours& path : shadowed.sun_paths) ids += (ids.empty() ? "" : ", ") + path.id;
@@ -87,7 +87,7 @@ EnergyPlusShading energyplus_shading(const ShadowedScene& shadowed) {
   std::vector<std::optional<std::size_t>> instant_of_step(
       static_cast<std::size_t>(days * steps_per_day));
   for (std::size_t k = 0; k < path.instants.size(); ++k) {
-    const Light& light = shadowed.scene.lights.at(path.instants[k]);
+    const Light& light = shadowed.scene().lights.at(path.instants[k]);
     const std::int64_t at = seconds_of(light.sun ? light.sun->time : "", file, light.id);
     if (at < from || at > to || (at - first_day) % step_s != 0) {
       throw InputError(file, "", "light '" + light.id + "' is not on a time step of " + named);
@@ -96,9 +96,9 @@ EnergyPlusShading energyplus_shading(const ShadowedScene& shadowed) {
   }
 
   EnergyPlusShading out;
-  const std::size_t faces = shadowed.scene.faces.size();
+  const std::size_t faces = shadowed.scene().faces.size();
   std::vector<double> areas(faces);
-  for (std::size_t f = 0; f < faces; ++f) areas[f] = hsr::area(shadowed.scene.faces[f].parts);
+  for (std::size_t f = 0; f < faces; ++f) areas[f] = hsr::area(shadowed.scene().faces[f].parts);
   out.csv = header(shadowed);
   for (std::size_t s = 0; s < instant_of_step.size(); ++s) {
     const std::int64_t day = static_cast<std::int64_t>(s) / steps_per_day;

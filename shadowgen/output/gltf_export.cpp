@@ -94,9 +94,8 @@ std::string gltf_export(const ShadowedScene& shadowed, GltfForm form, const Gltf
 
 LightSetGltf light_set_gltf(const ShadowedScene& shadowed, GltfForm form,
                             const GltfOptions& options) {
-  const Scene& scene = shadowed.scene;
-  const output::detail::SceneRegions regions =
-      output::detail::scene_regions(shadowed, "gltf_export");
+  const Scene& scene = shadowed.scene();
+  const output::detail::SceneRegions regions = output::detail::scene_regions(shadowed);
   const output::detail::LightSetNames names =
       output::detail::light_set_names(scene, regions.sets, as_is);
 
@@ -139,7 +138,7 @@ LightSetGltf light_set_gltf(const ShadowedScene& shadowed, GltfForm form,
 std::string sun_hours_gltf_export(const ShadowedScene& shadowed, const SunPathHours& path,
                                   const HourBands& bands, GltfForm form,
                                   const GltfOptions& options) {
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   require_regions(path, scene.file, "an export by hour bands");
   if (path.regions.size() != scene.faces.size()) {
     throw std::invalid_argument("sun_hours_gltf_export: sun-hours regions not shaped [face]");

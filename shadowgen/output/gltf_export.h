@@ -102,9 +102,9 @@ struct LightSetGltf {
 // nullopt for any other name.
 std::optional<GltfForm> gltf_form_of(std::string_view file_name);
 
-// The file's bytes. Throws std::invalid_argument when `lit` is not shaped [face][light],
-// GenerationError naming the face should a region fail to triangulate (valid regions do
-// not), and std::length_error for a model of more than 2^32 − 1 vertices or 4 GiB.
+// The file's bytes. Throws GenerationError naming the face should a region fail to
+// triangulate (valid regions do not), and std::length_error for a model of more than 2^32 − 1
+// vertices or 4 GiB.
 std::string gltf_export(const ShadowedScene& shadowed, GltfForm form,
                         const GltfOptions& options = {});
 LightSetGltf light_set_gltf(const ShadowedScene& shadowed, GltfForm form,

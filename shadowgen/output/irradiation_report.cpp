@@ -21,7 +21,7 @@ std::vector<double> direct_normal_of(const ShadowedScene& shadowed, const SunPat
   dni.reserve(path.instants.size());
   for (const std::size_t l : path.instants) {
     const sun::CivilTime time =
-        output::detail::instant_time(shadowed.scene.lights.at(l), path, weather.file);
+        output::detail::instant_time(shadowed.scene().lights.at(l), path, weather.file);
     dni.push_back(weather::direct_normal_wh_m2(weather, time));
   }
   return dni;
@@ -48,7 +48,7 @@ std::vector<PartFacing> facings_of(const Face& face) {
 std::vector<IrradiationRow> irradiation_rows(const ShadowedScene& shadowed,
                                              const Weather& weather) {
   output::detail::require_sun_paths(shadowed, "irradiation");
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   std::vector<IrradiationRow> rows(scene.faces.size() * shadowed.sun_paths.size());
   std::vector<std::vector<PartFacing>> facings_per_face;  // the same for every path
   facings_per_face.reserve(scene.faces.size());
@@ -87,7 +87,7 @@ std::string irradiation_csv(const ShadowedScene& shadowed, const Weather& weathe
   std::string out =
       "face_id,sun_path,area,direct_wh,direct_wh_per_area,unshaded_direct_wh_per_area\n";
   for (const IrradiationRow& row : rows) {
-    output::detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
+    output::detail::append_csv_field(out, shadowed.scene().faces[row.face].id, ids);
     out += ',';
     output::detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
     const double per_area = row.area > 0.0 ? row.direct_wh / row.area : 0.0;

@@ -87,7 +87,7 @@ std::string face_group_name(std::string_view id) {
 // polygons on it.
 void append_face_layers(std::string& obj, const ShadowedScene& shadowed, std::size_t f,
                         const LightSetNames& names, output::detail::ObjNumbering& numbering) {
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   const Face& face = scene.faces[f];
   const std::string group = face_group_name(face.id);
   obj += "g ";
@@ -104,7 +104,7 @@ void append_face_layers(std::string& obj, const ShadowedScene& shadowed, std::si
     throw GenerationError("", face.id, "", "the face could not be split into triangles");
   }
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    const LitTable::Polygons& lit = shadowed.lit.at(f, l);
+    const LitTable::Polygons& lit = shadowed.lit().at(f, l);
     if (lit.empty()) continue;
     block.add_statement("g", group + "@" + obj_name(scene.lights[l].id));
     block.add_statement("usemtl", names.at(LightSet{l}));
@@ -171,9 +171,8 @@ glm::dvec3 light_set_colour(const Scene& scene, std::span<const std::size_t> lig
 }
 
 ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
-  const Scene& scene = shadowed.scene;
-  const output::detail::SceneRegions regions =
-      output::detail::scene_regions(shadowed, "obj_export");
+  const Scene& scene = shadowed.scene();
+  const output::detail::SceneRegions regions = output::detail::scene_regions(shadowed);
   const LightSetNames names = output::detail::light_set_names(scene, regions.sets, obj_name);
   return export_files(
       scene, "faces split by the set of lights reaching them", mtl_file_name, names,
@@ -184,12 +183,11 @@ ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_nam
 }
 
 ObjFiles obj_export_by_light(const ShadowedScene& shadowed, std::string_view mtl_file_name) {
-  const Scene& scene = shadowed.scene;
-  check_lit_shape(shadowed, "obj_export_by_light");
+  const Scene& scene = shadowed.scene();
   output::detail::LightSets sets = {LightSet{}};
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-      if (!shadowed.lit.at(f, l).empty()) sets.insert(LightSet{l});
+      if (!shadowed.lit().at(f, l).empty()) sets.insert(LightSet{l});
     }
   }
   const LightSetNames names = output::detail::light_set_names(scene, sets, obj_name);

@@ -89,9 +89,8 @@ struct ObjFiles {
 };
 
 // Both texts; `mtl_file_name` is what the OBJ's `mtllib` line names (the MTL's file name,
-// next to the OBJ). Throws std::invalid_argument when `lit` is not shaped [face][light],
-// and GenerationError naming the face should a region fail to triangulate (valid
-// regions do not).
+// next to the OBJ). Throws GenerationError naming the face should a region fail to
+// triangulate (valid regions do not).
 ObjFiles obj_export(const ShadowedScene& shadowed, std::string_view mtl_file_name);
 
 // The layers by light (above); throws as obj_export does, naming the face and the light

@@ -38,7 +38,7 @@ std::vector<PathSky> path_skies(const ShadowedScene& shadowed,
     std::vector<sky::WeightedSkyHour> sky_hours;
     PathSky path_sky;
     for (const std::size_t l : path.instants) {
-      const Light& light = shadowed.scene.lights.at(l);
+      const Light& light = shadowed.scene().lights.at(l);
       const sun::CivilTime time = output::detail::instant_time(light, path, weather.file);
       using weather::Radiation;
       sky::SkyHour hour;
@@ -111,7 +111,7 @@ std::string radiation_csv(const ShadowedScene& shadowed, const sky::SkyExposure&
       "unshaded_direct_wh_per_area,unshaded_diffuse_wh_per_area,unshaded_total_wh_per_area,"
       "total_ratio\n";
   for (const RadiationRow& row : rows) {
-    output::detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
+    output::detail::append_csv_field(out, shadowed.scene().faces[row.face].id, ids);
     out += ',';
     output::detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
     const auto per_area = [&row](double wh) { return row.area > 0.0 ? wh / row.area : 0.0; };

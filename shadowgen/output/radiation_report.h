@@ -66,7 +66,7 @@ struct RadiationRow {
 };
 
 // One row per (face, path), faces in scene order, paths in the order of their first
-// instant; `exposure` is shadowed.scene's, `skies` path_skies's. Throws what
+// instant; `exposure` is shadowed.scene()'s, `skies` path_skies's. Throws what
 // irradiation_rows throws.
 std::vector<RadiationRow> radiation_rows(const ShadowedScene& shadowed,
                                          const sky::SkyExposure& exposure,

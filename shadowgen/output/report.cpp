@@ -117,8 +117,7 @@ Totals totals_of(const Scene& scene, const std::vector<ReportRow>& rows) {
 }  // namespace
 
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
-  check_lit_shape(shadowed, "report");
+  const Scene& scene = shadowed.scene();
   const LitAreas lit_areas(shadowed);
   const std::size_t lights = scene.lights.size();
   std::vector<ReportRow> rows(scene.faces.size() * lights);
@@ -145,9 +144,9 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids,
   std::string out = "face_id,light_id,area,lit_area,lit_fraction\n";
   output::detail::append_in_chunks(out, rows.size(), [&](std::string& text, std::size_t i) {
     const ReportRow& row = rows[i];
-    append_csv_field(text, shadowed.scene.faces[row.face].id, ids);
+    append_csv_field(text, shadowed.scene().faces[row.face].id, ids);
     text += ',';
-    append_csv_field(text, shadowed.scene.lights[row.light].id, ids);
+    append_csv_field(text, shadowed.scene().lights[row.light].id, ids);
     text += ',';
     append_csv_number(text, row.area);
     text += ',';
@@ -158,10 +157,10 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids,
   });
   if (groups.empty()) return out;
   out += "\ngroup_id,light_id,faces,area,lit_area,lit_fraction\n";
-  for (const GroupLitRow& row : group_lit_rows(rows, shadowed.scene.lights.size(), groups)) {
+  for (const GroupLitRow& row : group_lit_rows(rows, shadowed.scene().lights.size(), groups)) {
     append_csv_field(out, groups[row.group].id, ids);
     out += ',';
-    append_csv_field(out, shadowed.scene.lights[row.light].id, ids);
+    append_csv_field(out, shadowed.scene().lights[row.light].id, ids);
     out += ',' + std::to_string(row.faces);
     for (const double v : {row.area, row.lit_area, row.lit_fraction}) {
       out += ',';
@@ -174,12 +173,12 @@ std::string report_csv(const ShadowedScene& shadowed, CsvIds ids,
 
 std::string report_json(const ShadowedScene& shadowed, std::span<const groups::FaceGroup> groups) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   const Totals totals = totals_of(scene, rows);
 
   JsonWriter out;
   out.begin_object(Layout::kLines).key("format").value("shadowgen-report/1");
-  output::detail::write_method(out, shadowed.method);
+  output::detail::write_method(out, shadowed.method());
   out.key("rows").begin_array(Layout::kLines);
   for (const ReportRow& row : rows) {
     out.begin_object();
@@ -219,16 +218,17 @@ std::string report_json(const ShadowedScene& shadowed, std::span<const groups::F
 std::string report_table(const ShadowedScene& shadowed, std::size_t top,
                          std::span<const groups::FaceGroup> groups) {
   const std::vector<ReportRow> rows = report_rows(shadowed);
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   const std::size_t lights = scene.lights.size();
   const Totals sums = totals_of(scene, rows);
 
   std::string out;
-  if (!shadowed.method.exact()) {  // never to be read as the exact answer
-    out += "lit areas estimated by the " + std::string(method_name(shadowed.method.kind)) +
-           " method, " + std::to_string(shadowed.method.samples) + " samples per face";
-    if (shadowed.method.kind == MethodKind::kShadowMap) {
-      out += ", depth maps of " + std::to_string(shadowed.method.resolution) + " texels a side";
+  if (const std::optional<Estimate>& estimate = shadowed.estimate()) {  // never taken as exact
+    const Method& method = estimate->method;
+    out += "lit areas estimated by the " + std::string(method_name(method.kind)) + " method, " +
+           std::to_string(method.samples) + " samples per face";
+    if (method.kind == MethodKind::kShadowMap) {
+      out += ", depth maps of " + std::to_string(method.resolution) + " texels a side";
     }
     out += "\n";
   }

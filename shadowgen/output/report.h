@@ -25,9 +25,8 @@ struct ReportRow {
 // face's area (holes removed, shadowgen::area of its parts), `lit_area` that of its lit
 // polygons for the light, never above `area` by rounding (an excess within 2^-40 of the
 // area is clamped, so 0 <= lit_fraction <= 1; anything larger is left to show). Throws
-// std::invalid_argument when `lit` is not shaped [face][light], and InputError (naming the
-// input, Scene::file, and the face) when an area is not a finite number: no report, in any of the
-// forms below, holds inf or nan.
+// InputError (naming the input, Scene::file, and the face) when an area is not a finite
+// number: no report, in any of the forms below, holds inf or nan.
 std::vector<ReportRow> report_rows(const ShadowedScene& shadowed);
 
 // How ids are written in the CSV.
@@ -44,7 +43,7 @@ enum class CsvIds {
 // ids quoted as RFC 4180 says when they hold a comma, a quote or a line break. Lines end
 // with "\n".
 //
-// With `groups` (groups/face_groups.h, resolved on shadowed.scene), one empty line and a
+// With `groups` (groups/face_groups.h, resolved on shadowed.scene()), one empty line and a
 // second table follow the rows: header group_id,light_id,faces,area,lit_area,lit_fraction,
 // one row per (group, light), groups in order (group_lit_rows, output/group_sums.h).
 std::string report_csv(const ShadowedScene& shadowed, CsvIds ids = CsvIds::kExact,

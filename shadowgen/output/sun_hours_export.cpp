@@ -61,8 +61,8 @@ std::string mtl_text(const HourBands& bands) {
 
 ObjFiles sun_hours_obj_export(const ShadowedScene& shadowed, const SunPathHours& path,
                               const HourBands& bands, std::string_view mtl_file_name) {
-  const Scene& scene = shadowed.scene;
-  require_regions(path, shadowed.scene.file, "an export by hour bands");
+  const Scene& scene = shadowed.scene();
+  require_regions(path, shadowed.scene().file, "an export by hour bands");
   if (path.regions.size() != scene.faces.size()) {
     throw std::invalid_argument("sun_hours_obj_export: sun-hours regions not shaped [face]");
   }

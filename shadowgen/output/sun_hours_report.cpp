@@ -21,9 +21,9 @@ std::vector<SunHoursRow> sun_hours_rows(const ShadowedScene& shadowed,
   }
   output::detail::require_sun_paths(shadowed, "sun hours");
   for (const SunPathHours& path : shadowed.sun_paths) {
-    require_regions(path, shadowed.scene.file, "a sun-hours report");
+    require_regions(path, shadowed.scene().file, "a sun-hours report");
   }
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   std::vector<SunHoursRow> rows;
   rows.reserve(scene.faces.size() * shadowed.sun_paths.size());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
@@ -65,7 +65,7 @@ std::string sun_hours_csv(const ShadowedScene& shadowed, std::span<const double>
   for (const double t : thresholds) out += ",area_at_least_" + shortest(t) + "h";
   out += '\n';
   for (const SunHoursRow& row : rows) {
-    output::detail::append_csv_field(out, shadowed.scene.faces[row.face].id, ids);
+    output::detail::append_csv_field(out, shadowed.scene().faces[row.face].id, ids);
     out += ',';
     output::detail::append_csv_field(out, shadowed.sun_paths[row.path].id, ids);
     for (const double v : {row.area, row.mean_hours, row.min_hours, row.max_hours}) {

@@ -109,9 +109,9 @@ std::string sun_hours_table(const ShadowedScene& shadowed, std::span<const doubl
     const std::string when = sun_path_days(path.from, path.to);
     for (std::size_t t = 0; t < thresholds.size(); ++t) {
       if (groups.empty()) {
-        for (std::size_t f = 0; f < shadowed.scene.faces.size(); ++f) {
+        for (std::size_t f = 0; f < shadowed.scene().faces.size(); ++f) {
           const SunHoursRow& row = rows[f * paths + p];
-          out += sun_test_line(shadowed.scene.faces[f].id, row.area, row.area_at_least[t],
+          out += sun_test_line(shadowed.scene().faces[f].id, row.area, row.area_at_least[t],
                                thresholds[t], when) +
                  '\n';
         }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "shadowgen/model/input_error.h"
+#include "shadowgen/model/keep_marked.h"
 #include "shadowgen/model/one_line.h"
 
 namespace shadowgen {
@@ -92,16 +93,6 @@ void keep_paths(Scene& scene, const std::vector<bool>& keep,
   }
 }
 
-template <class T>
-void keep_marked(std::vector<T>& items, const std::vector<bool>& keep) {
-  std::vector<T> kept;
-  kept.reserve(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k) {
-    if (keep[k]) kept.push_back(std::move(items[k]));
-  }
-  items = std::move(kept);
-}
-
 }  // namespace
 
 void keep_lights(Scene& scene, std::span<const std::string> ids, const std::string& file) {
@@ -150,15 +141,11 @@ namespace {
 // kept of one that kept them become lights of their own (own_light).
 void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const std::string& file,
                  const std::set<std::string>* named_paths) {
-  if (shadowed.lit.lights() != keep.size()) {
-    throw std::invalid_argument("keep_lights: lit polygons for " +
-                                std::to_string(shadowed.lit.lights()) + " lights, " +
-                                std::to_string(keep.size()) + " chosen or not");
-  }
   std::vector<std::size_t> renumbered(keep.size());
   for (std::size_t l = 0, next = 0; l < keep.size(); ++l) renumbered[l] = keep[l] ? next++ : 0;
   std::vector<SunPathHours> paths;
   std::set<std::string> kept_ids;
+  std::vector<std::size_t> own;  // the kept instants of paths not kept whole
   for (SunPathHours& path : shadowed.sun_paths) {
     const auto kept = static_cast<std::size_t>(
         std::count_if(path.instants.begin(), path.instants.end(),
@@ -179,16 +166,17 @@ void keep_marked(ShadowedScene& shadowed, const std::vector<bool>& keep, const s
                            "itself, or generate with --keep-instants");
     } else {
       for (const std::size_t l : path.instants) {
-        if (keep[l]) own_light(shadowed.scene.lights[l]);
+        if (keep[l]) own.push_back(l);
       }
     }
   }
   shadowed.sun_paths = std::move(paths);
-  std::erase_if(shadowed.scene.sun_paths,
-                [&kept_ids](const SunPathSpan& path) { return !kept_ids.contains(path.id); });
-  keep_marked(shadowed.scene.lights, keep);
-  shadowed.lit.keep_lights(keep);
-  if (!shadowed.estimated_lit_area.empty()) keep_marked(shadowed.estimated_lit_area, keep);
+  shadowed.edit_scene([&](Scene& scene) {
+    for (const std::size_t l : own) own_light(scene.lights[l]);
+    std::erase_if(scene.sun_paths,
+                  [&kept_ids](const SunPathSpan& path) { return !kept_ids.contains(path.id); });
+  });
+  shadowed.keep_lights(keep);
 }
 
 }  // namespace
@@ -197,13 +185,13 @@ void keep_lights(ShadowedScene& shadowed, std::span<const std::string> ids,
                  const std::string& file) {
   if (ids.empty()) return;
   std::set<std::string> named_paths;
-  const std::vector<bool> keep = chosen(shadowed.scene, ids, file, named_paths);
+  const std::vector<bool> keep = chosen(shadowed.scene(), ids, file, named_paths);
   keep_marked(shadowed, keep, file, &named_paths);
 }
 
 std::vector<std::string> drop_summed_instants(ShadowedScene& shadowed, const std::string& file) {
   const LitAreas areas(shadowed);
-  std::vector<bool> keep(shadowed.scene.lights.size());
+  std::vector<bool> keep(shadowed.scene().lights.size());
   std::vector<std::string> dropped;
   for (std::size_t l = 0; l < keep.size(); ++l) {
     const SunPathHours* path = areas.summed_path(l);

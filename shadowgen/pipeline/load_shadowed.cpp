@@ -54,9 +54,9 @@ ShadowedScene generated(ReadResult read, const std::filesystem::path& path,
 
 // "method rays, 256 samples per face", as messages name a database's method.
 std::string method_text(const ShadowedScene& shadowed) {
-  const Method& method = shadowed.method;
+  if (shadowed.is_exact()) return "method " + std::string(method_name(MethodKind::kExact));
+  const Method& method = shadowed.estimate()->method;
   std::string text = "method " + std::string(method_name(method.kind));
-  if (method.exact()) return text;
   text += ", " + std::to_string(method.samples) + " samples per face";
   if (method.kind == MethodKind::kShadowMap) {
     text += ", maps of " + std::to_string(method.resolution) + " texels a side";
@@ -85,7 +85,7 @@ ShadowedScene read_shadowed(const std::filesystem::path& path, const std::string
                      "is a shadowed database, read as it was made (" + method_text(shadowed) +
                          "): a method applies to a scene only");
   }
-  if (options.draws && !shadowed.method.exact()) {
+  if (options.draws && shadowed.estimate()) {
     throw InputError(path.string(), "",
                      "holds the lit areas a sampled method estimated (" + method_text(shadowed) +
                          "), no lit polygons to draw: generate it with --method exact");
@@ -170,7 +170,7 @@ Scene scene_of(const std::filesystem::path& path, const LoadOptions& options) {
                        "is a shard of a sun-path run, not a whole shadowed database: join every "
                        "shard with shadowgen merge first");
     }
-    return prepared({std::move(shadowed.scene), std::move(warnings)}, path, options);
+    return prepared({std::move(shadowed.scene()), std::move(warnings)}, path, options);
   }
   return prepared(read_scene(path, read_options(options)), path, options);
 }

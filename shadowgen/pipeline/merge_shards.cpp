@@ -21,9 +21,8 @@ namespace {
 // What every shard of one run shares, as text: the scene (faces, lights and views, as a
 // database without lit details writes them) and each path's id, step, span and kind.
 std::string run_text(const ShadowedScene& shard) {
-  ShadowedScene bare;
-  bare.scene = shard.scene;
-  bare.lit = LitTable(shard.scene.faces.size(), shard.scene.lights.size());
+  const ShadowedScene bare(shard.scene(),
+                           LitTable(shard.scene().faces.size(), shard.scene().lights.size()));
   std::string text = database_json(bare);
   for (const SunPathHours& path : shard.sun_paths) {
     text += "\n" + path.id + " " + std::to_string(path.step_min) + " " + path.from + " " + path.to +
@@ -92,7 +91,7 @@ ShadowedScene merge_shards(std::vector<ShardFile> given) {
   std::vector<ShardFile> shards = in_order(std::move(given));
   ShadowedScene merged = std::move(shards.front().shadowed);
   merged.shard.reset();
-  const Scene& scene = merged.scene;
+  const Scene& scene = merged.scene();
   const std::size_t faces = scene.faces.size();
   for (std::size_t p = 0; p < merged.sun_paths.size(); ++p) {
     SunPathHours& path = merged.sun_paths[p];

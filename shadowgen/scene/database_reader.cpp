@@ -53,7 +53,7 @@ class DatabaseParser {
   // From `text`, or where it is null from the file, read as it is parsed.
   ShadowedScene run(const std::string* text) {
     ShadowedScene shadowed;
-    shadowed.scene.file = file_;
+    shadowed.edit_scene([this](Scene& scene) { scene.file = file_; });
     std::optional<JsonObject> top;
     bool skipping = false;          // a member the header needs comes after the faces
     std::exception_ptr too_early;   // what reading the header or a face threw in this pass
@@ -138,7 +138,8 @@ class DatabaseParser {
   ShadowedScene finished(JsonObject& top, ShadowedScene shadowed) const {
     (void)top.get(key::kFaces).array();
     if (const std::optional<JsonValue> groups = top.find(key::kGroups)) {
-      shadowed.scene.groups = scene::detail::read_groups(*groups, shadowed.scene.faces);
+      std::vector<FaceGroupSpec> read = scene::detail::read_groups(*groups, shadowed.scene().faces);
+      shadowed.edit_scene([&read](Scene& scene) { scene.groups = std::move(read); });
     }
     top.finish();
     scene::detail::check_lit_lists(shadowed, lists_of_face_, lists_);
@@ -211,21 +212,20 @@ class DatabaseParser {
     }
     if (header_.layout == database::Layout::kIndexed)
       vertices_ = scene::detail::read_face_vertices(entry);
-    const std::size_t f = shadowed.lit.size();
-    shadowed.lit.add_face();
     lists_of_face_.push_back(lists_.size());
-    if (!shadowed.method.exact()) {
-      read_estimated(entry, face, shadowed);
+    if (const std::optional<Estimate>& estimate = shadowed.estimate()) {
+      std::vector<std::optional<double>> areas = read_estimated(entry, face, *estimate, shadowed);
       scene::detail::read_face_sun_hours(entry, face, shadowed, {header_.layout, vertices_},
                                          path_values_);
       entry.finish();
-      shadowed.scene.faces.push_back(std::move(face));
+      shadowed.add_face(std::move(face), areas);
       return;
     }
+    std::vector<std::pair<std::size_t, LitTable::Polygons>> lit;
     for (const auto& [light_id, list] : entry.get(key::kLit).object().entries()) {
       const auto light = header_.light_index.find(light_id);
       if (light == header_.light_index.end()) list.fail("no light has this id");
-      if (!shadowed.lit.kept(light->second)) {
+      if (!shadowed.lit().kept(light->second)) {
         list.fail("the light is an instant of sun path '" +
                   one_line(path_of(shadowed, light->second)) +
                   "', whose instant polygons are \"dropped\": only its lit areas are kept");
@@ -238,29 +238,32 @@ class DatabaseParser {
                   ", which holds no lit polygons: the lights that are no instant of a sun "
                   "path are lit in shard 1 alone");
       }
-      shadowed.lit.at(f, light->second) =
-          scene::detail::read_database_lit(list, face, {header_.layout, vertices_});
+      lit.emplace_back(light->second,
+                       scene::detail::read_database_lit(list, face, {header_.layout, vertices_}));
       lists_.push_back({light->second, list.place()});
     }
     scene::detail::read_face_sun_hours(entry, face, shadowed, {header_.layout, vertices_},
                                        path_values_);
     entry.finish();
-    shadowed.scene.faces.push_back(std::move(face));
+    const std::size_t f = shadowed.scene().faces.size();
+    shadowed.add_face(std::move(face));
+    for (auto& [light, polygons] : lit) shadowed.lit_at(f, light) = std::move(polygons);
   }
 
   // A sampled method's "lit_area": {"light id": area, ...}, one for every light that is no
   // instant of a sun path (an instant's area is in the face's "sun_hours"), each from 0 to
   // the face's area.
-  void read_estimated(JsonObject& entry, const Face& face, ShadowedScene& shadowed) const {
+  std::vector<std::optional<double>> read_estimated(JsonObject& entry, const Face& face,
+                                                    const Estimate& estimate,
+                                                    const ShadowedScene& shadowed) const {
     if (const std::optional<JsonValue> lit = entry.find(key::kLit)) {
-      lit->fail("a database made by the " + std::string(method_name(shadowed.method.kind)) +
+      lit->fail("a database made by the " + std::string(method_name(estimate.method.kind)) +
                 " method holds lit areas (\"lit_area\"), not lit polygons");
     }
     const JsonValue areas_value = entry.get(key::kLitArea);
-    const std::size_t face_index = shadowed.scene.faces.size();
+    std::vector<std::optional<double>> areas(shadowed.scene().lights.size());
     const double face_area = hsr::area(face.parts);
     const double tolerance = scene::detail::LitChecker(face).area_tolerance({});
-    std::vector<bool> given(shadowed.scene.lights.size(), false);
     for (const auto& [light_id, value] : areas_value.object().entries()) {
       const auto light = header_.light_index.find(light_id);
       if (light == header_.light_index.end()) value.fail("no light has this id");
@@ -274,16 +277,14 @@ class DatabaseParser {
         value.fail("a lit area of " + shortest(a) + " is not between 0 and the face's area of " +
                    shortest(face_area));
       }
-      std::vector<double>& column = shadowed.estimated_lit_area[l];
-      column.resize(face_index + 1, 0.0);
-      column[face_index] = a;
-      given[l] = true;
+      areas[l] = a;
     }
-    for (std::size_t l = 0; l < given.size(); ++l) {
-      if (!given[l] && !header_.instant[l]) {
-        areas_value.fail("no lit area for light '" + one_line(shadowed.scene.lights[l].id) + "'");
+    for (std::size_t l = 0; l < areas.size(); ++l) {
+      if (!areas[l] && !header_.instant[l]) {
+        areas_value.fail("no lit area for light '" + one_line(shadowed.scene().lights[l].id) + "'");
       }
     }
+    return areas;
   }
 
   static const std::string& path_of(const ShadowedScene& shadowed, std::size_t light) {

@@ -13,21 +13,16 @@ namespace shadowgen {
 GenerateResult estimate_shadows(const Scene& scene, const LitAreaEstimator& estimator,
                                 const EstimateOptions& options) {
   GenerateResult result;
-  ShadowedScene& shadowed = result.shadowed;
-  shadowed.scene = scene;
-  shadowed.method = estimator.method();
   const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
   result.stats.resize(lights);
-  shadowed.sun_paths = sun_paths_of(scene);
-  SunPathSums sums(scene, shadowed.sun_paths, /*keep_polygons=*/false, /*regions=*/false,
-                   std::nullopt);
-  shadowed.lit = LitTable(faces, lights, std::vector<bool>(lights, false));
-  shadowed.estimated_lit_area.resize(lights);
+  Estimate estimate{estimator.method(), std::vector<std::vector<double>>(lights)};
+  std::vector<SunPathHours> paths = sun_paths_of(scene);
+  SunPathSums sums(scene, paths, /*keep_polygons=*/false, /*regions=*/false, std::nullopt);
   const std::vector<std::size_t> todo = sums.lights_of_run();
   tbb::task_arena arena = shadows::detail::arena_of(options.threads);
   arena.execute([&] {
     shadows::detail::run_lights(
-        todo, !shadowed.sun_paths.empty(), options.on_light_done, result.stats,
+        todo, !paths.empty(), options.on_light_done, result.stats,
         [&](std::size_t l, LightStats&) { return estimator.lit_areas(scene.lights[l]); },
         [&](const std::vector<std::size_t>& batch,
             const std::vector<std::vector<std::vector<double>>>& estimated) {
@@ -35,7 +30,7 @@ GenerateResult estimate_shadows(const Scene& scene, const LitAreaEstimator& esti
           for (std::size_t i = 0; i < batch.size(); ++i) {
             const std::size_t l = batch[i];
             if (sums.in_path(l)) continue;
-            std::vector<double>& column = shadowed.estimated_lit_area[l];
+            std::vector<double>& column = estimate.lit_area[l];
             column.assign(faces, 0.0);
             for (std::size_t f = 0; f < faces; ++f) {
               for (const double a : estimated[i].at(f)) column[f] += a;
@@ -44,6 +39,9 @@ GenerateResult estimate_shadows(const Scene& scene, const LitAreaEstimator& esti
         });
     sums.finish();
   });
+  result.shadowed = ShadowedScene(scene, LitTable(faces, lights, std::vector<bool>(lights, false)),
+                                  std::move(estimate));
+  result.shadowed.sun_paths = std::move(paths);
   return result;
 }
 

@@ -3,7 +3,7 @@
 // A scene's lit areas by a sampled method (docs/scene-format.md, "Methods"), run through the
 // exact generator's per-light loop (generate.h) so that sun paths, threads and progress work
 // alike: each light's lit areas are an estimator's, and no lit polygon is made. The result
-// records the estimator's method (ShadowedScene::method); sun paths keep their instants' lit
+// holds the estimator's method (ShadowedScene::estimate); sun paths keep their instants' lit
 // areas alone, never sun-hours regions, and there are no shards of a sampled run. What only
 // the exact method makes (lit polygons, regions, shards) is not among the options at all.
 
@@ -34,7 +34,7 @@ struct EstimateOptions {
 };
 
 // The lit areas of every (face, light) of `scene` as `estimator` finds them:
-// ShadowedScene::estimated_lit_area for the lights that are no instant of a sun path, the
+// ShadowedScene::estimate()'s lit_area for the lights that are no instant of a sun path, the
 // paths' lit_area for their instants. Throws what the estimator throws.
 GenerateResult estimate_shadows(const Scene& scene, const LitAreaEstimator& estimator,
                                 const EstimateOptions& options = {});

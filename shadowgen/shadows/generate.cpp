@@ -85,19 +85,18 @@ GenerateResult generate_shadows(const Scene& scene, const GenerateOptions& optio
 GenerateResult generate_shadows(Scene&& input, const GenerateOptions& options) {
   GenerateResult result;
   ShadowedScene& shadowed = result.shadowed;
-  shadowed.scene = std::move(input);
-  const Scene& scene = shadowed.scene;
+  const std::size_t faces = input.faces.size(), lights = input.lights.size();
+  std::vector<bool> kept(lights);
+  for (std::size_t l = 0; l < lights; ++l) {
+    kept[l] = !in_sun_path(input.lights[l]) || options.keep_instant_polygons;
+  }
+  shadowed = ShadowedScene(std::move(input), LitTable(faces, lights, std::move(kept)));
+  const Scene& scene = shadowed.scene();
   shadowed.shard = options.shard;
-  const std::size_t faces = scene.faces.size(), lights = scene.lights.size();
   result.stats.resize(lights);
   shadowed.sun_paths = sun_paths_of(scene);
   SunPathSums sums(scene, shadowed.sun_paths, options.keep_instant_polygons,
                    options.sun_hours_regions, options.shard);
-  std::vector<bool> kept(lights);
-  for (std::size_t l = 0; l < lights; ++l) {
-    kept[l] = !sums.in_path(l) || options.keep_instant_polygons;
-  }
-  shadowed.lit = LitTable(faces, lights, std::move(kept));
   const std::vector<std::size_t> todo = sums.lights_of_run();
   if (todo.empty()) {
     sums.finish();
@@ -125,8 +124,8 @@ GenerateResult generate_shadows(Scene&& input, const GenerateOptions& options) {
           sums.add_lit(batch, lit);
           for (std::size_t i = 0; i < batch.size(); ++i) {
             const std::size_t l = batch[i];
-            if (!shadowed.lit.kept(l)) continue;
-            for (std::size_t f = 0; f < faces; ++f) shadowed.lit[f][l] = std::move(lit[i][f]);
+            if (!shadowed.lit().kept(l)) continue;
+            for (std::size_t f = 0; f < faces; ++f) shadowed.lit_at(f, l) = std::move(lit[i][f]);
           }
         });
     sums.finish();

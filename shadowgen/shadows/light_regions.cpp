@@ -48,14 +48,13 @@ SetPieces split_by_light(SetPieces regions, const shadows::detail::ChartRegion& 
 namespace {
 
 std::vector<LightRegion> regions_of(const ShadowedScene& shadowed, std::size_t face) {
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   if (face >= scene.faces.size()) {
     throw std::invalid_argument("light_regions: face index " + std::to_string(face) +
                                 " out of range");
   }
-  check_lit_shape(shadowed, "light_regions");
   const Face& f = scene.faces[face];
-  const LitTable::ConstRow lit = shadowed.lit[face];
+  const LitTable::ConstRow lit = shadowed.lit()[face];
 
   // Parts with area, each in its own chart: the part's vertices are lifted back to
   // themselves exactly; the lit polygons are charted exactly but not remembered (the
@@ -117,7 +116,7 @@ std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_
     return regions_of(shadowed, face);
   } catch (const clipper::SnapRoundingError& e) {
     // Never a silently wrong region: the face is named, as generation names it.
-    throw GenerationError("", shadowed.scene.faces[face].id, "",
+    throw GenerationError("", shadowed.scene().faces[face].id, "",
                           "light-set regions not computed: " + std::string(e.what()));
   }
 }

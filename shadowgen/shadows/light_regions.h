@@ -51,8 +51,7 @@ struct LightSetLess {
 // sum to the face's area, and the regions containing a light to its lit area, up to the
 // clipper's rounding of crossing points (clipper/clip.h). Faces or parts without area
 // give no regions. Throws GenerationError naming the face where a clip's snap rounding
-// does not settle (clipper/clip.h), and std::invalid_argument when `face` is out of range or `lit`
-// is not shaped [face][light].
+// does not settle (clipper/clip.h), and std::invalid_argument when `face` is out of range.
 std::vector<LightRegion> light_regions(const ShadowedScene& shadowed, std::size_t face);
 
 // "sun+lamp" style name of a light set from the lights' ids, in the set's order; "shadow"

@@ -68,7 +68,7 @@ bool inside_loops(const std::vector<clipper::Loop2>& loops, const clipper::Point
 
 void exact_weights(const ShadowedScene& shadowed, const PixelSurfaces& surfaces,
                    const std::vector<bool>& drawn, PixelLitWeights& out) {
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   const std::size_t lights = scene.lights.size();
   // The lit polygons of the faces seen, per (face, light) and part.
   std::vector<bool> seen(scene.faces.size(), false);
@@ -80,7 +80,7 @@ void exact_weights(const ShadowedScene& shadowed, const PixelSurfaces& surfaces,
     if (!seen[f]) continue;
     for (std::size_t l = 0; l < lights; ++l) {
       if (!drawn[l]) continue;
-      for (const LitPolygon& lit : shadowed.lit.at(f, l)) {
+      for (const LitPolygon& lit : shadowed.lit().at(f, l)) {
         const hsr::Polygon3& part = scene.faces[f].parts.at(lit.part);
         FlatLit entry;
         entry.part = lit.part;
@@ -239,13 +239,12 @@ std::optional<PixelShadows> pixel_shadows_named(std::string_view name) {
 
 PixelLitWeights pixel_lit_weights(const ShadowedScene& shadowed, const PixelSurfaces& surfaces,
                                   const PixelShadowOptions& options) {
-  check_lit_shape(shadowed, "pixel_lit_weights");
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   PixelLitWeights out;
   out.lights = scene.lights.size();
   out.weights.assign(surfaces.pixels.size() * out.lights, 0.0);
   std::vector<bool> drawn(out.lights);
-  for (std::size_t l = 0; l < out.lights; ++l) drawn[l] = shadowed.lit.kept(l);
+  for (std::size_t l = 0; l < out.lights; ++l) drawn[l] = shadowed.lit().kept(l);
   switch (options.method) {
     case PixelShadows::kExact:
       exact_weights(shadowed, surfaces, drawn, out);

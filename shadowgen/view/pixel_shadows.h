@@ -79,8 +79,8 @@ struct PixelLitWeights {
 };
 
 // The lit weight of every pixel of `surfaces` (seen in `shadowed`'s scene) for every light.
-// Throws std::invalid_argument for a resolution out of range or a lit table not shaped
-// [face][light], std::runtime_error where Embree fails.
+// Throws std::invalid_argument for a resolution out of range, std::runtime_error where
+// Embree fails.
 PixelLitWeights pixel_lit_weights(const ShadowedScene& shadowed, const PixelSurfaces& surfaces,
                                   const PixelShadowOptions& options);
 

@@ -25,7 +25,7 @@ class RadiationTiling : public view::detail::FaceTiling {
 
   void style(Piece& piece, std::size_t /*region*/, const glm::dvec3& /*centroid*/,
              const glm::dvec3& /*normal*/) const override {
-    piece.face_id = shadowed_.scene.faces[piece.face].id;
+    piece.face_id = shadowed_.scene().faces[piece.face].id;
     const double value = piece.back_side ? 0.0 : kwh_per_m2_[piece.face];
     piece.kwh_per_m2 = value;
     const RadiationBand& band = bands_.bands[bands_.band_of(value)];
@@ -44,11 +44,11 @@ class RadiationTiling : public view::detail::FaceTiling {
 Picture render_radiation(const ShadowedScene& shadowed, std::span<const double> kwh_per_m2,
                          const RadiationBands& bands, const Camera& camera,
                          const RenderOptions& options) {
-  if (kwh_per_m2.size() != shadowed.scene.faces.size()) {
+  if (kwh_per_m2.size() != shadowed.scene().faces.size()) {
     throw std::invalid_argument("a radiation map needs one value per face");
   }
   RadiationTiling tiling(shadowed, kwh_per_m2, bands);
-  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene(), camera, options, tiling);
   picture.legend.kind = "radiation";
   picture.legend.caption = bands.caption();
   for (const RadiationBand& band : bands.bands) {

@@ -18,7 +18,7 @@
 
 namespace shadowgen {
 
-// `kwh_per_m2` holds one value per face of shadowed.scene (std::invalid_argument
+// `kwh_per_m2` holds one value per face of shadowed.scene() (std::invalid_argument
 // otherwise, as for a bad camera or size); `bands` the bands they are coloured by.
 Picture render_radiation(const ShadowedScene& shadowed, std::span<const double> kwh_per_m2,
                          const RadiationBands& bands, const Camera& camera,

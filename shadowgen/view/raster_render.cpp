@@ -25,8 +25,7 @@ void put(std::uint8_t* out, const Rgb& colour) {
 
 RgbImage render_raster(const ShadowedScene& shadowed, const Camera& camera,
                        const RasterOptions& options) {
-  check_lit_shape(shadowed, "render_raster");
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   const RenderOptions& picture = options.picture;
   const PixelSurfaces surfaces = pixel_surfaces(scene, camera, picture.width, picture.height);
   const PixelLitWeights lit = pixel_lit_weights(shadowed, surfaces, options.shadows);

@@ -26,8 +26,8 @@ struct RasterOptions {
   PixelShadowOptions shadows;  // the view method
 };
 
-// Throws std::invalid_argument for a bad camera or size (see CameraView), a resolution out
-// of range or a lit table not shaped [face][light]; std::runtime_error where Embree fails.
+// Throws std::invalid_argument for a bad camera or size (see CameraView) or a resolution
+// out of range; std::runtime_error where Embree fails.
 RgbImage render_raster(const ShadowedScene& shadowed, const Camera& camera,
                        const RasterOptions& options);
 

@@ -40,7 +40,7 @@ class LightSetTiling : public view::detail::FaceTiling {
 
   void style(Piece& piece, std::size_t region, const glm::dvec3& centroid,
              const glm::dvec3& normal) const override {
-    const Scene& scene = shadowed_.scene;
+    const Scene& scene = shadowed_.scene();
     piece.face_id = scene.faces[piece.face].id;
     if (region != view::detail::kNoRegion) piece.lights = regions_[region].lights;
     piece.light_set = light_set_name(scene, piece.lights);
@@ -63,21 +63,21 @@ class LightLayerTiling : public view::detail::FaceTiling {
 
   void load(std::size_t face) override {
     lights_.clear();
-    for (std::size_t l = 0; l < shadowed_.scene.lights.size(); ++l) {
-      if (!shadowed_.lit.at(face, l).empty()) lights_.push_back(l);
+    for (std::size_t l = 0; l < shadowed_.scene().lights.size(); ++l) {
+      if (!shadowed_.lit().at(face, l).empty()) lights_.push_back(l);
     }
     face_ = face;
   }
   std::size_t size() const override { return lights_.size(); }
   std::span<const LitPolygon> polygons(std::size_t region) const override {
-    return shadowed_.lit.at(face_, lights_[region]);
+    return shadowed_.lit().at(face_, lights_[region]);
   }
   std::size_t rest() const override { return view::detail::kNoRegion; }
   bool layered() const override { return true; }
 
   void style(Piece& piece, std::size_t region, const glm::dvec3& centroid,
              const glm::dvec3& normal) const override {
-    const Scene& scene = shadowed_.scene;
+    const Scene& scene = shadowed_.scene();
     piece.face_id = scene.faces[piece.face].id;
     const Rgb shadow = shade(scene, {}, centroid, normal, options_);
     if (region == view::detail::kNoRegion) {
@@ -163,18 +163,16 @@ Rgb shade_weighted(const Scene& scene, std::span<const double> weights, const gl
 }
 
 Picture render(const ShadowedScene& shadowed, const Camera& camera, const RenderOptions& options) {
-  check_lit_shape(shadowed, "render");
   LightSetTiling tiling(shadowed, options);
-  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene(), camera, options, tiling);
   picture.legend = light_set_legend(picture.pieces);
   return picture;
 }
 
 Picture render_by_light(const ShadowedScene& shadowed, const Camera& camera,
                         const RenderOptions& options) {
-  check_lit_shape(shadowed, "render_by_light");
   LightLayerTiling tiling(shadowed, options);
-  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene(), camera, options, tiling);
   picture.layered = true;
   return picture;
 }

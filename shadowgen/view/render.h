@@ -113,8 +113,7 @@ struct Picture {
   std::optional<ScaleBar> scale_bar;  // orthographic views
 };
 
-// Throws std::invalid_argument for a bad camera or size (see CameraView) and when `lit`
-// is not shaped [face][light].
+// Throws std::invalid_argument for a bad camera or size (see CameraView).
 Picture render(const ShadowedScene& shadowed, const Camera& camera,
                const RenderOptions& options = {});
 

@@ -38,7 +38,7 @@ class SunHoursTiling : public view::detail::FaceTiling {
 
   void style(Piece& piece, std::size_t region, const glm::dvec3& /*centroid*/,
              const glm::dvec3& /*normal*/) const override {
-    piece.face_id = shadowed_.scene.faces[piece.face].id;
+    piece.face_id = shadowed_.scene().faces[piece.face].id;
     const double hours = region == view::detail::kNoRegion ? 0.0 : (*regions_)[region].hours;
     piece.sun_hours = hours;
     const HourBand& band = bands_.bands[bands_.band_of(hours)];
@@ -59,12 +59,12 @@ class SunHoursTiling : public view::detail::FaceTiling {
 Picture render_sun_hours(const ShadowedScene& shadowed, const SunPathHours& path,
                          const HourBands& bands, const Camera& camera,
                          const RenderOptions& options) {
-  require_regions(path, shadowed.scene.file, "a sun-hours map");
-  if (path.regions.size() != shadowed.scene.faces.size()) {
+  require_regions(path, shadowed.scene().file, "a sun-hours map");
+  if (path.regions.size() != shadowed.scene().faces.size()) {
     throw std::invalid_argument("the sun path's sun-hours regions are not one list per face");
   }
   SunHoursTiling tiling(shadowed, path, bands);
-  Picture picture = view::detail::paint_picture(shadowed.scene, camera, options, tiling);
+  Picture picture = view::detail::paint_picture(shadowed.scene(), camera, options, tiling);
   picture.legend.kind = "sun-hours";
   picture.legend.caption = bands.caption();
   for (const HourBand& band : bands.bands) {

@@ -28,7 +28,7 @@ LitAgreement lit_agreement(const ShadowedScene& shadowed, const PixelSurfaces& s
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
   };
   for (std::size_t l = 0; l < exact.lights; ++l) {
-    if (!shadowed.lit.kept(l)) continue;  // no lit polygons: 0 whatever the method
+    if (!shadowed.lit().kept(l)) continue;  // no lit polygons: 0 whatever the method
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = index(x, y);
@@ -63,7 +63,7 @@ ViewComparison compare_view_methods(const ShadowedScene& exact, const ViewSpec& 
   comparison.height = height;
   PixelSurfaces surfaces;
   comparison.surfaces_seconds = seconds_of([&] {
-    surfaces = pixel_surfaces(exact.scene, camera_from_view(view, false), width, height);
+    surfaces = pixel_surfaces(exact.scene(), camera_from_view(view, false), width, height);
   });
   PixelLitWeights reference;
   const double exact_seconds = seconds_of([&] {

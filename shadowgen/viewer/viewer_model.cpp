@@ -70,8 +70,7 @@ double face_area(const Face& face) {
 }  // namespace
 
 ViewerModel viewer_model(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
-  check_lit_shape(shadowed, "viewer_model");
+  const Scene& scene = shadowed.scene();
   LightSetGltf gltf = light_set_gltf(shadowed, GltfForm::kBinary, kPageModel);
   // The page's lights: those some light set holds, in the scene's order.
   std::vector<std::size_t> page_light(scene.lights.size(), scene.lights.size());
@@ -122,7 +121,7 @@ ViewerModel viewer_model(const ShadowedScene& shadowed) {
 
 ViewerModel viewer_model(const ShadowedScene& shadowed, const SunPathHours& path,
                          const HourBands& bands) {
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   require_regions(path, scene.file, "the viewer's sun-hours map");
   if (path.regions.size() != scene.faces.size()) {
     throw std::invalid_argument("the sun path's sun-hours regions are not one list per face");

@@ -34,9 +34,8 @@ struct ViewerModel {
   std::string description;  // the page's description, JSON
 };
 
-// The faces split by light sets. Throws as gltf_export: std::invalid_argument when `lit` is
-// not shaped [face][light], GenerationError naming the face where a region fails to
-// triangulate.
+// The faces split by light sets. Throws as gltf_export: GenerationError naming the face
+// where a region fails to triangulate.
 ViewerModel viewer_model(const ShadowedScene& shadowed);
 
 // One sun path's sun-hours regions by band: `path` one of shadowed.sun_paths, with its

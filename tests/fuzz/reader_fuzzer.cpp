@@ -299,13 +299,13 @@ std::string non_finite_in(const Scene& scene) {
 }
 
 std::string non_finite_in(const ShadowedScene& shadowed) {
-  std::string found = non_finite_in(shadowed.scene);
+  std::string found = non_finite_in(shadowed.scene());
   if (!found.empty()) return found;
-  for (std::size_t f = 0; f < shadowed.lit.size(); ++f) {
-    for (const auto& per_light : shadowed.lit[f]) {
+  for (std::size_t f = 0; f < shadowed.lit().size(); ++f) {
+    for (const auto& per_light : shadowed.lit()[f]) {
       for (const auto& lit : per_light) {
         if (!finite(polygon_of(lit))) {
-          return "face '" + shadowed.scene.faces[f].id + "': a lit detail's vertex coordinate";
+          return "face '" + shadowed.scene().faces[f].id + "': a lit detail's vertex coordinate";
         }
       }
     }
@@ -443,8 +443,8 @@ class ReaderCase {
       }
       if (verbose()) {
         std::size_t lit = 0;
-        for (std::size_t f = 0; f < generated.shadowed.lit.size(); ++f) {
-          for (const auto& per_light : std::as_const(generated.shadowed.lit)[f])
+        for (std::size_t f = 0; f < generated.shadowed.lit().size(); ++f) {
+          for (const auto& per_light : std::as_const(generated.shadowed.lit())[f])
             lit += per_light.size();
         }
         std::fprintf(stderr, "reader_fuzzer: %s: generated %zu lit polygon(s)\n", kind_name(kind_),
@@ -484,7 +484,7 @@ class ReaderCase {
     }
     if (verbose()) {
       std::fprintf(stderr, "reader_fuzzer: database: read %zu face(s), %zu light(s)\n",
-                   shadowed.scene.faces.size(), shadowed.scene.lights.size());
+                   shadowed.scene().faces.size(), shadowed.scene().lights.size());
     }
     if (enabled("finite", kind_)) {
       const std::string found = non_finite_in(shadowed);
@@ -497,7 +497,7 @@ class ReaderCase {
 
   // database-json, database-roundtrip and report on `shadowed`.
   void check_outputs(const ShadowedScene& shadowed, const std::string& what) {
-    if (shadowed.scene.faces.size() * shadowed.scene.lights.size() > kOutputRows) return;
+    if (shadowed.scene().faces.size() * shadowed.scene().lights.size() > kOutputRows) return;
     if (enabled("database-json", kind_)) {
       std::string text;
       try {
@@ -555,8 +555,8 @@ class ReaderCase {
       for (const ReportRow& row : report_rows(shadowed)) {
         if (!finite(row.area) || !finite(row.lit_area) || !finite(row.lit_fraction)) {
           violation("report",
-                    "report_rows(" + what + "): face '" + shadowed.scene.faces[row.face].id +
-                        "', light '" + shadowed.scene.lights[row.light].id + "': area " +
+                    "report_rows(" + what + "): face '" + shadowed.scene().faces[row.face].id +
+                        "', light '" + shadowed.scene().lights[row.light].id + "': area " +
                         number_text(row.area) + ", lit area " + number_text(row.lit_area) +
                         ", lit fraction " + number_text(row.lit_fraction));
         }
@@ -570,7 +570,7 @@ class ReaderCase {
       if (!found.empty()) {
         violation("report", "report_json(" + what + "): " + found + " not finite");
       }
-      if (!ids_hold_non_finite_token(shadowed.scene)) {
+      if (!ids_hold_non_finite_token(shadowed.scene())) {
         const std::string csv = report_csv(shadowed);
         if (has_non_finite_token(csv)) {
           violation("report", "report_csv(" + what + ") holds inf or nan:\n" + csv);

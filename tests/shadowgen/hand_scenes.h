@@ -5,6 +5,7 @@
 // and `generated`, which makes a scene's database from its JSON.
 
 #include <string>
+#include <utility>
 
 #include "shadowgen/scene/scene_reader.h"
 #include "shadowgen/shadows/generate.h"
@@ -99,16 +100,17 @@ inline hsr::Polygon3 unit_strip(double x0, double x1) {
   return {{{x0, 0, 0}, {x1, 0, 0}, {x1, 1, 0}, {x0, 1, 0}}, {}};
 }
 inline ShadowedScene sun_path_by_hand() {
-  ShadowedScene shadowed;
-  shadowed.scene.file = "test.json";
-  shadowed.scene.faces.push_back({"g", {unit_strip(0, 4)}, "test.json"});
+  Scene scene;
+  scene.file = "test.json";
+  scene.faces.push_back({"g", {unit_strip(0, 4)}, "test.json"});
   for (int k = 0; k < 4; ++k) {
     Light light;
     light.id = "p@" + std::to_string(k);
     light.sun = SunInstant{"p", "2026-03-21T1" + std::to_string(k) + ":00", 30, 180.0, 30.0};
-    shadowed.scene.lights.push_back(light);
+    scene.lights.push_back(light);
   }
-  shadowed.lit = LitTable(1, 4, std::vector<bool>(4, false));  // instants: lit areas alone
+  // instants: lit areas alone
+  ShadowedScene shadowed(std::move(scene), LitTable(1, 4, std::vector<bool>(4, false)));
   SunPathHours path;
   path.id = "p";
   path.step_min = 30;

@@ -75,16 +75,13 @@ void check_unique_ids(const std::vector<Item>& items, const char* kind) {
 }  // namespace
 
 void check_writable(const ShadowedScene& shadowed) {
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   check_unique_ids(scene.faces, "face");
   check_unique_ids(scene.lights, "light");
   check_unique_ids(scene.views, "view");
-  check_lit_shape(shadowed, "shadowed database");
-  if (!shadowed.method.exact()) {
+  if (const std::optional<Estimate>& estimate = shadowed.estimate()) {
     const WriteCheck check("a sampled method's lit areas");
-    if (shadowed.estimated_lit_area.size() != scene.lights.size()) check.fail("not per light");
-    for (const std::vector<double>& column : shadowed.estimated_lit_area) {
-      if (!column.empty() && column.size() != scene.faces.size()) check.fail("not per face");
+    for (const std::vector<double>& column : estimate->lit_area) {
       for (const double a : column) check.finite(a, "a lit area");
     }
   }
@@ -152,7 +149,7 @@ void check_writable(const ShadowedScene& shadowed) {
     const WriteCheck check("face '" + scene.faces[f].id + "'");
     if (scene.faces[f].parts.empty()) check.fail("the face has no parts");
     check.polygons(scene.faces[f].parts);
-    for (const std::vector<LitPolygon>& lit : shadowed.lit[f]) {
+    for (const std::vector<LitPolygon>& lit : shadowed.lit()[f]) {
       for (const LitPolygon& p : lit) {
         if (p.part >= scene.faces[f].parts.size()) {
           check.fail("a lit polygon on part " + std::to_string(p.part) + " of a face of " +

@@ -2,9 +2,8 @@
 
 namespace shadowgen::output::detail {
 
-SceneRegions scene_regions(const ShadowedScene& shadowed, std::string_view who) {
-  const Scene& scene = shadowed.scene;
-  check_lit_shape(shadowed, who);
+SceneRegions scene_regions(const ShadowedScene& shadowed) {
+  const Scene& scene = shadowed.scene();
   SceneRegions regions;
   regions.of_face.resize(scene.faces.size());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {

@@ -25,9 +25,8 @@ struct SceneRegions {
   LightSets sets;                                 // every set some region has
 };
 
-// Throws std::invalid_argument, the message starting with `who`, where `lit` is not shaped
-// [face][light], and what light_regions throws.
-SceneRegions scene_regions(const ShadowedScene& shadowed, std::string_view who);
+// The light regions of every face; throws what light_regions throws.
+SceneRegions scene_regions(const ShadowedScene& shadowed);
 
 // One name per set, all distinct: `format_name` of light_set_name() ("sun+lamp",
 // "shadow"), "~2", "~3", ... appended to a name a set before it (in LightSetLess order)

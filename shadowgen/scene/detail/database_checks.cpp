@@ -29,10 +29,10 @@ void check_lit_lists(const ShadowedScene& shadowed, const std::vector<std::size_
   hsr::for_each_in_parallel(faces, [&](std::size_t f) {
     const std::size_t end = f + 1 < faces ? lists_of_face[f + 1] : lists.size();
     if (lists_of_face[f] == end) return;
-    const LitChecker checker(shadowed.scene.faces[f]);
+    const LitChecker checker(shadowed.scene().faces[f]);
     for (std::size_t k = lists_of_face[f]; k < end; ++k) {
       try {
-        problems[k] = checker.check(shadowed.lit[f][lists[k].light]);
+        problems[k] = checker.check(shadowed.lit()[f][lists[k].light]);
       } catch (const clipper::SnapRoundingError& e) {
         unsettled[k] = e.what();
       }
@@ -49,12 +49,12 @@ void check_lit_lists(const ShadowedScene& shadowed, const std::vector<std::size_
 
 void check_sun_hours_sums(const ShadowedScene& shadowed,
                           const std::vector<std::vector<JsonPlace>>& places) {
-  const std::size_t faces = shadowed.scene.faces.size();
+  const std::size_t faces = shadowed.scene().faces.size();
   for (std::size_t p = 0; p < shadowed.sun_paths.size(); ++p) {
     const SunPathHours& path = shadowed.sun_paths[p];
     std::vector<std::optional<std::string>> problems(faces), unsettled(faces);
     hsr::for_each_in_parallel(faces, [&](std::size_t f) {
-      const Face& face = shadowed.scene.faces[f];
+      const Face& face = shadowed.scene().faces[f];
       try {
         if (!shadowed.shard) {
           problems[f] = sun_hours_problem(face, path, f);

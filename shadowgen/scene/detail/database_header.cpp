@@ -49,9 +49,10 @@ Method read_method(const JsonValue& value) {
 // Per light, whether faces may list its lit polygons: not for the instants of a path
 // whose instant polygons were dropped (only their lit areas are kept), and for no light
 // of a sampled method.
-std::vector<bool> kept_lights(const ShadowedScene& shadowed) {
-  std::vector<bool> kept(shadowed.scene.lights.size(), shadowed.method.exact());
-  for (const SunPathHours& path : shadowed.sun_paths) {
+std::vector<bool> kept_lights(std::size_t lights, bool exact,
+                              const std::vector<SunPathHours>& paths) {
+  std::vector<bool> kept(lights, exact);
+  for (const SunPathHours& path : paths) {
     if (path.lit_polygons_kept) continue;
     for (const std::size_t l : path.instants) kept[l] = false;
   }
@@ -104,7 +105,8 @@ Site read_site(const JsonValue& value) {
 // "sun_paths": each path's instants are the lights whose "sun" names it, in order: each
 // at a time on the path's steps from "from" to "to", after the one before it. A path
 // may have none (the sun below the horizon at every step: a polar night).
-void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
+void read_sun_paths(const JsonValue& value, const Scene& scene,
+                    const std::optional<ShardPlace>& shard, std::vector<SunPathHours>& out) {
   const JsonArray paths = value.array();
   IdRegistry ids;
   for (std::size_t i = 0; i < paths.size(); ++i) {
@@ -120,7 +122,7 @@ void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
       kept.fail("expected 'kept' or 'dropped'");
     }
     path.lit_polygons_kept = kept.string() == key::kKept;
-    if (shadowed.shard && path.lit_polygons_kept) {
+    if (shard && path.lit_polygons_kept) {
       kept.fail(
           "a shard keeps its instants' lit areas alone: \"instant_polygons\" must be "
           "\"dropped\" (generate --instants does not take --keep-instants)");
@@ -131,11 +133,10 @@ void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
     }
     const std::int64_t step_s = std::int64_t{path.step_min} * 60;
     std::int64_t before = 0;  // the time of the path's instant before
-    for (std::size_t l = 0; l < shadowed.scene.lights.size(); ++l) {
-      const std::optional<SunInstant>& sun = shadowed.scene.lights[l].sun;
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+      const std::optional<SunInstant>& sun = scene.lights[l].sun;
       if (!sun || sun->sun_id != path.id) continue;
-      const std::string instant =
-          "light '" + one_line(shadowed.scene.lights[l].id) + "' of this path";
+      const std::string instant = "light '" + one_line(scene.lights[l].id) + "' of this path";
       if (sun->step_min != path.step_min) {
         step.fail(instant + " stands for " + std::to_string(sun->step_min) +
                   " minutes, the path says " + std::to_string(path.step_min));
@@ -155,7 +156,7 @@ void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
                   std::to_string(path.step_min) + "-minute steps from " + path.from);
       }
       if (!path.instants.empty() && at <= before) {
-        const Light& last = shadowed.scene.lights[path.instants.back()];
+        const Light& last = scene.lights[path.instants.back()];
         entry.value().fail(instant + " is at " + sun->time + ", " +
                            (at == before ? "the time" : "before the time") + " of light '" +
                            one_line(last.id) + "' before it (" + last.sun->time +
@@ -165,12 +166,12 @@ void read_sun_paths(const JsonValue& value, ShadowedScene& shadowed) {
       path.instants.push_back(l);
     }
     entry.finish();
-    if (shadowed.shard) {
-      const IndexRun own = shard_instants(path.instants.size(), *shadowed.shard);
+    if (shard) {
+      const IndexRun own = shard_instants(path.instants.size(), *shard);
       path.shard_first = own.first;
       path.shard_last = own.last;
     }
-    shadowed.sun_paths.push_back(std::move(path));
+    out.push_back(std::move(path));
   }
 }
 
@@ -186,37 +187,41 @@ DatabaseHeader read_database_header(JsonObject& top, ShadowedScene& shadowed) {
                 std::string(database::kInlineFormat) + "'");
   }
   header.layout = *layout;
-  if (const std::optional<JsonValue> shard = top.find(key::kShard)) {
-    shadowed.shard = read_shard(*shard);
-  }
-  if (const std::optional<JsonValue> method = top.find(key::kMethod)) {
-    shadowed.method = read_method(*method);
-    if (shadowed.shard && !shadowed.method.exact()) {
-      method->fail("a shard is made by the exact method only");
+  std::optional<ShardPlace> shard;
+  if (const std::optional<JsonValue> value = top.find(key::kShard)) shard = read_shard(*value);
+  std::optional<Method> sampled;
+  if (const std::optional<JsonValue> value = top.find(key::kMethod)) {
+    const Method method = read_method(*value);
+    if (!method.exact()) {
+      if (shard) value->fail("a shard is made by the exact method only");
+      sampled = method;
     }
   }
-  if (const std::optional<JsonValue> site = top.find(key::kSite)) {
-    shadowed.scene.site = read_site(*site);
-  }
+  Scene scene;
+  scene.file = shadowed.scene().file;
+  if (const std::optional<JsonValue> site = top.find(key::kSite)) scene.site = read_site(*site);
   const JsonArray lights = top.get(key::kLights).array();
   IdRegistry light_ids;
   for (std::size_t i = 0; i < lights.size(); ++i) {
-    shadowed.scene.lights.push_back(read_light(lights.at(i), light_ids, Source::kDatabase));
-    header.light_index.emplace(shadowed.scene.lights.back().id, i);
+    scene.lights.push_back(read_light(lights.at(i), light_ids, Source::kDatabase));
+    header.light_index.emplace(scene.lights.back().id, i);
   }
   const JsonArray views = top.get(key::kViews).array();
   IdRegistry view_ids;
   for (std::size_t i = 0; i < views.size(); ++i) {
-    shadowed.scene.views.push_back(read_view(views.at(i), view_ids, Source::kDatabase));
+    scene.views.push_back(read_view(views.at(i), view_ids, Source::kDatabase));
   }
-  if (const std::optional<JsonValue> paths = top.find(key::kSunPaths)) {
-    read_sun_paths(*paths, shadowed);
+  std::vector<SunPathHours> paths;
+  if (const std::optional<JsonValue> value = top.find(key::kSunPaths)) {
+    read_sun_paths(*value, scene, shard, paths);
   }
-  for (const SunPathHours& path : shadowed.sun_paths) {
-    shadowed.scene.sun_paths.push_back({path.id, path.step_min, path.from, path.to});
+  for (const SunPathHours& path : paths) {
+    scene.sun_paths.push_back({path.id, path.step_min, path.from, path.to});
   }
-  if (!shadowed.method.exact()) {
-    for (const SunPathHours& path : shadowed.sun_paths) {
+  const std::size_t light_count = scene.lights.size();
+  LitTable lit(0, light_count, kept_lights(light_count, !sampled, paths));
+  if (sampled) {
+    for (const SunPathHours& path : paths) {
       if (path.regions_kept || path.lit_polygons_kept) {
         top.get(key::kSunPaths)
             .fail("sun path '" + one_line(path.id) +
@@ -224,15 +229,17 @@ DatabaseHeader read_database_header(JsonObject& top, ShadowedScene& shadowed) {
                   "and \"instant_polygons\" must be \"dropped\"");
       }
     }
-  }
-  shadowed.lit = LitTable(0, shadowed.scene.lights.size(), kept_lights(shadowed));
-  if (!shadowed.method.exact()) {
-    shadowed.estimated_lit_area.resize(shadowed.scene.lights.size());
-    header.instant.assign(shadowed.scene.lights.size(), 0);
-    for (const SunPathHours& path : shadowed.sun_paths) {
+    header.instant.assign(light_count, 0);
+    for (const SunPathHours& path : paths) {
       for (const std::size_t l : path.instants) header.instant[l] = 1;
     }
+    shadowed = ShadowedScene(std::move(scene), std::move(lit),
+                             Estimate{*sampled, std::vector<std::vector<double>>(light_count)});
+  } else {
+    shadowed = ShadowedScene(std::move(scene), std::move(lit));
   }
+  shadowed.sun_paths = std::move(paths);
+  shadowed.shard = shard;
   return header;
 }
 

@@ -22,10 +22,11 @@ struct DatabaseHeader {
   std::vector<char> instant;  // a sampled method's: per light, whether it is a path's instant
 };
 
-// Reads the header's members of `top` into `shadowed`: its scene's site, lights, views and
-// sun paths, its shard, method and sun paths (each path's instants the lights whose "sun"
-// names it, on the path's steps, in time order), and its lit table with no face yet. A
-// member out of its rules fails at its place in the file (InputError).
+// Makes `shadowed` (keeping its scene's file) what the header's members of `top` say: its
+// scene's site, lights, views and sun paths, its shard, its method (an estimate with no
+// face yet, or exact) and sun paths (each path's instants the lights whose "sun" names it,
+// on the path's steps, in time order), and its lit table with no face yet. A member out of
+// its rules fails at its place in the file (InputError).
 DatabaseHeader read_database_header(JsonObject& top, ShadowedScene& shadowed);
 
 }  // namespace shadowgen::scene::detail

@@ -31,10 +31,10 @@ std::vector<std::string> lines_of(const std::string& text) {
 // "test.json", the file of its faces too.
 ShadowedScene by_hand(int step_min, const std::string& from, const std::string& to,
                       const std::vector<std::tuple<std::string, double, double>>& lit) {
-  ShadowedScene shadowed;
-  shadowed.scene.file = "test.json";
-  shadowed.scene.faces.push_back({"roof", {test::unit_strip(0, 4)}, "test.json"});
-  shadowed.scene.faces.push_back({"Wall-South", {test::unit_strip(0, 2)}, "test.json"});
+  Scene scene;
+  scene.file = "test.json";
+  scene.faces.push_back({"roof", {test::unit_strip(0, 4)}, "test.json"});
+  scene.faces.push_back({"Wall-South", {test::unit_strip(0, 2)}, "test.json"});
   SunPathHours path;
   path.id = "day";
   path.step_min = step_min;
@@ -47,12 +47,13 @@ ShadowedScene by_hand(int step_min, const std::string& from, const std::string& 
     Light light;
     light.id = "day@" + time;
     light.sun = SunInstant{"day", time, step_min, 180.0, 30.0};
-    path.instants.push_back(shadowed.scene.lights.size());
-    shadowed.scene.lights.push_back(light);
+    path.instants.push_back(scene.lights.size());
+    scene.lights.push_back(light);
     path.lit_area[0].push_back(roof);
     path.lit_area[1].push_back(wall);
   }
-  shadowed.lit = LitTable(2, lit.size(), std::vector<bool>(lit.size(), false));
+  ShadowedScene shadowed(std::move(scene),
+                         LitTable(2, lit.size(), std::vector<bool>(lit.size(), false)));
   shadowed.sun_paths.push_back(std::move(path));
   return shadowed;
 }
@@ -78,12 +79,16 @@ TEST(EnergyPlusShading, OneRowPerHourStampedWithItsEndHoldingTheInstantThatStart
 TEST(EnergyPlusShading, AnEnergyPlusModelsFaceIsNamedByItsSurfaceNameAlone) {
   ShadowedScene shadowed =
       by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {{"2026-06-21T12:00", 4, 0.875}});
-  shadowed.scene.faces[1].id = "house/Zn001:Wall-South";
-  shadowed.scene.faces[1].origin = {"energyplus", "Zn001:Wall-South", "Zn001", "Wall"};
+  shadowed.edit_scene([&](Scene& scene) { scene.faces[1].id = "house/Zn001:Wall-South"; });
+  shadowed.edit_scene([&](Scene& scene) {
+    scene.faces[1].origin = {"energyplus", "Zn001:Wall-South", "Zn001", "Wall"};
+  });
   EXPECT_EQ(lines_of(energyplus_shading(shadowed).csv)[0], "Surface Name,ROOF,ZN001:WALL-SOUTH,");
   // Two models' surfaces of one name cannot both be EnergyPlus surfaces.
-  shadowed.scene.faces[0].id = "other/zn001:wall-south";
-  shadowed.scene.faces[0].origin = {"energyplus", "zn001:wall-south", "Zn001", "Wall"};
+  shadowed.edit_scene([&](Scene& scene) { scene.faces[0].id = "other/zn001:wall-south"; });
+  shadowed.edit_scene([&](Scene& scene) {
+    scene.faces[0].origin = {"energyplus", "zn001:wall-south", "Zn001", "Wall"};
+  });
   try {
     energyplus_shading(shadowed);
     FAIL() << "no error";
@@ -148,12 +153,12 @@ TEST(EnergyPlusShading, WhatEnergyPlusCouldNotReadIsRefused) {
             "test.json: sun path 'day' starts at 2026-06-21T00:05, not at the start of one of its "
             "10-minute time steps in the day");
   ShadowedScene comma = by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {});
-  comma.scene.faces[1].id = "wall,south";
+  comma.edit_scene([&](Scene& scene) { scene.faces[1].id = "wall,south"; });
   EXPECT_EQ(error_of(comma),
             "test.json: face 'wall,south': cannot be an EnergyPlus surface name: it holds a "
             "comma, which separates fields");
   ShadowedScene same = by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {});
-  same.scene.faces[1].id = "Roof";
+  same.edit_scene([&](Scene& scene) { scene.faces[1].id = "Roof"; });
   EXPECT_EQ(error_of(same),
             "test.json: face 'Roof': is the EnergyPlus surface name ROOF in upper case, as face "
             "'roof' is");
@@ -174,7 +179,7 @@ TEST(EnergyPlusShading, ErrorsNameTheInputReadNotTheSceneItsFacesCameFrom) {
   // The path by hand, read from "db.json"; its faces came from "test.json".
   const auto from_db = [] {
     ShadowedScene shadowed = by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {});
-    shadowed.scene.file = "db.json";
+    shadowed.edit_scene([&](Scene& scene) { scene.file = "db.json"; });
     return shadowed;
   };
   ShadowedScene none = from_db();
@@ -183,12 +188,12 @@ TEST(EnergyPlusShading, ErrorsNameTheInputReadNotTheSceneItsFacesCameFrom) {
             "db.json: has no sun path (a `sun` light with from, to and step_min) to report a "
             "shading schedule of");
   ShadowedScene same = from_db();
-  same.scene.faces[1].id = "Roof";
+  same.edit_scene([&](Scene& scene) { scene.faces[1].id = "Roof"; });
   EXPECT_EQ(error_of(same),
             "db.json: face 'Roof': is the EnergyPlus surface name ROOF in upper case, as face "
             "'roof' is");
   ShadowedScene comma = from_db();
-  comma.scene.faces[0].id = "roof,north";
+  comma.edit_scene([&](Scene& scene) { scene.faces[0].id = "roof,north"; });
   EXPECT_EQ(error_of(comma),
             "db.json: face 'roof,north': cannot be an EnergyPlus surface name: it holds a comma, "
             "which separates fields");

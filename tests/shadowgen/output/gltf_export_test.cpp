@@ -51,9 +51,9 @@ GltfFile read_back(const std::string& bytes, GltfForm form) {
 // every face (the OBJ export's and the glTF export's pieces).
 std::map<std::string, double> light_set_areas(const ShadowedScene& shadowed) {
   std::map<std::string, double> areas;
-  for (std::size_t f = 0; f < shadowed.scene.faces.size(); ++f) {
+  for (std::size_t f = 0; f < shadowed.scene().faces.size(); ++f) {
     for (const LightRegion& r : light_regions(shadowed, f)) {
-      areas[light_set_name(shadowed.scene, r.lights)] += lit_area(r.polygons);
+      areas[light_set_name(shadowed.scene(), r.lights)] += lit_area(r.polygons);
     }
   }
   return areas;
@@ -162,7 +162,7 @@ TEST(GltfExport, MaterialsAreTheMtlColoursTwoSidedAndUnlit) {
   ASSERT_EQ(file.json["materials"].size(), sets.size());
   for (std::size_t m = 0; m < sets.size(); ++m) {
     const nlohmann::json& material = file.json["materials"][m];
-    const glm::dvec3 srgb = light_set_colour(s.scene, sets[m]);
+    const glm::dvec3 srgb = light_set_colour(s.scene(), sets[m]);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(base_colour(material, c), linear(srgb[c]));
     EXPECT_EQ(base_colour(material, 3), 1.0);
     EXPECT_EQ(material["pbrMetallicRoughness"]["metallicFactor"], 0.0);
@@ -382,7 +382,7 @@ TEST(GltfExport, CourtyardSunHoursKeepTheSiteAndTheBandsAreas) {
 // with U+FFFD in place of the bad byte: glTF's JSON is UTF-8, and the export goes on.
 TEST(GltfExport, AFaceIdThatIsNotUtf8IsWrittenWithReplacementCharacters) {
   ShadowedScene s = generated(kTwoLights);
-  s.scene.faces[0].id = "ground\xff";
+  s.edit_scene([&](Scene& scene) { scene.faces[0].id = "ground\xff"; });
   for (const GltfForm form : kForms) {
     GltfFile file = read_back(gltf_export(s, form), form);
     EXPECT_EQ(file.json["scenes"][0]["extras"]["faces"]["id"][0], "ground\xef\xbf\xbd");
@@ -392,8 +392,7 @@ TEST(GltfExport, AFaceIdThatIsNotUtf8IsWrittenWithReplacementCharacters) {
 TEST(GltfExport, ASceneWithoutFacesIsStillAFile) {
   Scene empty;
   empty.file = "empty.json";
-  ShadowedScene s;
-  s.scene = empty;
+  const ShadowedScene s(empty, LitTable());
   GltfFile file = read_back(gltf_export(s, GltfForm::kBinary), GltfForm::kBinary);
   EXPECT_FALSE(file.json.contains("meshes"));
   EXPECT_FALSE(file.json.contains("buffers"));

@@ -35,17 +35,17 @@ Light light(std::string id) {
 // it whole (6), the lamp 1 × 1; c/0: 4 × 4 less a 1 × 2 hole (14), the sun lights 3 × 2 (6),
 // the lamp nothing.
 ShadowedScene three_faces() {
-  ShadowedScene s;
-  s.scene.file = "hand.json";
+  Scene scene;
+  scene.file = "hand.json";
   Polygon3 c = rectangle(0, 20, 4, 24);
   c.holes.push_back({{1, 21, 0}, {1, 23, 0}, {2, 23, 0}, {2, 21, 0}});
-  s.scene.faces = {Face{"a", {rectangle(0, 0, 10, 10)}, "hand.json"},
-                   Face{"b", {rectangle(20, 0, 22, 3)}, "hand.json"},
-                   Face{"c/0", {c}, "hand.json"}};
-  s.scene.lights = {light("sun"), light("lamp")};
-  s.lit = LitTable({{{{0, rectangle(0, 0, 4, 5)}}, {}},
-                    {{{0, rectangle(20, 0, 22, 3)}}, {{0, rectangle(20, 0, 21, 1)}}},
-                    {{{0, rectangle(2, 20, 4, 23)}}, {}}});
+  scene.faces = {Face{"a", {rectangle(0, 0, 10, 10)}, "hand.json"},
+                 Face{"b", {rectangle(20, 0, 22, 3)}, "hand.json"}, Face{"c/0", {c}, "hand.json"}};
+  scene.lights = {light("sun"), light("lamp")};
+  ShadowedScene s(std::move(scene),
+                  LitTable({{{{0, rectangle(0, 0, 4, 5)}}, {}},
+                            {{{0, rectangle(20, 0, 22, 3)}}, {{0, rectangle(20, 0, 21, 1)}}},
+                            {{{0, rectangle(2, 20, 4, 23)}}, {}}}));
   return s;
 }
 
@@ -128,8 +128,7 @@ TEST(ReportTable, AGroupBlockFollowsTheLightsTotals) {
 // 2 × 1: 1 h on one half, 2.5 h on the other.
 ShadowedScene two_faces_in_the_sun() {
   ShadowedScene s = test::sun_path_by_hand();
-  s.scene.faces.push_back({"h", {rectangle(0, 2, 2, 3)}, "test.json"});
-  s.lit = LitTable(2, 4, std::vector<bool>(4, false));
+  s.add_face({"h", {rectangle(0, 2, 2, 3)}, "test.json"});
   SunPathHours& path = s.sun_paths[0];
   path.lit_area.push_back({1, 1, 2, 1});
   path.part_lit_area.push_back({});

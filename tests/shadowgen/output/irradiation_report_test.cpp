@@ -78,7 +78,7 @@ TEST(IrradiationReport, ALoneSouthWallGetsTheCosineOfTheSunsAzimuthAndElevation)
   ASSERT_EQ(rows.size(), 1u);
   double expected = 0.0;
   for (const std::size_t l : shadowed.sun_paths[0].instants) {
-    const SunInstant& sun = *shadowed.scene.lights[l].sun;
+    const SunInstant& sun = *shadowed.scene().lights[l].sun;
     const int hour = std::stoi(sun.time.substr(11, 2)) + 1;
     const double a = sun.azimuth_deg * M_PI / 180.0, e = sun.elevation_deg * M_PI / 180.0;
     const double cosine = -std::cos(a) * std::cos(e);
@@ -102,17 +102,17 @@ TEST(IrradiationReport, EachPartOfAFaceCountsWithItsOwnCosine) {
   GenerateOptions keep;
   keep.keep_instant_polygons = true;
   const ShadowedScene kept = generate_shadows(parse_scene(scene, "test.json").scene, keep).shadowed;
-  const Face& dart = kept.scene.faces[0];
+  const Face& dart = kept.scene().faces[0];
   ASSERT_EQ(dart.parts.size(), 2u);
   const Weather weather = weather_of(3, 21, 1);
   double expected = 0.0;
   bool both_parts_lit = false;
   for (const std::size_t l : kept.sun_paths[0].instants) {
-    const Light& light = kept.scene.lights[l];
+    const Light& light = kept.scene().lights[l];
     const int hour = std::stoi(light.sun->time.substr(11, 2)) + 1;
     const glm::dvec3 to_sun = -glm::normalize(light.direction);
     bool lit_on[2] = {false, false};
-    for (const LitPolygon& p : kept.lit[0][l]) {
+    for (const LitPolygon& p : kept.lit()[0][l]) {
       const glm::dvec3 normal = glm::normalize(hsr::newell_vector(dart.parts[p.part].outer));
       expected +=
           test_direct_normal(21, hour) * hsr::area(p.polygon) * glm::dot(normal, to_sun) * 0.5;

@@ -54,7 +54,7 @@ Report report_of(const ShadowedScene& shadowed, const Weather& weather,
   Report r;
   sky::SkyOptions sky_options;
   sky_options.subdivisions = n;
-  r.exposure = sky::sky_exposure(shadowed.scene, sky_options);
+  r.exposure = sky::sky_exposure(shadowed.scene(), sky_options);
   r.skies = path_skies(shadowed, r.exposure.patches, weather, options);
   r.rows = radiation_rows(shadowed, r.exposure, r.skies, weather);
   return r;
@@ -73,7 +73,7 @@ TEST(RadiationReport, AnOpenHorizontalFaceGetsTheHoursDiffuseAndDirectNormalTime
   ASSERT_EQ(r.rows.size(), 1u);
   double diffuse = 0.0, direct = 0.0;
   for (const std::size_t l : shadowed.sun_paths[0].instants) {
-    const SunInstant& sun = *shadowed.scene.lights[l].sun;
+    const SunInstant& sun = *shadowed.scene().lights[l].sun;
     diffuse += diffuse_of(hour_of(sun));
     direct += direct_of(hour_of(sun)) * std::sin(sun.elevation_deg * kPi / 180.0);
   }
@@ -95,7 +95,7 @@ TEST(RadiationReport, AnOpenWallGetsHalfTheAlbedoTimesGlobalHorizontal) {
       test::site_scene(R"({"id": "wall", "outer": [[0,0,0],[4,0,0],[4,0,3],[0,0,3]]})", kMarch21));
   double global = 0.0;
   for (const std::size_t l : shadowed.sun_paths[0].instants) {
-    global += global_of(hour_of(*shadowed.scene.lights[l].sun));
+    global += global_of(hour_of(*shadowed.scene().lights[l].sun));
   }
   const Report from_file = report_of(shadowed, weather_of(3, 21, "0.3"), {}, 1);
   EXPECT_NEAR(from_file.rows[0].ground_wh / 12.0 / (0.3 * global * 0.5), 1.0, 1e-12);
@@ -137,7 +137,7 @@ TEST(RadiationReport, AFaceUnderALongOverhangGetsNoDirectAndTheClosedFormsDiffus
       R"("from": "2026-06-21T10:00", "to": "2026-06-21T14:00", "step_min": 60)"));
   const Weather weather = weather_of(6, 21);
   sky::SkyOptions sky_options;
-  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene, sky_options);
+  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene(), sky_options);
   const double radiance = 1.0;  // Wh/m²/sr on every patch: isotropic
   const std::vector<PathSky> isotropic{
       {std::vector<double>(exposure.patches.size(), radiance), 0.0}};
@@ -160,7 +160,7 @@ TEST(RadiationReport, TheCsvGivesEveryColumnPerFaceAndPath) {
   const Weather weather = weather_of(3, 21);
   sky::SkyOptions sky_options;
   sky_options.subdivisions = 1;
-  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene, sky_options);
+  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene(), sky_options);
   const std::string csv = radiation_csv(shadowed, exposure, weather);
   const Report r = report_of(shadowed, weather, {}, 1);
   const RadiationRow& row = r.rows[0];
@@ -185,7 +185,7 @@ TEST(RadiationReport, AnHourWithoutDiffuseOrGlobalRadiationIsAnError) {
   for (int h = 1; h <= 24; ++h) {
     lines.push_back(test::epw_row(3, 21, h, "500", "400", h == 13 ? "9999" : "100", "0.2"));
   }
-  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene, {});
+  const sky::SkyExposure exposure = sky::sky_exposure(shadowed.scene(), {});
   try {
     (void)path_skies(shadowed, exposure.patches, weather::parse_epw(test::joined(lines), "t.epw"));
     FAIL() << "no error";

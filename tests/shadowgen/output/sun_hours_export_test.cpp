@@ -80,7 +80,7 @@ TEST(SunHoursExport, HandMadeRegionsByBand) {
 
 TEST(SunHoursExport, GroupNamesEscapeTheFaceIdAndSplitAtTheLastAt) {
   ShadowedScene shadowed = sun_path_by_hand();
-  shadowed.scene.faces[0].id = "the ground@2#";
+  shadowed.edit_scene([&](Scene& scene) { scene.faces[0].id = "the ground@2#"; });
   const SunPathHours& path = shadowed.sun_paths[0];
   const std::vector<double> edges{1};
   const ObjFiles files = sun_hours_obj_export(shadowed, path, hour_bands(path, edges), "m.mtl");
@@ -92,8 +92,7 @@ TEST(SunHoursExport, GroupNamesEscapeTheFaceIdAndSplitAtTheLastAt) {
 
 TEST(SunHoursExport, AFaceWithoutRegionsGetsTheFirstBandsEmptyGroup) {
   ShadowedScene shadowed = sun_path_by_hand();
-  shadowed.scene.faces.push_back({"dot", {{{{5, 0, 0}, {5, 0, 0}, {5, 0, 0}}, {}}}, "test.json"});
-  shadowed.lit.add_face();
+  shadowed.add_face({"dot", {{{{5, 0, 0}, {5, 0, 0}, {5, 0, 0}}, {}}}, "test.json"});
   SunPathHours& path = shadowed.sun_paths[0];
   path.regions.emplace_back();
   path.lit_area.push_back({0, 0, 0, 0});
@@ -122,15 +121,15 @@ TEST(SunHoursExport, EachGroupsAreaIsItsBandsRegionsAndAFacesGroupsItsArea) {
   // The database's side: region areas summed by face and band.
   std::map<std::string, double> expected;  // by group name
   std::map<std::string, std::size_t> face_of;
-  for (std::size_t f = 0; f < shadowed.scene.faces.size(); ++f) {
+  for (std::size_t f = 0; f < shadowed.scene().faces.size(); ++f) {
     for (const SunHoursRegion& region : path.regions[f]) {
       const std::string name =
-          shadowed.scene.faces[f].id + "@" + bands.bands[bands.band_of(region.hours)].name;
+          shadowed.scene().faces[f].id + "@" + bands.bands[bands.band_of(region.hours)].name;
       expected[name] += lit_area(region.polygons);
       face_of[name] = f;
     }
   }
-  std::vector<double> face_sums(shadowed.scene.faces.size(), 0.0);
+  std::vector<double> face_sums(shadowed.scene().faces.size(), 0.0);
   double worst = 0.0;
   std::size_t with_several = 0;
   for (const test::ObjGroup& group : obj.groups) {
@@ -145,8 +144,8 @@ TEST(SunHoursExport, EachGroupsAreaIsItsBandsRegionsAndAFacesGroupsItsArea) {
   }
   EXPECT_EQ(obj.groups.size(), expected.size());
   for (std::size_t f = 0; f < face_sums.size(); ++f) {
-    const double area = hsr::area(shadowed.scene.faces[f].parts);
-    EXPECT_LE(relative_error(face_sums[f], area), 1e-9) << shadowed.scene.faces[f].id;
+    const double area = hsr::area(shadowed.scene().faces[f].parts);
+    EXPECT_LE(relative_error(face_sums[f], area), 1e-9) << shadowed.scene().faces[f].id;
     with_several += path.regions[f].size() > 1;
   }
   EXPECT_GE(with_several, 2u);  // the ground and the wall, at least, are shaded in part

@@ -82,8 +82,8 @@ LoadOptions accepting(Accept accept) {
 TEST_F(LoadShadowed, AScenesShadowsAreGeneratedADatabaseIsReadAsItIs) {
   const fs::path scene = write("two.json", test::kTwoLights);
   const ShadowedScene from_scene = load_shadowed(scene, accepting(Accept::kSceneOrDatabase));
-  EXPECT_EQ(from_scene.scene.faces.size(), 2u);
-  EXPECT_DOUBLE_EQ(lit_area(from_scene.lit[0][0]), 84.0);  // ground less the square below
+  EXPECT_EQ(from_scene.scene().faces.size(), 2u);
+  EXPECT_DOUBLE_EQ(lit_area(from_scene.lit()[0][0]), 84.0);  // ground less the square below
 
   const fs::path db = dir_ / "two.shadowed.json";
   write_database(from_scene, db);
@@ -125,7 +125,7 @@ TEST_F(LoadShadowed, WarningsGoToTheCallbackAndStrictMakesThemErrors) {
     std::vector<std::string> warnings;
     LoadOptions options = accepting(accept);
     options.on_warning = [&](const std::string& w) { warnings.push_back(w); };
-    EXPECT_EQ(load_shadowed(scene, options).scene.faces.size(), 2u);
+    EXPECT_EQ(load_shadowed(scene, options).scene().faces.size(), 2u);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("bent"), std::string::npos) << warnings[0];
 

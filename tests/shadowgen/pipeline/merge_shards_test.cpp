@@ -75,8 +75,8 @@ TEST(MergeShards, AShardHoldsItsOwnInstantsAndTheOtherLightsOnlyInTheFirst) {
   EXPECT_TRUE(path.regions.empty());
   std::size_t lamp_polygons = 0, lamp_in_second = 0;
   for (std::size_t f = 0; f < court.faces.size(); ++f) {
-    lamp_polygons += first.shadowed.lit[f][0].size();
-    lamp_in_second += second.shadowed.lit[f][0].size();
+    lamp_polygons += first.shadowed.lit()[f][0].size();
+    lamp_in_second += second.shadowed.lit()[f][0].size();
   }
   EXPECT_GT(lamp_polygons, 0u);
   EXPECT_EQ(lamp_in_second, 0u);

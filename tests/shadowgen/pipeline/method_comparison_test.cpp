@@ -26,14 +26,15 @@ TEST(MethodRun, ASampledMethodFillsLitAreasOfPlainLightsAndSunPaths) {
   const ShadowedScene exact = shadows_by_method(scene, method_run(Method{}, options)).shadowed;
   const ShadowedScene rays =
       shadows_by_method(scene, method_run(Method{MethodKind::kRays, 4096}, options)).shadowed;
-  EXPECT_EQ(rays.method, (Method{MethodKind::kRays, 4096}));
+  ASSERT_TRUE(rays.estimate());
+  EXPECT_EQ(rays.estimate()->method, (Method{MethodKind::kRays, 4096}));
   ASSERT_EQ(rays.sun_paths.size(), 1u);
   const SunPathHours& path = rays.sun_paths.front();
   EXPECT_FALSE(path.regions_kept);
   EXPECT_FALSE(path.lit_polygons_kept);
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    EXPECT_FALSE(rays.lit.kept(l));
-    EXPECT_TRUE(rays.estimated_lit_area.at(l).empty());  // every light is an instant
+    EXPECT_FALSE(rays.lit().kept(l));
+    EXPECT_TRUE(rays.estimate()->lit_area.at(l).empty());  // every light is an instant
   }
   const LitAreas exact_areas(exact), estimated(rays);
   double worst = 0.0;
@@ -52,11 +53,13 @@ TEST(MethodRun, PlainLightsKeepTheirEstimatesPerLight) {
   const Scene scene = scene_of(test::kTwoLights);
   const ShadowedScene rays =
       shadows_by_method(scene, SampledRun{Method{MethodKind::kRays, 1024}, {}}).shadowed;
-  ASSERT_EQ(rays.estimated_lit_area.size(), 2u);
+  ASSERT_TRUE(rays.estimate());
+  const std::vector<std::vector<double>>& estimated = rays.estimate()->lit_area;
+  ASSERT_EQ(estimated.size(), 2u);
   // The ground (100) loses the square's shadow (16) under both lights; the square is lit.
-  EXPECT_NEAR(rays.estimated_lit_area[0][0], 84.0, 0.5);
-  EXPECT_NEAR(rays.estimated_lit_area[1][0], 84.0, 0.5);
-  EXPECT_EQ(rays.estimated_lit_area[0][1], 16.0);
+  EXPECT_NEAR(estimated[0][0], 84.0, 0.5);
+  EXPECT_NEAR(estimated[1][0], 84.0, 0.5);
+  EXPECT_EQ(estimated[0][1], 16.0);
   GenerateOptions keep;
   keep.keep_instant_polygons = true;
   EXPECT_THROW(method_run(Method{MethodKind::kRays, 16}, keep), std::invalid_argument);

@@ -54,7 +54,7 @@ std::vector<PartLitAreas> exact_part_areas(const Scene& scene) {
     for (std::size_t f = 0; f < scene.faces.size(); ++f) {
       out[l].emplace_back();
       for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k) {
-        out[l][f].push_back(hsr::area(polygons_on_part(shadowed.lit.at(f, l), k)));
+        out[l][f].push_back(hsr::area(polygons_on_part(shadowed.lit().at(f, l), k)));
       }
     }
   }

@@ -79,7 +79,7 @@ bool starts_with(const std::string& text, const std::string& start) {
 TEST(DatabaseReader, GoodLitPolygonsAreRead) {
   const ShadowedScene s =
       parse_database(database(square(0, 0, 1) + "," + square(2.5, 2.5, 1)), "db.json");
-  ASSERT_EQ(s.lit[0][0].size(), 2u);
+  ASSERT_EQ(s.lit()[0][0].size(), 2u);
   // Touching the face's boundary and touching each other is fine.
   EXPECT_NO_THROW(parse_database(
       database(square(0, 0, 1) + "," + square(1, 0, 1) + "," + square(3, 3, 1)), "db.json"));
@@ -95,9 +95,9 @@ TEST(DatabaseReader, LitPolygonsWithoutPartGoOnTheCoplanarPartThatHoldsThem) {
   const std::string parts = square(0, 0, 4) + "," + square(0, 6, 4);
   const ShadowedScene s =
       parse_database(database(square(1, 7, 1) + "," + square(1, 1, 2), parts), "db.json");
-  ASSERT_EQ(s.lit[0][0].size(), 2u);
-  EXPECT_EQ(s.lit[0][0][0].part, 1u);
-  EXPECT_EQ(s.lit[0][0][1].part, 0u);
+  ASSERT_EQ(s.lit()[0][0].size(), 2u);
+  EXPECT_EQ(s.lit()[0][0][0].part, 1u);
+  EXPECT_EQ(s.lit()[0][0][1].part, 0u);
 }
 
 TEST(DatabaseReader, LitAreaAboveTheFacesIsAnError) {
@@ -177,8 +177,8 @@ TEST(DatabaseReader, AModelFacePlanarWithinItsVertexRoundingReadsBack) {
   EXPECT_TRUE(starts_with(wall_problem(db.dump()), "faces[0].parts[0]: not planar"));
   db["faces"][0]["vertex_rounding"] = 0.000866;
   const ShadowedScene read = parse_database(db.dump(), "db.json");
-  ASSERT_EQ(read.scene.faces.size(), 1u);
-  EXPECT_EQ(read.scene.faces[0].vertex_rounding, 0.000866);
+  ASSERT_EQ(read.scene().faces.size(), 1u);
+  EXPECT_EQ(read.scene().faces[0].vertex_rounding, 0.000866);
   const std::string written = database_json(read);
   EXPECT_NE(written.find("\"vertex_rounding\": 0.000866,"), std::string::npos) << written;
   EXPECT_EQ(database_json(parse_database(written, "again.json")), written);
@@ -234,12 +234,12 @@ TEST(DatabaseReader, TheSiteIsWrittenAndReadBack) {
   nlohmann::ordered_json db = nlohmann::ordered_json::parse(database(square(0, 0, 1)));
   db["site"] = {{"latitude_deg", 51.5}, {"longitude_deg", -0.1}, {"utc_offset_h", 1}};
   const ShadowedScene read = parse_database(db.dump(), "db.json");
-  ASSERT_TRUE(read.scene.site.has_value());
-  EXPECT_EQ(read.scene.site->latitude_deg, 51.5);
-  EXPECT_EQ(read.scene.site->longitude_deg, -0.1);
-  EXPECT_EQ(read.scene.site->utc_offset_h, 1.0);
-  EXPECT_EQ(read.scene.site->elevation_m, 0.0);
-  EXPECT_EQ(read.scene.site->north_axis_deg, 0.0);
+  ASSERT_TRUE(read.scene().site.has_value());
+  EXPECT_EQ(read.scene().site->latitude_deg, 51.5);
+  EXPECT_EQ(read.scene().site->longitude_deg, -0.1);
+  EXPECT_EQ(read.scene().site->utc_offset_h, 1.0);
+  EXPECT_EQ(read.scene().site->elevation_m, 0.0);
+  EXPECT_EQ(read.scene().site->north_axis_deg, 0.0);
   const std::string written = database_json(read);
   EXPECT_NE(written.find("\"site\": {\"latitude_deg\":51.5,\"longitude_deg\":-0.1,"
                          "\"elevation_m\":0.0,\"utc_offset_h\":1.0,\"north_axis_deg\":0.0},\n"
@@ -252,7 +252,7 @@ TEST(DatabaseReader, TheSiteIsWrittenAndReadBack) {
   late.erase("site");
   late["site"] = db["site"];
   late["site"]["north_axis_deg"] = 30;
-  EXPECT_EQ(parse_database(late.dump(), "db.json").scene.site->north_axis_deg, 30.0);
+  EXPECT_EQ(parse_database(late.dump(), "db.json").scene().site->north_axis_deg, 30.0);
   // No site: none written.
   EXPECT_EQ(database_json(parse_database(database(square(0, 0, 1)), "db.json")).find("\"site\""),
             std::string::npos);
@@ -392,7 +392,7 @@ TEST(DatabaseReaderSunHours, SumsReadBackAsWritten) {
   const ShadowedScene read = parse_database(text, "db.json");
   ASSERT_EQ(read.sun_paths.size(), 1u);
   EXPECT_EQ(read.sun_paths[0].instants, (std::vector<std::size_t>{0, 1, 2, 3}));
-  EXPECT_EQ(read.scene.lights[2].sun->time, "2026-03-21T12:00");
+  EXPECT_EQ(read.scene().lights[2].sun->time, "2026-03-21T12:00");
   EXPECT_EQ(database_json(read), text);
 }
 
@@ -457,11 +457,14 @@ nlohmann::json court_shard() { return nlohmann::json::parse(court_shard_text());
 // does a face's error, which names the face.
 TEST(DatabaseReader, AMethodOrAShardAfterTheFacesReadsAsWritten) {
   const test::TempFolder folder("database_reader_order");
-  ShadowedScene sampled = test::sun_path_by_hand();
-  sampled.method = {MethodKind::kRays, 64};
+  const ShadowedScene by_hand = test::sun_path_by_hand();
+  const std::size_t lights = by_hand.scene().lights.size();
+  ShadowedScene sampled(
+      by_hand.scene(), by_hand.lit(),
+      Estimate{{MethodKind::kRays, 64}, std::vector<std::vector<double>>(lights)});
+  sampled.sun_paths = by_hand.sun_paths;
   sampled.sun_paths[0].regions_kept = false;
   sampled.sun_paths[0].regions.clear();
-  sampled.estimated_lit_area.assign(sampled.scene.lights.size(), {});
   const std::vector<std::string> written = {database_json(sampled), court_shard_text()};
   for (std::size_t i = 0; i < written.size(); ++i) {
     const nlohmann::ordered_json db = nlohmann::ordered_json::parse(written[i]);
@@ -600,7 +603,7 @@ TEST(DatabaseReaderSunHours, APathWithoutAnInstantReadsBackAsWritten) {
   EXPECT_EQ(night.from, "2026-12-21T00:00");
   EXPECT_EQ(night.to, "2026-12-21T23:00");
   EXPECT_TRUE(night.instants.empty());
-  EXPECT_TRUE(read.scene.lights.empty());
+  EXPECT_TRUE(read.scene().lights.empty());
   ASSERT_EQ(night.regions.size(), 1u);
   ASSERT_EQ(night.regions[0].size(), 1u);
   EXPECT_EQ(night.regions[0][0].hours, 0.0);

@@ -41,12 +41,12 @@ TEST(GroupEntries, AreReadInOrderAndKeptInTheDatabase) {
       R"([{"id": "garden", "faces": ["garden*"]}, {"id": "roofs", "faces": ["roof", "r?of"]}])";
   const ShadowedScene shadowed = test::generated(scene_with_groups(groups));
   const std::vector<FaceGroupSpec> expected{{"garden", {"garden*"}}, {"roofs", {"roof", "r?of"}}};
-  EXPECT_EQ(shadowed.scene.groups, expected);
+  EXPECT_EQ(shadowed.scene().groups, expected);
   const std::string text = database_json(shadowed);
   EXPECT_NE(text.find("\"groups\": [\n    {\"id\":\"garden\",\"faces\":[\"garden*\"]},"),
             std::string::npos)
       << text;
-  EXPECT_EQ(parse_database(text, "db.json").scene.groups, expected);
+  EXPECT_EQ(parse_database(text, "db.json").scene().groups, expected);
   // A database without groups has no "groups" key, as before groups were.
   EXPECT_EQ(database_json(test::generated(test::kTwoLights)).find("\"groups\""), std::string::npos);
 }

@@ -804,9 +804,9 @@ ShadowedScene shadowed(const std::string& obj_name, const std::string& obj) {
 
 TEST(PinchedFaces, APinchedFaceCastsTheShadowOfItsRegion) {
   const ShadowedScene s = shadowed("bow_above.obj", bow_obj(1));
-  ASSERT_EQ(s.scene.faces.size(), 2u);
-  EXPECT_NEAR(lit_area(s.lit[0][0]), 100.0 - 4.0, 1e-9);  // the ground
-  EXPECT_NEAR(lit_area(s.lit[1][0]), 4.0, 1e-9);          // the bow itself
+  ASSERT_EQ(s.scene().faces.size(), 2u);
+  EXPECT_NEAR(lit_area(s.lit()[0][0]), 100.0 - 4.0, 1e-9);  // the ground
+  EXPECT_NEAR(lit_area(s.lit()[1][0]), 4.0, 1e-9);          // the bow itself
 }
 
 TEST(PinchedFaces, AKeyholeFaceCastsTheShadowOfTheAnnulus) {
@@ -814,8 +814,8 @@ TEST(PinchedFaces, AKeyholeFaceCastsTheShadowOfTheAnnulus) {
       shadowed("keyhole_above.obj",
                "v -2 -2 1\nv 2 -2 1\nv 2 2 1\nv -2 2 1\nv -1 -1 1\nv -1 1 1\nv 1 1 1\nv 1 -1 1\n"
                "f 1 2 3 4 1 5 6 7 8 5\n");
-  EXPECT_NEAR(lit_area(s.lit[0][0]), 100.0 - 12.0, 1e-9);
-  EXPECT_NEAR(lit_area(s.lit[1][0]), 12.0, 1e-9);
+  EXPECT_NEAR(lit_area(s.lit()[0][0]), 100.0 - 12.0, 1e-9);
+  EXPECT_NEAR(lit_area(s.lit()[1][0]), 12.0, 1e-9);
 }
 
 }  // namespace

@@ -17,25 +17,26 @@ namespace shadowgen {
 namespace {
 
 // Face "g" (4 × 1) and face "h" (2 × 1) under lights "sun" and "lamp", and path "p" of
-// four instants (hand_scenes.h), as a rays run of 64 samples would leave them.
-ShadowedScene sampled_by_hand() {
-  ShadowedScene shadowed = test::sun_path_by_hand();
-  shadowed.scene.faces.push_back({"h", {test::unit_strip(5, 7)}, "test.json"});
+// four instants (hand_scenes.h), as a rays run of 64 samples (or `method`) would leave them.
+ShadowedScene sampled_by_hand(const Method& method = {MethodKind::kRays, 64}) {
+  const ShadowedScene by_hand = test::sun_path_by_hand();
+  Scene scene = by_hand.scene();
+  scene.faces.push_back({"h", {test::unit_strip(5, 7)}, "test.json"});
   Light sun, lamp;
   sun.id = "sun";
   lamp.id = "lamp";
   lamp.type = LightType::kPoint;
   lamp.position = {1, 1, 3};
-  shadowed.scene.lights.push_back(sun);
-  shadowed.scene.lights.push_back(lamp);
+  scene.lights.push_back(sun);
+  scene.lights.push_back(lamp);
+  ShadowedScene shadowed(std::move(scene), LitTable(2, 6, std::vector<bool>(6, false)),
+                         Estimate{method, {{}, {}, {}, {}, {3.25, 2.0}, {0.0, 1.5}}});
+  shadowed.sun_paths = by_hand.sun_paths;
   SunPathHours& path = shadowed.sun_paths.front();
   path.lit_area.push_back({2, 2, 0.5, 0});
   path.part_lit_area.push_back({});
   path.regions_kept = false;
   path.regions.clear();
-  shadowed.method = {MethodKind::kRays, 64};
-  shadowed.lit = LitTable(2, 6, std::vector<bool>(6, false));
-  shadowed.estimated_lit_area = {{}, {}, {}, {}, {3.25, 2.0}, {0.0, 1.5}};
   return shadowed;
 }
 
@@ -63,8 +64,9 @@ TEST(SampledDatabase, ReadsBackAsWritten) {
   EXPECT_NE(text.find(R"("method": {"name":"rays","samples":64})"), std::string::npos) << text;
   EXPECT_EQ(text.find(R"("lit":)"), std::string::npos);
   const ShadowedScene read = parse_database(text, "db.json");
-  EXPECT_EQ(read.method, written.method);
-  EXPECT_EQ(read.estimated_lit_area, written.estimated_lit_area);
+  ASSERT_TRUE(read.estimate());
+  EXPECT_EQ(read.estimate()->method, written.estimate()->method);
+  EXPECT_EQ(read.estimate()->lit_area, written.estimate()->lit_area);
   EXPECT_EQ(read.sun_paths.front().lit_area, written.sun_paths.front().lit_area);
   EXPECT_EQ(database_json(read), text);
   const LitAreas areas(read);
@@ -74,11 +76,13 @@ TEST(SampledDatabase, ReadsBackAsWritten) {
 }
 
 TEST(SampledDatabase, ShadowMapNamesItsResolution) {
-  ShadowedScene shadowed = sampled_by_hand();
-  shadowed.method = {MethodKind::kShadowMap, 16, 512};
+  const Method shadow_map{MethodKind::kShadowMap, 16, 512};
+  const ShadowedScene shadowed = sampled_by_hand(shadow_map);
   const std::string text = database_json(shadowed);
   EXPECT_NE(text.find(R"({"name":"shadow-map","samples":16,"resolution":512})"), std::string::npos);
-  EXPECT_EQ(parse_database(text, "db.json").method, shadowed.method);
+  const ShadowedScene read = parse_database(text, "db.json");
+  ASSERT_TRUE(read.estimate());
+  EXPECT_EQ(read.estimate()->method, shadow_map);
 }
 
 TEST(SampledDatabase, ReportsNameTheMethod) {
@@ -138,7 +142,7 @@ TEST(SampledDatabase, AnExactDatabaseIsWrittenAsBefore) {
   const std::string text = database_json(exact);
   EXPECT_EQ(text.find("method"), std::string::npos);
   EXPECT_EQ(text.find("lit_area\": {"), std::string::npos);
-  EXPECT_TRUE(parse_database(text, "db.json").method.exact());
+  EXPECT_TRUE(parse_database(text, "db.json").is_exact());
 }
 
 }  // namespace

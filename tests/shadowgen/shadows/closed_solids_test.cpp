@@ -161,7 +161,7 @@ void ExpectSameLitAreas(const Scene& scene, std::size_t least_left_out) {
     EXPECT_EQ(with.stats[l].faces_facing_away, without.stats[l].faces_facing_away);
     for (std::size_t f = 0; f < scene.faces.size(); ++f) {
       const double area = hsr::area(scene.faces[f].parts);
-      EXPECT_NEAR(lit_area(with.shadowed.lit[f][l]), lit_area(without.shadowed.lit[f][l]),
+      EXPECT_NEAR(lit_area(with.shadowed.lit()[f][l]), lit_area(without.shadowed.lit()[f][l]),
                   1e-12 * std::max(area, 1.0))
           << scene.faces[f].id << ", " << scene.lights[l].id;
     }

@@ -125,11 +125,11 @@ TEST(GenerationError, ClipsWithNothingToSnapAreUnaffected) {
   const GenerateResult free = generate_shadows(scene, threads(1));
   const clipper::SnapRoundLimitForTesting limit(0);
   const GenerateResult limited = generate_shadows(scene, threads(1));
-  ASSERT_EQ(limited.shadowed.lit.size(), 2u);
+  ASSERT_EQ(limited.shadowed.lit().size(), 2u);
   for (std::size_t f = 0; f < 2; ++f) {
-    EXPECT_DOUBLE_EQ(lit_area(limited.shadowed.lit[f][0]), lit_area(free.shadowed.lit[f][0]));
+    EXPECT_DOUBLE_EQ(lit_area(limited.shadowed.lit()[f][0]), lit_area(free.shadowed.lit()[f][0]));
   }
-  EXPECT_DOUBLE_EQ(lit_area(limited.shadowed.lit[0][0]), 96.0);
+  EXPECT_DOUBLE_EQ(lit_area(limited.shadowed.lit()[0][0]), 96.0);
 }
 
 TEST(GenerationError, WithoutTheLimitTheSameScenesGenerate) {
@@ -138,7 +138,7 @@ TEST(GenerationError, WithoutTheLimitTheSameScenesGenerate) {
   scene.lights.push_back(lamp("lamp", {9, 5, 4}));
   const GenerateResult result = generate_shadows(scene, threads(2));
   // The awning's shadow covers [8,10] × [3,7] of the ground.
-  EXPECT_DOUBLE_EQ(lit_area(result.shadowed.lit[0][0]), 92.0);
+  EXPECT_DOUBLE_EQ(lit_area(result.shadowed.lit()[0][0]), 92.0);
 }
 
 // The partition by light sets (export, render) clips too: where that clip cannot settle,

@@ -24,7 +24,8 @@ constexpr double kTolerance = 1e-9;
 std::map<std::pair<std::string, std::string>, double> lit_areas(const ShadowedScene& shadowed) {
   std::map<std::pair<std::string, std::string>, double> out;
   for (const ReportRow& row : report_rows(shadowed)) {
-    out[{shadowed.scene.faces[row.face].id, shadowed.scene.lights[row.light].id}] = row.lit_area;
+    out[{shadowed.scene().faces[row.face].id, shadowed.scene().lights[row.light].id}] =
+        row.lit_area;
   }
   return out;
 }

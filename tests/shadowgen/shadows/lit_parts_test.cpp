@@ -45,7 +45,7 @@ TEST(LitWhole, ATriangleLitWholeHasItsOwnAreaExactly) {
                                      {-15.287873946255601, 18.006710075689838, 0.0},
                                      {-78.617706035764868, -26.389056779123308, 0.0}});
   const ShadowedScene shadowed = lit_in_regions(scene);
-  const std::vector<LitPolygon>& lit = shadowed.lit.at(0, 0);
+  const std::vector<LitPolygon>& lit = shadowed.lit().at(0, 0);
   ASSERT_EQ(lit.size(), 1u);
   EXPECT_EQ(lit[0].polygon.outer, scene.faces[0].parts[0].outer);
   EXPECT_EQ(hsr::area(scene.faces[0].parts), 245.4068623221923);

@@ -31,14 +31,14 @@ Scene ground_lamp_and_far_wall() {
 
 TEST(Range, AFaceReachingInsideTakesTheShadowsOfOccludersBeyondIt) {
   Scene scene = ground_lamp_and_far_wall();
-  const double unranged = lit_area(generate_shadows(scene).shadowed.lit[0][0]);
+  const double unranged = lit_area(generate_shadows(scene).shadowed.lit()[0][0]);
   EXPECT_NEAR(unranged, 600.0, 1e-9);
 
   // range.end 20: the ground reaches inside, the wall (60 away) lies beyond.
   scene.lights[0].range = LightRange{5.0, 20.0, 2.0};
   const GenerateResult ranged = generate_shadows(scene);
-  EXPECT_NEAR(lit_area(ranged.shadowed.lit[0][0]), unranged, 1e-9);
-  EXPECT_TRUE(ranged.shadowed.lit[1][0].empty());  // the wall receives nothing
+  EXPECT_NEAR(lit_area(ranged.shadowed.lit()[0][0]), unranged, 1e-9);
+  EXPECT_TRUE(ranged.shadowed.lit()[1][0].empty());  // the wall receives nothing
   EXPECT_EQ(ranged.stats[0].faces_considered, 1u);
   EXPECT_EQ(ranged.stats[0].faces_culled_range, 1u);
 }
@@ -50,8 +50,8 @@ TEST(Range, FacesBeyondEveryReceiverAreLeftOut) {
   scene.faces[0].parts[0] = hsr::Polygon3{{{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}}, {}};
   scene.lights[0].range = LightRange{5.0, 20.0, 2.0};
   const GenerateResult r = generate_shadows(scene);
-  EXPECT_NEAR(lit_area(r.shadowed.lit[0][0]), 100.0, 1e-12);
-  EXPECT_TRUE(r.shadowed.lit[1][0].empty());
+  EXPECT_NEAR(lit_area(r.shadowed.lit()[0][0]), 100.0, 1e-12);
+  EXPECT_TRUE(r.shadowed.lit()[1][0].empty());
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ OracleCheck check_against_oracle(const Scene& scene, const ShadowedScene& shadow
     if (!(exact.face_area > 0.0)) continue;
     ++check.pairs;
     const LitComparison c =
-        oracle.compare(row.face, row.light, polygons_of(shadowed.lit[row.face][row.light]));
+        oracle.compare(row.face, row.light, polygons_of(shadowed.lit()[row.face][row.light]));
     const double area_error = std::fabs(row.lit_area - exact.lit_area) / exact.face_area;
     const double region_error = c.symmetric_difference / exact.face_area;
     const double overlap = (c.our_pieces_area - c.our_union_area) / exact.face_area;
@@ -66,7 +66,8 @@ OracleCheck check_against_oracle(const Scene& scene, const ShadowedScene& shadow
                               scene.lights[row.light].id + "': " + c.invalid + "\n";
     }
     const double bound =
-        tolerance + vertex_error * boundary_length(polygons_of(shadowed.lit[row.face][row.light])) /
+        tolerance + vertex_error *
+                        boundary_length(polygons_of(shadowed.lit()[row.face][row.light])) /
                         exact.face_area;
     const double worst = std::max({area_error, region_error, overlap, outside});
     check.worst_bound_ratio = std::max(check.worst_bound_ratio, worst / bound);
@@ -78,7 +79,7 @@ OracleCheck check_against_oracle(const Scene& scene, const ShadowedScene& shadow
           "  face '" + scene.faces[row.face].id + "', light '" + scene.lights[row.light].id +
           "': area " + format17(exact.face_area) + ", exact lit " + format17(exact.lit_area) +
           ", our lit " + format17(row.lit_area) + " (" +
-          std::to_string(shadowed.lit[row.face][row.light].size()) + " polygons); bound " +
+          std::to_string(shadowed.lit()[row.face][row.light].size()) + " polygons); bound " +
           format(bound) + "; relative errors: area " + format(area_error);
       if (c.problem.empty()) {
         check.report += ", symmetric difference " + format(region_error) + ", overlap " +
@@ -107,7 +108,7 @@ std::string summary(const OracleCheck& check) {
 std::map<std::pair<std::string, std::string>, double> lit_fractions(const ShadowedScene& shadowed) {
   std::map<std::pair<std::string, std::string>, double> out;
   for (const ReportRow& row : report_rows(shadowed)) {
-    out[{shadowed.scene.faces[row.face].id, shadowed.scene.lights[row.light].id}] =
+    out[{shadowed.scene().faces[row.face].id, shadowed.scene().lights[row.light].id}] =
         row.lit_fraction;
   }
   return out;

@@ -261,7 +261,7 @@ TEST(ExtremesClosedRoom, TouchingBoxesDoNotLightEachOthersContactFaces) {
       if (scene.faces[f].id != e.face) continue;
       ++matches;
       for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-        const LitComparison c = oracle.compare(f, l, polygons_of(result.shadowed.lit[f][l]));
+        const LitComparison c = oracle.compare(f, l, polygons_of(result.shadowed.lit()[f][l]));
         const double tolerance = kTolerance * c.face_area;
         EXPECT_NEAR(c.face_area, e.area, 1e-15) << e.face;
         EXPECT_NEAR(c.exact_lit_area, e.lit[l], 1e-15) << e.face << " " << scene.lights[l].id;
@@ -329,7 +329,7 @@ TEST(ExtremesRegression, NearlyEdgeOnFaceIsLitWithinItselfAndTheRestExactly) {
   for (const ReportRow& row : rows) {
     const std::string& id = scene.faces[row.face].id;
     const LitComparison c =
-        oracle.compare(row.face, row.light, polygons_of(shadowed.lit[row.face][row.light]));
+        oracle.compare(row.face, row.light, polygons_of(shadowed.lit()[row.face][row.light]));
     const double tolerance = kTolerance * c.face_area;
     std::printf("[ nearly edge-on ] %-8s area %.17g, lit %.17g (exact %.17g), region error %.3g\n",
                 id.c_str(), row.area, row.lit_area, c.exact_lit_area, c.symmetric_difference);
@@ -360,8 +360,8 @@ TEST(ExtremesRegression, LampInTheFacesPlaneLightsNothing) {
   add_face(scene, "t", polygon({{1, 0, 5}, {1, 5, 0}, {0, 1, 1}}));
   scene.lights.push_back(point_light("lamp", {0.5, 0.5, 3}));
   const ShadowedScene shadowed = generate_shadows(scene).shadowed;
-  ASSERT_EQ(shadowed.lit.size(), 1u);
-  EXPECT_TRUE(shadowed.lit[0][0].empty()) << lit_area(shadowed.lit[0][0]);
+  ASSERT_EQ(shadowed.lit().size(), 1u);
+  EXPECT_TRUE(shadowed.lit()[0][0].empty()) << lit_area(shadowed.lit()[0][0]);
   const std::vector<ReportRow> rows = report_rows(shadowed);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].lit_area, 0.0);
@@ -400,7 +400,7 @@ TEST(ExtremesRegression, TinyFaceFarFromItsLampIsLitOnItsPlaneAndWithinIt) {
     const ShadowedScene shadowed = generate_shadows(scene).shadowed;
     EXPECT_EQ(database_problem(shadowed), "") << "size " << size;
     const ShadowOracle oracle(scene);
-    const LitComparison c = oracle.compare(0, 0, polygons_of(shadowed.lit[0][0]));
+    const LitComparison c = oracle.compare(0, 0, polygons_of(shadowed.lit()[0][0]));
     EXPECT_GT(c.exact_lit_area, 0.15 * c.face_area) << "size " << size;
     EXPECT_LT(c.exact_lit_area, 0.35 * c.face_area) << "size " << size;
     // The lamp's view places points to about 2^-52 of its distance, 3: 7e-16, a fraction
@@ -515,7 +515,7 @@ TEST(ExtremesRegression, FarVertexElsewhereKeepsAFaceNearTheOriginPrecise) {
   scene.lights.push_back(directional_light("sun", {0.0, 0.0, -0.5}));
   const ShadowedScene shadowed = generate_shadows(scene).shadowed;
   const ShadowOracle oracle(scene);
-  const LitComparison c = oracle.compare(0, 0, polygons_of(shadowed.lit[0][0]));
+  const LitComparison c = oracle.compare(0, 0, polygons_of(shadowed.lit()[0][0]));
   // δ·L/A of the bound above, with M = 8, the ground's own largest coordinate.
   const double bound = kTolerance * c.face_area + 4.0 * kUlp * 8.0 * 2.0 * 40.0;
   std::printf("[ far vertex elsewhere ] ground lit %.17g (exact %.17g), region error %.3g\n",

@@ -39,8 +39,8 @@ TEST_P(Invariants, LitPlusShadowedIsTheFaceArea) {
     EXPECT_GE(row.lit_area, 0.0) << where;
     EXPECT_LE(row.lit_area, row.area * (1.0 + kTolerance)) << where;
     if (row.area == 0.0) continue;
-    const LitComparison c =
-        oracle.compare(row.face, row.light, polygons_of(result.shadowed.lit[row.face][row.light]));
+    const LitComparison c = oracle.compare(row.face, row.light,
+                                           polygons_of(result.shadowed.lit()[row.face][row.light]));
     ASSERT_EQ(c.problem, "") << where;
     const double shadowed = c.face_area - (c.our_union_area - c.outside_face_area);
     EXPECT_LE(c.outside_face_area, kTolerance * c.face_area) << where << ": lit outside the face";
@@ -53,7 +53,7 @@ TEST_P(Invariants, LitPlusShadowedIsTheFaceArea) {
 TEST_P(Invariants, EveryFaceIdIsInTheReportAndTheDatabase) {
   const Scene& scene = GetParam().scene;
   const GenerateResult result = generate_shadows(scene);
-  ASSERT_EQ(result.shadowed.lit.size(), scene.faces.size());
+  ASSERT_EQ(result.shadowed.lit().size(), scene.faces.size());
   const std::vector<ReportRow> rows = report_rows(result.shadowed);
   ASSERT_EQ(rows.size(), scene.faces.size() * scene.lights.size());
   std::set<std::pair<std::size_t, std::size_t>> seen;
@@ -74,10 +74,10 @@ TEST_P(Invariants, EveryFaceIdIsInTheReportAndTheDatabase) {
   EXPECT_EQ(count, rows.size());
 
   const ShadowedScene read = parse_database(database_json(result.shadowed), "round.json");
-  ASSERT_EQ(read.scene.faces.size(), scene.faces.size());
+  ASSERT_EQ(read.scene().faces.size(), scene.faces.size());
   for (std::size_t f = 0; f < scene.faces.size(); ++f) {
     EXPECT_TRUE(csv_faces.count(scene.faces[f].id)) << scene.faces[f].id;
-    EXPECT_EQ(read.scene.faces[f].id, scene.faces[f].id);
+    EXPECT_EQ(read.scene().faces[f].id, scene.faces[f].id);
   }
 }
 

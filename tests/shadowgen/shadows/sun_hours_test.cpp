@@ -45,7 +45,7 @@ TEST(SunHours, ASouthWallInAnEmptySiteHasTheHoursTheSunStandsInFrontOfIt) {
   // are dropped), and in front of the wall where its azimuth points south of east-west.
   std::size_t in_front = 0;
   for (const std::size_t l : path.instants) {
-    const SunInstant& sun = *shadowed.scene.lights[l].sun;
+    const SunInstant& sun = *shadowed.scene().lights[l].sun;
     ASSERT_GT(sun.elevation_deg, 0.0);
     if (std::cos(sun.azimuth_deg * M_PI / 180.0) < 0.0) ++in_front;
   }
@@ -56,15 +56,15 @@ TEST(SunHours, ASouthWallInAnEmptySiteHasTheHoursTheSunStandsInFrontOfIt) {
   EXPECT_NEAR(path.regions[0][0].hours, expected, 1e-9 * expected);
   EXPECT_NEAR(lit_area(path.regions[0][0].polygons), 12.0, 1e-9 * 12.0);
   // The instants' polygons are not kept: the table holds no room for them.
-  EXPECT_FALSE(shadowed.lit.kept(path.instants[0]));
-  EXPECT_TRUE(shadowed.lit[0][path.instants[0]].empty());
+  EXPECT_FALSE(shadowed.lit().kept(path.instants[0]));
+  EXPECT_TRUE(shadowed.lit()[0][path.instants[0]].empty());
 }
 
 TEST(SunHours, RegionsTileEachFaceAndSumItsInstantsLitAreas) {
   const ShadowedScene shadowed = generated(site_scene(kCourtyard, kMarch21));
   const SunPathHours& path = shadowed.sun_paths.at(0);
   ASSERT_EQ(path.instants.size(), 24u);  // 06:00 is before sunrise at 51.5 N
-  for (std::size_t f = 0; f < shadowed.scene.faces.size(); ++f) {
+  for (std::size_t f = 0; f < shadowed.scene().faces.size(); ++f) {
     const std::vector<SunHoursRegion>& regions = path.regions[f];
     double area = 0.0, hours_area = 0.0, lit_hours = 0.0;
     for (std::size_t r = 0; r < regions.size(); ++r) {
@@ -75,8 +75,8 @@ TEST(SunHours, RegionsTileEachFaceAndSumItsInstantsLitAreas) {
       hours_area += regions[r].hours * lit_area(regions[r].polygons);
     }
     for (const double a : path.lit_area[f]) lit_hours += a * 30.0 / 60.0;
-    const std::string& id = shadowed.scene.faces[f].id;
-    EXPECT_LE(relative(area, hsr::area(shadowed.scene.faces[f].parts)), 1e-9) << id;
+    const std::string& id = shadowed.scene().faces[f].id;
+    EXPECT_LE(relative(area, hsr::area(shadowed.scene().faces[f].parts)), 1e-9) << id;
     EXPECT_LE(relative(hours_area, lit_hours), 1e-9) << id;
   }
   EXPECT_GE(path.regions[0].size(), 10u);  // the ground: many different hours
@@ -187,7 +187,7 @@ bool contains(const ChartedRegion& region, const clipper::Point2& q, double marg
 // region's or an occluder's boundary.
 TEST(SunHours, EveryPointHasTheHoursOfTheInstantsWhoseShadowRaysReachTheSun) {
   const ShadowedScene shadowed = generated(site_scene(kCourtyard, kMarch21));
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   const SunPathHours& path = shadowed.sun_paths.at(0);
   std::vector<ChartedFace> faces;
   for (const Face& face : scene.faces) faces.push_back(charted(face));
@@ -240,16 +240,17 @@ TEST(SunHours, SameOnAnyThreadCountAndWithTheInstantsPolygonsKept) {
   const ShadowedScene k = generate_shadows(scene, kept).shadowed;
   ASSERT_TRUE(k.sun_paths.at(0).lit_polygons_kept);
   const std::size_t noon = k.sun_paths[0].instants[12];
-  EXPECT_FALSE(k.lit[0][noon].empty());
-  EXPECT_EQ(lit_area(k.lit[0][noon]), a.sun_paths[0].lit_area[0][12]);
+  EXPECT_FALSE(k.lit()[0][noon].empty());
+  EXPECT_EQ(lit_area(k.lit()[0][noon]), a.sun_paths[0].lit_area[0][12]);
   // The same sums: the regions of both, written alike.
-  ShadowedScene without_polygons = k;
-  std::vector<bool> kept_lights(k.lit.lights(), true);
+  std::vector<bool> kept_lights(k.lit().lights(), true);
   for (const std::size_t l : k.sun_paths[0].instants) kept_lights[l] = false;
-  without_polygons.lit = LitTable(k.lit.size(), k.lit.lights(), kept_lights);
-  for (std::size_t f = 0; f < k.lit.size(); ++f) {
-    for (std::size_t l = 0; l < k.lit.lights(); ++l) {
-      if (kept_lights[l]) without_polygons.lit.at(f, l) = k.lit.at(f, l);
+  ShadowedScene without_polygons(k.scene(),
+                                 LitTable(k.lit().size(), k.lit().lights(), kept_lights));
+  without_polygons.sun_paths = k.sun_paths;
+  for (std::size_t f = 0; f < k.lit().size(); ++f) {
+    for (std::size_t l = 0; l < k.lit().lights(); ++l) {
+      if (kept_lights[l]) without_polygons.lit_at(f, l) = k.lit().at(f, l);
     }
   }
   without_polygons.sun_paths[0].lit_polygons_kept = false;
@@ -275,7 +276,7 @@ TEST(SunHours, AreasAloneKeepEveryInstantsLitAreaAndNoRegions) {
   EXPECT_FALSE(read.sun_paths.at(0).regions_kept);
   EXPECT_EQ(database_json(read), text);
   try {
-    require_regions(read.sun_paths[0], read.scene.file, "a sun-hours map");
+    require_regions(read.sun_paths[0], read.scene().file, "a sun-hours map");
     ADD_FAILURE() << "regions required of a path of lit areas alone";
   } catch (const InputError& e) {
     // Named by the database read, not by the scene its faces came from.

@@ -88,17 +88,17 @@ TEST(SunHoursTree, AbsorbingLaterSumsCountsEachPieceOnce) {
       test::generated(test::site_scene(test::kCourtyard, test::kMarch21), /*threads=*/1);
   const SunPathHours& path = shadowed.sun_paths.at(0);
   ASSERT_GT(path.instants.size(), kInstantsPerBlock);  // several blocks: joined by absorb
-  for (std::size_t f = 0; f < shadowed.scene.faces.size(); ++f) {
+  for (std::size_t f = 0; f < shadowed.scene().faces.size(); ++f) {
     double hour_area = 0.0, area = 0.0, lit_hours = 0.0;
     for (const SunHoursRegion& region : path.regions[f]) {
       area += lit_area(region.polygons);
       hour_area += region.hours * lit_area(region.polygons);
     }
     for (const double a : path.lit_area[f]) lit_hours += a * path.step_min / 60.0;
-    const double face_area = hsr::area(shadowed.scene.faces[f].parts);
-    EXPECT_NEAR(area, face_area, 1e-9 * face_area) << shadowed.scene.faces[f].id;
+    const double face_area = hsr::area(shadowed.scene().faces[f].parts);
+    EXPECT_NEAR(area, face_area, 1e-9 * face_area) << shadowed.scene().faces[f].id;
     EXPECT_NEAR(hour_area, lit_hours, 1e-9 * std::max(1.0, lit_hours))
-        << shadowed.scene.faces[f].id;
+        << shadowed.scene().faces[f].id;
   }
 }
 

@@ -202,7 +202,7 @@ TEST(AngularShadows, CubeGridAgreesWithVolumesMoreAsRowsGrow) {
                            R"({"id": "sun", "type": "directional", "direction": [1, 0.6, -0.9]},
                               {"id": "lamp", "type": "point", "position": [-7, 6, 10]})"));
   const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective({16, -18, 14}, {0, 0, 1}), kWidth, kHeight);
+      pixel_surfaces(shadowed.scene(), perspective({16, -18, 14}, {0, 0, 1}), kWidth, kHeight);
   const PixelLitWeights volumes =
       pixel_lit_weights(shadowed, surfaces, {PixelShadows::kVolumes, 0});
   for (std::size_t l = 0; l < 2; ++l) {
@@ -210,11 +210,11 @@ TEST(AngularShadows, CubeGridAgreesWithVolumesMoreAsRowsGrow) {
     std::size_t previous_all = static_cast<std::size_t>(-1);
     for (const int resolution : {8, 32, 128, 512, 2048}) {
       const Figures f = compare(
-          shadowed.scene, surfaces, volumes, l,
-          angular_lit_weights(shadowed.scene, shadowed.scene.lights[l], surfaces, resolution));
-      report(
-          "cube grid, " + shadowed.scene.lights[l].id + ", " + std::to_string(resolution) + " rows",
-          f);
+          shadowed.scene(), surfaces, volumes, l,
+          angular_lit_weights(shadowed.scene(), shadowed.scene().lights[l], surfaces, resolution));
+      report("cube grid, " + shadowed.scene().lights[l].id + ", " + std::to_string(resolution) +
+                 " rows",
+             f);
       EXPECT_GT(f.lit, 3000u);
       EXPECT_GT(f.shadowed, 1500u);
       EXPECT_LE(f.share(), previous + 1e-12);
@@ -237,13 +237,13 @@ TEST(AngularShadows, PointLightInsideTheGridUsesBothHemispheres) {
   const ShadowedScene shadowed = generated(
       scene_json(cube_grid(), R"({"id": "lamp", "type": "point", "position": [-0.8, -0.8, 1.8]})"));
   const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective({16, -18, 14}, {0, 0, 1}), kWidth, kHeight);
+      pixel_surfaces(shadowed.scene(), perspective({16, -18, 14}, {0, 0, 1}), kWidth, kHeight);
   const PixelLitWeights volumes =
       pixel_lit_weights(shadowed, surfaces, {PixelShadows::kVolumes, 0});
   for (const int resolution : {128, 2048}) {
     const Figures f = compare(
-        shadowed.scene, surfaces, volumes, 0,
-        angular_lit_weights(shadowed.scene, shadowed.scene.lights[0], surfaces, resolution));
+        shadowed.scene(), surfaces, volumes, 0,
+        angular_lit_weights(shadowed.scene(), shadowed.scene().lights[0], surfaces, resolution));
     report("lamp inside the grid, " + std::to_string(resolution) + " rows", f);
     EXPECT_GT(f.shadowed, 1500u);
     EXPECT_LE(f.share(), resolution == 128 ? 0.03 : 0.005);
@@ -271,7 +271,7 @@ TEST(AngularShadows, ConcaveObjectShadesItself) {
   const ShadowedScene shadowed = generated(
       scene_json(kGround + ",\n" + polygon("roof", top) + ",\n" + polygon("floor", bottom) + walls,
                  R"({"id": "sun", "type": "directional", "direction": [1, -0.5, -0.6]})"));
-  const Scene& scene = shadowed.scene;
+  const Scene& scene = shadowed.scene();
   const ScenePartPlanes parts(scene);
   const std::vector<PartRole> roles = part_roles(parts.polygons, parts.planes, scene.lights[0]);
   const view::detail::RidgeEdgeLoops loops =
@@ -286,12 +286,12 @@ TEST(AngularShadows, ConcaveObjectShadesItself) {
       pixel_lit_weights(shadowed, surfaces, {PixelShadows::kVolumes, 0});
   const std::vector<double> angular = angular_lit_weights(scene, scene.lights[0], surfaces, 1024);
   auto on_prism = [](const PixelSurface& pixel) { return pixel.face != 0; };
-  const Figures self = compare(shadowed.scene, surfaces, volumes, 0, angular, on_prism);
+  const Figures self = compare(shadowed.scene(), surfaces, volumes, 0, angular, on_prism);
   report("L prism, its own faces, 1024 rows", self);
   EXPECT_GT(self.shadowed, 300u);  // it shades itself
   EXPECT_GT(self.lit, 300u);       // and does not shade its own lit faces
   EXPECT_LE(self.share(), 0.005);
-  const Figures all = compare(shadowed.scene, surfaces, volumes, 0, angular);
+  const Figures all = compare(shadowed.scene(), surfaces, volumes, 0, angular);
   report("L prism, all, 1024 rows", all);
   EXPECT_LE(all.share(), 0.005);
 }
@@ -307,15 +307,15 @@ TEST(AngularShadows, OpenModelsFacingTheLightCastNoShadow) {
         {"id": "turned-away", "outer": [[2,-3,3],[2,3,3],[7,3,3],[7,-3,3]]})",
                            R"({"id": "sun", "type": "directional", "direction": [0.2, 0.1, -1]})"));
   const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective({3, -22, 16}, {0, 0, 0}), kWidth, kHeight);
+      pixel_surfaces(shadowed.scene(), perspective({3, -22, 16}, {0, 0, 0}), kWidth, kHeight);
   const PixelLitWeights volumes =
       pixel_lit_weights(shadowed, surfaces, {PixelShadows::kVolumes, 0});
   const std::vector<double> angular =
-      angular_lit_weights(shadowed.scene, shadowed.scene.lights[0], surfaces, 1024);
+      angular_lit_weights(shadowed.scene(), shadowed.scene().lights[0], surfaces, 1024);
   auto ground_east = [](const PixelSurface& pixel) { return pixel.face == 0 && pixel.point.x > 0; };
   auto ground_west = [](const PixelSurface& pixel) { return pixel.face == 0 && pixel.point.x < 0; };
-  const Figures east = compare(shadowed.scene, surfaces, volumes, 0, angular, ground_east);
-  const Figures west = compare(shadowed.scene, surfaces, volumes, 0, angular, ground_west);
+  const Figures east = compare(shadowed.scene(), surfaces, volumes, 0, angular, ground_east);
+  const Figures west = compare(shadowed.scene(), surfaces, volumes, 0, angular, ground_west);
   report("open quad turned away, ground below", east);
   report("open quad facing the light, ground below", west);
   EXPECT_GT(east.shadowed, 500u);
@@ -329,10 +329,10 @@ TEST(AngularShadows, NoSurfaceBackSideOrTurnedAwayGetZero) {
   const ShadowedScene shadowed =
       generated(scene_json(kGround + ",\n" + box("b", -2, -2, 0, 2, 2, 3),
                            R"({"id": "sun", "type": "directional", "direction": [1, 0.6, -1.5]})"));
-  const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective({16, -18, 14}, {0, 0, 1}, 90.0), kWidth, kHeight);
+  const PixelSurfaces surfaces = pixel_surfaces(
+      shadowed.scene(), perspective({16, -18, 14}, {0, 0, 1}, 90.0), kWidth, kHeight);
   const std::vector<double> angular =
-      angular_lit_weights(shadowed.scene, shadowed.scene.lights[0], surfaces, 256);
+      angular_lit_weights(shadowed.scene(), shadowed.scene().lights[0], surfaces, 256);
   std::size_t background = 0;
   for (std::size_t i = 0; i < angular.size(); ++i) {
     const PixelSurface& pixel = surfaces.pixels[i];
@@ -343,7 +343,7 @@ TEST(AngularShadows, NoSurfaceBackSideOrTurnedAwayGetZero) {
     }
   }
   EXPECT_GT(background, 0u);
-  EXPECT_THROW(angular_lit_weights(shadowed.scene, shadowed.scene.lights[0], surfaces, 0),
+  EXPECT_THROW(angular_lit_weights(shadowed.scene(), shadowed.scene().lights[0], surfaces, 0),
                std::invalid_argument);
 }
 

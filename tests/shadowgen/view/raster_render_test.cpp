@@ -105,7 +105,7 @@ TEST(PixelSurfaces, PixelCentresSeeTheGroundWhereItIs) {
   camera.orthographic = true;
   camera.pixels_per_unit = 1.0;
   const ShadowedScene shadowed = generated(scene_json(kGround, kSunAndLamp));
-  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene, camera, 20, 20);
+  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene(), camera, 20, 20);
   for (int y = 0; y < 20; ++y) {
     for (int x = 0; x < 20; ++x) {
       const PixelSurface& pixel = surfaces.at(x, y);
@@ -121,7 +121,7 @@ TEST(PixelSurfaces, PixelCentresSeeTheGroundWhereItIs) {
   }
   // From below, the back side.
   camera.eye = {0, 0, -10};
-  const PixelSurfaces below = pixel_surfaces(shadowed.scene, camera, 4, 4);
+  const PixelSurfaces below = pixel_surfaces(shadowed.scene(), camera, 4, 4);
   EXPECT_TRUE(below.at(1, 1).seen());
   EXPECT_FALSE(below.at(1, 1).front);
 }
@@ -138,7 +138,7 @@ TEST(PixelSurfaces, SharedEdgeGoesToTheLowerFace) {
   camera.up = {0, 1, 0};
   camera.orthographic = true;
   camera.pixels_per_unit = 1.0;
-  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene, camera, 3, 4);
+  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene(), camera, 3, 4);
   for (int y = 0; y < 4; ++y) {
     EXPECT_EQ(surfaces.at(1, y).point.x, 0.0);
     EXPECT_EQ(surfaces.at(1, y).face, 0u) << y;
@@ -150,7 +150,7 @@ TEST(PixelSurfaces, SharedEdgeGoesToTheLowerFace) {
 TEST(PixelShadows, VolumesAndShadowMapsAgreeWithExactOnBoxes) {
   const ShadowedScene& shadowed = boxes();
   const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective({16, -18, 14}, {0, 0, 1}), kWidth, kHeight);
+      pixel_surfaces(shadowed.scene(), perspective({16, -18, 14}, {0, 0, 1}), kWidth, kHeight);
   const Agreement volumes = agreement(shadowed, surfaces, PixelShadows::kVolumes);
   const Agreement stencil = agreement(shadowed, surfaces, PixelShadows::kStencil);
   Report("boxes, perspective, stencil", stencil);
@@ -176,7 +176,7 @@ TEST(PixelShadows, OrthographicCameraCountsFromEachRaysStart) {
   camera.eye = {12, -14, 16};
   camera.target = {0, 0, 0};
   camera.orthographic = true;
-  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene, camera, kWidth, kHeight);
+  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene(), camera, kWidth, kHeight);
   const Agreement volumes = agreement(shadowed, surfaces, PixelShadows::kVolumes);
   const Agreement map = agreement(shadowed, surfaces, PixelShadows::kShadowMap, 1024);
   const Agreement stencil = agreement(shadowed, surfaces, PixelShadows::kStencil);
@@ -198,22 +198,22 @@ TEST(PixelShadows, EyeInsideAShadowVolume) {
                            R"({"id": "sun", "type": "directional", "direction": [1, 0, -1]})"));
   const glm::dvec3 eye(1.5, 0, 1);
   const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective(eye, {8, 0, 0}, 70), kWidth, kHeight);
+      pixel_surfaces(shadowed.scene(), perspective(eye, {8, 0, 0}, 70), kWidth, kHeight);
 
   // Bergeron's start count: the eye is inside the volumes of the tower's parts the ray
   // to the sun crosses (its east wall, facing away, and its west wall, facing the sun).
   std::vector<hsr::Polygon3> parts;
   std::vector<hsr::Plane3> planes;
-  for (const Face& face : shadowed.scene.faces) {
+  for (const Face& face : shadowed.scene().faces) {
     parts.push_back(face.parts[0]);
     planes.push_back(hsr::plane_of(face.parts[0]));
   }
-  const std::vector<PartRole> roles = part_roles(parts, planes, shadowed.scene.lights[0]);
-  const view::detail::ShadowVolumes volumes(shadowed.scene.lights[0], parts, planes, roles,
+  const std::vector<PartRole> roles = part_roles(parts, planes, shadowed.scene().lights[0]);
+  const view::detail::ShadowVolumes volumes(shadowed.scene().lights[0], parts, planes, roles,
                                             {{-10, -10, 0}, {10, 10, 6}});
   std::vector<std::string> holding;
   for (const std::size_t part : volumes.holding(eye)) {
-    holding.push_back(shadowed.scene.faces[part].id);
+    holding.push_back(shadowed.scene().faces[part].id);
   }
   EXPECT_EQ(holding, (std::vector<std::string>{"tower-west", "tower-east"}));
 
@@ -236,7 +236,7 @@ TEST(PixelShadows, OpenModelFloatingQuads) {
                            R"({"id": "sun", "type": "directional", "direction": [0.5, 0.3, -1]},
          {"id": "lamp", "type": "point", "position": [1, -1, 6]})"));
   const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective({4, -20, 16}, {0, 0, 0}), kWidth, kHeight);
+      pixel_surfaces(shadowed.scene(), perspective({4, -20, 16}, {0, 0, 0}), kWidth, kHeight);
   const Agreement volumes = agreement(shadowed, surfaces, PixelShadows::kVolumes);
   const Agreement map = agreement(shadowed, surfaces, PixelShadows::kShadowMap, 1024);
   Report("open model, volumes", volumes);
@@ -257,9 +257,9 @@ TEST(PixelShadows, NonPlanarPolygonCastsItsTrianglesShadow) {
         {"id": "bent", "outer": [[-4,-3,3],[2,-3,3],[2,2,4.5],[-4,2,3]]})",
                            R"({"id": "sun", "type": "directional", "direction": [0.4, 0.3, -1]},
          {"id": "lamp", "type": "point", "position": [-1, 0, 8]})"));
-  ASSERT_EQ(shadowed.scene.faces.back().parts.size(), 2u);
+  ASSERT_EQ(shadowed.scene().faces.back().parts.size(), 2u);
   const PixelSurfaces surfaces =
-      pixel_surfaces(shadowed.scene, perspective({4, -20, 16}, {0, 0, 0}), kWidth, kHeight);
+      pixel_surfaces(shadowed.scene(), perspective({4, -20, 16}, {0, 0, 0}), kWidth, kHeight);
   for (const PixelShadows method : {PixelShadows::kVolumes, PixelShadows::kStencil}) {
     const Agreement a = agreement(shadowed, surfaces, method);
     Report((std::string("non-planar, ") + std::string(pixel_shadows_name(method))).c_str(), a);
@@ -275,7 +275,7 @@ TEST(RasterRender, ExactShadesAsTheSvgPictureDoes) {
   const Camera camera = perspective({16, -18, 14}, {0, 0, 1});
   const RgbImage image = render_raster(shadowed, camera, options);
   ASSERT_EQ(image.rgb.size(), 3u * kWidth * kHeight);
-  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene, camera, kWidth, kHeight);
+  const PixelSurfaces surfaces = pixel_surfaces(shadowed.scene(), camera, kWidth, kHeight);
   const PixelLitWeights lit = pixel_lit_weights(shadowed, surfaces, {});
   std::size_t background = 0, shaded = 0;
   for (std::size_t i = 0; i < surfaces.pixels.size(); ++i) {
@@ -290,7 +290,7 @@ TEST(RasterRender, ExactShadesAsTheSvgPictureDoes) {
     for (std::size_t l = 0; l < lit.lights; ++l) {
       if (pixel.front && lit.at(i, l) == 1.0) lights.push_back(l);
     }
-    const Rgb colour = shade(shadowed.scene, lights, pixel.point, pixel.normal, options.picture);
+    const Rgb colour = shade(shadowed.scene(), lights, pixel.point, pixel.normal, options.picture);
     EXPECT_EQ(rgb[0], std::lround(255.0 * colour.r));
     EXPECT_EQ(rgb[1], std::lround(255.0 * colour.g));
     EXPECT_EQ(rgb[2], std::lround(255.0 * colour.b));

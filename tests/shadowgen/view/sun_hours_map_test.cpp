@@ -152,12 +152,12 @@ TEST(SunHoursMap, CoversWhatTheLitPictureCoversFromAnyEye) {
   const RenderOptions options = picture_size(320, 240);
   const Picture map = render_sun_hours(shadowed, path, bands, camera, options);
   const Picture lit = render(shadowed, camera, options);
-  std::vector<double> map_area(shadowed.scene.faces.size()), lit_area(map_area.size());
+  std::vector<double> map_area(shadowed.scene().faces.size()), lit_area(map_area.size());
   for (const Piece& piece : map.pieces) map_area[piece.face] += clipper::area(piece.shape);
   for (const Piece& piece : lit.pieces) lit_area[piece.face] += clipper::area(piece.shape);
   std::size_t seen = 0;
   for (std::size_t f = 0; f < map_area.size(); ++f) {
-    EXPECT_LE(relative_error(map_area[f], lit_area[f]), 1e-9) << shadowed.scene.faces[f].id;
+    EXPECT_LE(relative_error(map_area[f], lit_area[f]), 1e-9) << shadowed.scene().faces[f].id;
     seen += map_area[f] > 0.0;
   }
   EXPECT_GE(seen, 4u);  // the ground, the wall, the roof and two sides

@@ -38,9 +38,10 @@ PixelSurfaces two_faces() {
 PixelLitWeights weights(std::vector<double> values) { return {1, std::move(values)}; }
 
 TEST(LitAgreement, PixelsNextToAFaceOrShadowBoundaryAreLeftOut) {
-  ShadowedScene shadowed;
-  shadowed.scene.lights.push_back(Light{});
-  shadowed.lit = LitTable(2, 1);
+  Scene scene;
+  scene.faces.resize(2);
+  scene.lights.push_back(Light{});
+  const ShadowedScene shadowed(std::move(scene), LitTable(2, 1));
   const PixelSurfaces surfaces = two_faces();
   // Every pixel lit: only the face boundary between columns 1 and 2 leaves pixels out,
   // those of columns 1 and 2.
@@ -64,9 +65,10 @@ TEST(LitAgreement, PixelsNextToAFaceOrShadowBoundaryAreLeftOut) {
     pixel.front = true;
   }
   wide.pixels[0 * 8 + 6].front = false;  // seen from the back: not compared, not a boundary
-  ShadowedScene one;
-  one.scene.lights.push_back(Light{});
-  one.lit = LitTable(1, 1);
+  Scene one_face;
+  one_face.faces.emplace_back();
+  one_face.lights.push_back(Light{});
+  ShadowedScene one(one_face, LitTable(1, 1));
   std::vector<double> exact(24), other(24);
   for (int y = 0; y < 3; ++y) {
     for (int x = 0; x < 8; ++x) {
@@ -86,7 +88,7 @@ TEST(LitAgreement, PixelsNextToAFaceOrShadowBoundaryAreLeftOut) {
 
   // A light without lit polygons (an instant of a sun path summed into lit areas) is left
   // out whole.
-  one.lit = LitTable(1, 1, {false});
+  one = ShadowedScene(one_face, LitTable(1, 1, {false}));
   a = lit_agreement(one, wide, weights(exact), weights(other));
   EXPECT_EQ(a.compared + a.boundary, 0u);
 }
@@ -117,7 +119,7 @@ TEST(ViewComparison, VolumesAndStencilAgreeWithExactAndShadowMapsNearly) {
                                                    {PixelShadows::kVolumes, 0},
                                                    {PixelShadows::kStencil, 0}};
   const ViewComparison comparison =
-      compare_view_methods(shadowed, shadowed.scene.views.at(0), 96, 72, methods);
+      compare_view_methods(shadowed, shadowed.scene().views.at(0), 96, 72, methods);
   EXPECT_EQ(comparison.view, "main");
   EXPECT_EQ(comparison.width, 96);
   EXPECT_EQ(comparison.height, 72);
@@ -157,9 +159,9 @@ TEST(ViewComparison, VolumesAndStencilAgreeWithExactAndShadowMapsNearly) {
 TEST(ViewComparison, ABadResolutionOrViewThrows) {
   const ShadowedScene shadowed = generated(kBoxScene);
   const std::vector<PixelShadowOptions> bad = {{PixelShadows::kShadowMap, 0}};
-  EXPECT_THROW(compare_view_methods(shadowed, shadowed.scene.views.at(0), 8, 6, bad),
+  EXPECT_THROW(compare_view_methods(shadowed, shadowed.scene().views.at(0), 8, 6, bad),
                std::invalid_argument);
-  ViewSpec blind = shadowed.scene.views.at(0);
+  ViewSpec blind = shadowed.scene().views.at(0);
   blind.target = blind.eye;
   EXPECT_THROW(compare_view_methods(shadowed, blind, 8, 6, {}), std::invalid_argument);
 }

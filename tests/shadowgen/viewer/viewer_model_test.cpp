@@ -152,11 +152,12 @@ TEST(ViewerModel, TheNorthAxisIsTheSitesOrElseWhatASunInstantSays) {
     "site": {"latitude_deg": 51.5, "longitude_deg": 0, "utc_offset_h": 0, "north_axis_deg": 30},
     "lights": [{"id": "sun", "type": "sun", "time": "2026-03-21T10:00"}]})");
   EXPECT_EQ(nlohmann::json::parse(viewer_model(shadowed).description)["north_axis_deg"], 30.0);
-  shadowed.scene.site.reset();
+  shadowed.edit_scene([&](Scene& scene) { scene.site.reset(); });
   EXPECT_NEAR(
       nlohmann::json::parse(viewer_model(shadowed).description)["north_axis_deg"].get<double>(),
       30.0, 1e-9);
-  shadowed.scene.lights[0].sun.reset();  // a plain directional light says nothing of north
+  // a plain directional light says nothing of north
+  shadowed.edit_scene([](Scene& scene) { scene.lights[0].sun.reset(); });
   EXPECT_FALSE(
       nlohmann::json::parse(viewer_model(shadowed).description).contains("north_axis_deg"));
 }
