@@ -127,7 +127,7 @@ class ShadowedScene {
   // estimate, `estimated` holds its lit area for every light, none for the instants of a
   // sun path (as for the faces before it); for the exact method, nothing.
   void add_face(Face face, const std::vector<std::optional<double>>& estimated = {});
-  // Changes the scene but its faces (the file, groups, sun paths, the lights' kinds):
+  // Changes the scene but its faces (the file, groups, sun paths, the lights):
   // `edit` gets it without its faces, which it cannot change, and may change the lights but
   // not so as to break the rules above; where it does, the lights are as they were and
   // std::invalid_argument is thrown.
@@ -149,6 +149,12 @@ class ShadowedScene {
       scene_.lights = std::move(lights);
       throw;
     }
+  }
+  // Changes face `face` (its id, its parts) through `edit`; throws std::out_of_range for
+  // a face the scene lacks.
+  template <class Edit>
+  void edit_face(std::size_t face, const Edit& edit) {
+    edit(scene_.faces.at(face));
   }
   // Keeps the lights marked in `keep` (one flag per light), in order, renumbered, with
   // their lit polygons and estimated areas.

@@ -426,9 +426,7 @@ class ReaderCase {
     }
 
     // The scene as a database without lit details: what `report` and `generate` start from.
-    ShadowedScene unlit;
-    unlit.scene = scene;
-    unlit.lit = LitTable(scene.faces.size(), scene.lights.size());
+    const ShadowedScene unlit(scene, LitTable(scene.faces.size(), scene.lights.size()));
     check_outputs(unlit, "the scene read");
 
     if (generate_ && scene.faces.size() <= kTinyFaces && scene.lights.size() <= kTinyLights &&

@@ -22,9 +22,14 @@ Scene two_by_two(bool instant = false) {
   for (const char* id : {"a", "b"}) {
     scene.faces.push_back({id, {{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {}}}, "x.json"});
   }
-  for (const char* id : {"sun", "lamp"}) scene.lights.push_back(Light{.id = id});
+  for (const char* id : {"sun", "lamp"}) {
+    Light light;
+    light.id = id;
+    scene.lights.push_back(light);
+  }
   if (instant) {
-    Light light{.id = "p@0"};
+    Light light;
+    light.id = "p@0";
     light.sun = SunInstant{"p", "2026-03-21T12:00", 60, 180.0, 30.0};
     scene.lights.push_back(light);
   }
@@ -133,12 +138,13 @@ TEST(ShadowedScene, AnEditOfTheSceneCannotBreakItsShape) {
   ShadowedScene exact(two_by_two(), LitTable(2, 2));
   exact.edit_scene([](Scene& scene) { scene.file = "y.json"; });
   EXPECT_EQ(exact.scene().file, "y.json");
-  EXPECT_EQ(refusal([&] {
-              exact.edit_scene([](Scene& scene) { scene.faces.push_back(Face{.id = "c"}); });
-            }),
+  EXPECT_EQ(refusal([&] { exact.edit_scene([](Scene& scene) { scene.faces.emplace_back(); }); }),
             "ShadowedScene::edit_scene: the faces cannot change");
   EXPECT_EQ(refusal([&] { exact.edit_scene([](Scene& scene) { scene.lights.pop_back(); }); }),
             "ShadowedScene: lit polygons for 2 faces and 2 lights, the scene has 2 and 1");
+  exact.edit_face(1, [](Face& face) { face.id = "c"; });
+  EXPECT_EQ(exact.scene().faces[1].id, "c");
+  EXPECT_THROW(exact.edit_face(2, [](Face&) {}), std::out_of_range);
   // A refused edit leaves the faces and lights as they were.
   EXPECT_EQ(exact.scene().faces.size(), 2u);
   EXPECT_EQ(exact.scene().lights.size(), 2u);

@@ -417,11 +417,10 @@ TEST(Database, EmptySceneRoundTrips) {
 
 TEST(Database, IdsWithAnyCharactersRoundTrip) {
   ShadowedScene s = sample();
-  s.edit_scene([&](Scene& scene) {
-    scene.faces[0].id = "a \"quoted\", back\\slash\nnew line\ttab \u00e9\u6f22";
-  });
+  s.edit_face(
+      0, [&](Face& face) { face.id = "a \"quoted\", back\\slash\nnew line\ttab \u00e9\u6f22"; });
   s.edit_scene([&](Scene& scene) { scene.lights[0].id = "sun/\x01control"; });
-  s.edit_scene([&](Scene& scene) { scene.faces[1].source_file = "C:\\models\\bent.obj"; });
+  s.edit_face(1, [&](Face& face) { face.source_file = "C:\\models\\bent.obj"; });
   expect_same(s, round_trip(s));
 }
 
@@ -583,9 +582,8 @@ TEST_F(DatabaseFile, AFailedWriteLeavesTheOldFileAndNoTemporary) {
   const std::string before = contents(path);
 
   ShadowedScene bad = sample();
-  bad.edit_scene([&](Scene& scene) {
-    scene.faces[0].parts[0].outer[0].x = std::numeric_limits<double>::infinity();
-  });
+  bad.edit_face(
+      0, [&](Face& face) { face.parts[0].outer[0].x = std::numeric_limits<double>::infinity(); });
   EXPECT_THROW(write_database(bad, path), std::invalid_argument);
   EXPECT_EQ(contents(path), before);
   EXPECT_EQ(files(), std::vector<std::string>{"db.json"});

@@ -79,15 +79,15 @@ TEST(EnergyPlusShading, OneRowPerHourStampedWithItsEndHoldingTheInstantThatStart
 TEST(EnergyPlusShading, AnEnergyPlusModelsFaceIsNamedByItsSurfaceNameAlone) {
   ShadowedScene shadowed =
       by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {{"2026-06-21T12:00", 4, 0.875}});
-  shadowed.edit_scene([&](Scene& scene) { scene.faces[1].id = "house/Zn001:Wall-South"; });
-  shadowed.edit_scene([&](Scene& scene) {
-    scene.faces[1].origin = {"energyplus", "Zn001:Wall-South", "Zn001", "Wall"};
+  shadowed.edit_face(1, [&](Face& face) { face.id = "house/Zn001:Wall-South"; });
+  shadowed.edit_face(1, [&](Face& face) {
+    face.origin = {"energyplus", "Zn001:Wall-South", "Zn001", "Wall"};
   });
   EXPECT_EQ(lines_of(energyplus_shading(shadowed).csv)[0], "Surface Name,ROOF,ZN001:WALL-SOUTH,");
   // Two models' surfaces of one name cannot both be EnergyPlus surfaces.
-  shadowed.edit_scene([&](Scene& scene) { scene.faces[0].id = "other/zn001:wall-south"; });
-  shadowed.edit_scene([&](Scene& scene) {
-    scene.faces[0].origin = {"energyplus", "zn001:wall-south", "Zn001", "Wall"};
+  shadowed.edit_face(0, [&](Face& face) { face.id = "other/zn001:wall-south"; });
+  shadowed.edit_face(0, [&](Face& face) {
+    face.origin = {"energyplus", "zn001:wall-south", "Zn001", "Wall"};
   });
   try {
     energyplus_shading(shadowed);
@@ -153,12 +153,12 @@ TEST(EnergyPlusShading, WhatEnergyPlusCouldNotReadIsRefused) {
             "test.json: sun path 'day' starts at 2026-06-21T00:05, not at the start of one of its "
             "10-minute time steps in the day");
   ShadowedScene comma = by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {});
-  comma.edit_scene([&](Scene& scene) { scene.faces[1].id = "wall,south"; });
+  comma.edit_face(1, [&](Face& face) { face.id = "wall,south"; });
   EXPECT_EQ(error_of(comma),
             "test.json: face 'wall,south': cannot be an EnergyPlus surface name: it holds a "
             "comma, which separates fields");
   ShadowedScene same = by_hand(60, "2026-06-21T00:00", "2026-06-21T23:59", {});
-  same.edit_scene([&](Scene& scene) { scene.faces[1].id = "Roof"; });
+  same.edit_face(1, [&](Face& face) { face.id = "Roof"; });
   EXPECT_EQ(error_of(same),
             "test.json: face 'Roof': is the EnergyPlus surface name ROOF in upper case, as face "
             "'roof' is");
@@ -188,12 +188,12 @@ TEST(EnergyPlusShading, ErrorsNameTheInputReadNotTheSceneItsFacesCameFrom) {
             "db.json: has no sun path (a `sun` light with from, to and step_min) to report a "
             "shading schedule of");
   ShadowedScene same = from_db();
-  same.edit_scene([&](Scene& scene) { scene.faces[1].id = "Roof"; });
+  same.edit_face(1, [&](Face& face) { face.id = "Roof"; });
   EXPECT_EQ(error_of(same),
             "db.json: face 'Roof': is the EnergyPlus surface name ROOF in upper case, as face "
             "'roof' is");
   ShadowedScene comma = from_db();
-  comma.edit_scene([&](Scene& scene) { scene.faces[0].id = "roof,north"; });
+  comma.edit_face(0, [&](Face& face) { face.id = "roof,north"; });
   EXPECT_EQ(error_of(comma),
             "db.json: face 'roof,north': cannot be an EnergyPlus surface name: it holds a comma, "
             "which separates fields");

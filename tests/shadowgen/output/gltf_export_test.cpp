@@ -382,7 +382,7 @@ TEST(GltfExport, CourtyardSunHoursKeepTheSiteAndTheBandsAreas) {
 // with U+FFFD in place of the bad byte: glTF's JSON is UTF-8, and the export goes on.
 TEST(GltfExport, AFaceIdThatIsNotUtf8IsWrittenWithReplacementCharacters) {
   ShadowedScene s = generated(kTwoLights);
-  s.edit_scene([&](Scene& scene) { scene.faces[0].id = "ground\xff"; });
+  s.edit_face(0, [&](Face& face) { face.id = "ground\xff"; });
   for (const GltfForm form : kForms) {
     GltfFile file = read_back(gltf_export(s, form), form);
     EXPECT_EQ(file.json["scenes"][0]["extras"]["faces"]["id"][0], "ground\xef\xbf\xbd");

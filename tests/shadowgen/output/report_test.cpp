@@ -212,9 +212,7 @@ TEST(ReportJson, LayoutToTheByte) {
 
 TEST(ReportJson, AModelFileFacesOriginFollowsItsId) {
   ShadowedScene s = scene_with_ids("ground", "sun");
-  s.edit_scene([&](Scene& scene) {
-    scene.faces[2].origin = {"cityjson", "b1-part", "b1", "RoofSurface"};
-  });
+  s.edit_face(2, [&](Face& face) { face.origin = {"cityjson", "b1-part", "b1", "RoofSurface"}; });
   const std::string text = report_json(s);
   EXPECT_NE(
       text.find(

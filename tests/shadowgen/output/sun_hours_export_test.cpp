@@ -80,7 +80,7 @@ TEST(SunHoursExport, HandMadeRegionsByBand) {
 
 TEST(SunHoursExport, GroupNamesEscapeTheFaceIdAndSplitAtTheLastAt) {
   ShadowedScene shadowed = sun_path_by_hand();
-  shadowed.edit_scene([&](Scene& scene) { scene.faces[0].id = "the ground@2#"; });
+  shadowed.edit_face(0, [&](Face& face) { face.id = "the ground@2#"; });
   const SunPathHours& path = shadowed.sun_paths[0];
   const std::vector<double> edges{1};
   const ObjFiles files = sun_hours_obj_export(shadowed, path, hour_bands(path, edges), "m.mtl");
