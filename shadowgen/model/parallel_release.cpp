@@ -5,14 +5,12 @@
 namespace shadowgen {
 
 void release_faces_in_parallel(ShadowedScene& shadowed) {
-  std::vector<Face>& faces = shadowed.scene.faces;
-  LitTable& lit = shadowed.lit;
+  const LitTable& lit = shadowed.lit();  // one row per face (ShadowedScene's rule)
   const std::size_t lights = lit.lights();
-  hsr::for_each_in_parallel(faces.size(), [&](std::size_t f) {
-    faces[f] = Face();
-    if (f >= lit.size()) return;
+  hsr::for_each_in_parallel(shadowed.scene().faces.size(), [&](std::size_t f) {
+    shadowed.edit_face(f, [](Face& face) { face = Face(); });
     for (std::size_t l = 0; l < lights; ++l) {
-      if (lit.kept(l)) lit.at(f, l) = LitTable::Polygons();
+      if (lit.kept(l)) shadowed.lit_at(f, l) = LitTable::Polygons();
     }
   });
 }
