@@ -61,7 +61,7 @@ double exact_fraction(const Scene& scene, std::size_t f, std::size_t l) {
   const ShadowedScene exact = generate_shadows(scene, options).shadowed;
   double lit = 0.0;
   for (std::size_t k = 0; k < scene.faces[f].parts.size(); ++k) {
-    lit += hsr::area(polygons_on_part(exact.lit.at(f, l), k));
+    lit += hsr::area(polygons_on_part(exact.lit().at(f, l), k));
   }
   return lit / hsr::area(scene.faces[f].parts);
 }
