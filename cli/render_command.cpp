@@ -1,7 +1,6 @@
 // `shadowgen render`: a picture of a shadowed database, as SVG and/or PNG.
 
 #include <algorithm>
-#include <glm/vec3.hpp>
 #include <iostream>
 #include <memory>
 #include <new>
@@ -14,6 +13,7 @@
 #include "cli/number_options.h"
 #include "cli/output_by_extension.h"
 #include "cli/radiation_options.h"
+#include "cli/render_camera.h"
 #include "cli/run_progress.h"
 #include "cli/sun_hours_options.h"
 #include "shadowgen/model/input_error.h"
@@ -59,11 +59,7 @@ constexpr CommandText kRenderText{
 // database's view `view` or from eye/target/up/fov.
 struct RenderArgs {
   std::string database;
-  std::string view;             // a view id of the database, or empty
-  std::string eye, target, up;  // X,Y,Z (point(), point(), triple()), or empty
-  double fov_deg = 45.0;
-  bool ortho = false;
-  double scale = 0.0;                // orthographic pixels per scene unit; 0 fits the scene
+  CameraArgs camera;                 // --view or --eye/--target/--up/--fov, --ortho, --scale
   std::vector<std::string> outputs;  // -o: an SVG or a PNG file each, by extension
   std::string svg;                   // --svg, or the -o file ending in .svg
   std::string png;                   // --png, or the -o file ending in .png
@@ -84,47 +80,6 @@ struct RenderArgs {
   bool quiet = false;                // --quiet: no reading warnings, no progress line
   const CLI::App* parser = nullptr;  // the subcommand, whose options say what was given
 };
-
-// A triple the parser has checked (triple(), point()), or `fallback` when not given.
-glm::dvec3 triple_or(const std::string& text, const glm::dvec3& fallback) {
-  return text.empty() ? fallback : parse_triple(text).value_or(fallback);
-}
-
-// A UsageError naming --up where it is given and fixes no roll: zero, or along the line
-// of sight from --eye to --target (shadowgen/model/view_limits.h, as the readers check a
-// view's 'up'). An eye equal to the target is the camera's error.
-void check_up(const RenderArgs& args) {
-  if (args.up.empty() || !args.view.empty()) return;
-  const glm::dvec3 sight =
-      triple_or(args.target, glm::dvec3(0.0)) - triple_or(args.eye, glm::dvec3(0.0));
-  if (sight == glm::dvec3(0.0)) return;
-  if (const std::optional<std::string> problem =
-          up_problem(sight, triple_or(args.up, glm::dvec3(0.0)), "from --eye to --target")) {
-    throw UsageError("--up " + args.up + ": " + *problem);
-  }
-}
-
-Camera camera_for(const RenderArgs& args, const ShadowedScene& shadowed) {
-  Camera camera;
-  if (!args.view.empty()) {
-    const ViewSpec* spec = nullptr;
-    for (const ViewSpec& v : shadowed.scene().views) {
-      if (v.id == args.view) spec = &v;
-    }
-    if (spec == nullptr) {
-      throw InputError(args.database, "", "no view with id '" + args.view + "'");
-    }
-    camera = camera_from_view(*spec, args.ortho);
-  } else {
-    camera.eye = triple_or(args.eye, glm::dvec3(0.0));
-    camera.target = triple_or(args.target, glm::dvec3(0.0));
-    camera.up = triple_or(args.up, glm::dvec3(0.0, 0.0, 1.0));
-    camera.fov_deg = args.fov_deg;
-    camera.orthographic = args.ortho;
-  }
-  camera.pixels_per_unit = args.scale;
-  return camera;
-}
 
 // The --png picture's view method (shadowgen/view/pixel_shadows.h). The names --shadows
 // accepts are checked by the parser.
@@ -243,7 +198,7 @@ std::vector<double> radiation_per_face(const RenderArgs& args, const ShadowedSce
 void run_render(const RenderArgs& given) {
   const RenderArgs args = with_outputs(given);
   if (!args.png.empty()) pixel_shadows_of(args);  // its usage errors before any work
-  check_up(args);
+  check_up(args.camera);
   LoadOptions load;
   load.accept = Accept::kDatabase;
   load.lights = args.lights;
@@ -267,7 +222,7 @@ void run_render(const RenderArgs& given) {
   if (!args.sun_hours.path.empty()) map = sun_hours_map(shadowed, args.sun_hours, args.database);
   std::vector<double> radiation;
   if (!args.radiation.empty()) radiation = radiation_per_face(args, shadowed, progress);
-  const Camera camera = camera_for(args, shadowed);
+  const Camera camera = camera_for(args.camera, shadowed, args.database);
   RenderOptions options;
   options.width = args.width;
   options.height = args.height;
@@ -303,7 +258,7 @@ void run_render(const RenderArgs& given) {
   } catch (const std::invalid_argument& e) {
     // A camera the database's view or the arguments describe badly (eye == target): the
     // camera does not know which of them it came from.
-    throw InputError(args.view.empty() ? std::string("--eye/--target") : args.database, "",
+    throw InputError(args.camera.view.empty() ? std::string("--eye/--target") : args.database, "",
                      e.what());
   }
   // Both pictures are made before either is written, and then written as one.
@@ -315,46 +270,10 @@ void run_render(const RenderArgs& given) {
   progress.finish();
 }
 
-void add_camera_options(CLI::App& command, RenderArgs& args) {
-  CLI::Option_group* camera =
-      command.add_option_group("camera", "where to look from: exactly one of these");
-  camera->add_option("--view", args.view, "id of one of the database's views");
-  CLI::Option* eye =
-      camera->add_option("--eye", args.eye, "eye position X,Y,Z (with --target)")->check(point());
-  camera->require_option(1);
-  CLI::Option* target =
-      command.add_option("--target", args.target, "point looked at X,Y,Z (with --eye)")
-          ->check(point());
-  CLI::Option* up = command
-                        .add_option("--up", args.up,
-                                    "up direction X,Y,Z, not zero and not along the line of "
-                                    "sight (default 0,0,1; a view straight down then has +y up)")
-                        ->check(triple());
-  CLI::Option* fov =
-      command.add_option("--fov", args.fov_deg,
-                         "full vertical field of view in degrees, at least 1e-06 (narrower, a "
-                         "pixel would span little more than the rounding of the distance to "
-                         "the target) and below 180 (default 45)");
-  eye->needs(target);
-  target->needs(eye);
-  up->needs(eye);
-  fov->needs(eye);
-  fov->check(number_in(fov_range()));
-  CLI::Option* ortho = command.add_flag("--ortho", args.ortho,
-                                        "orthographic (parallel) projection along target - eye");
-  command
-      .add_option("--scale", args.scale,
-                  "orthographic: pixels per scene unit, from 1e-100 (a pixel then spans half "
-                  "the supported coordinate range) to 1e100 (the smallest face extent) "
-                  "(default: fit the scene)")
-      ->check(number_in(scale_range()))
-      ->needs(ortho);
-}
-
 void add_render_options(CLI::App& command, RenderArgs& args) {
   command.add_option("database", args.database, "shadowed database (shadowgen-shadowed/2 or /1)")
       ->required();
-  add_camera_options(command, args);
+  add_camera_options(command, args.camera);
   args.parser = &command;
   add_outputs_option(command, args.outputs,
                      "picture to write, by its extension: FILE.svg (the SVG picture) or FILE.png "

@@ -9,8 +9,7 @@ set(max_lines 400)
 
 # Files over the limit that are yet to be split. Nothing else may pass the limit, and a
 # file listed here that has come under it fails too, so that the list only shrinks.
-set(waiting_to_split
-  cli/render_command.cpp)
+set(waiting_to_split)
 
 file(GLOB_RECURSE files RELATIVE ${SOURCE_DIR}
   ${SOURCE_DIR}/clipper/*.h ${SOURCE_DIR}/clipper/*.cpp
