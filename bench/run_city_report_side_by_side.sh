@@ -101,7 +101,7 @@ for round in $(seq "$rounds"); do
 done
 cmp "$work/r1e5.old.csv" "$work/r1e5.new.csv"
 
-median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+. "$(dirname "$0")/median.sh"
 echo
 echo "| report, 100,000-face city, 1 thread | old runs (s) | new runs (s) | old median | new median | new ÷ old |"
 echo "|---|---|---|---:|---:|---:|"

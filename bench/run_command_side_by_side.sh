@@ -55,7 +55,7 @@ for round in $(seq "$rounds"); do
   done
 done
 
-median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+. "$(dirname "$0")/median.sh"
 echo
 echo "| workload | old runs (s) | new runs (s) | old median | new median | new ÷ old |"
 echo "|---|---|---|---:|---:|---:|"

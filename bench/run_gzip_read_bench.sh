@@ -50,7 +50,7 @@ for round in $(seq "$repetitions"); do
 done
 cmp "$work/old.csv" "$work/new.csv"
 
-median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+. "$(dirname "$0")/median.sh"
 echo
 echo "| binary | wall s (runs) | median wall s | CPU s (runs) | median CPU s |"
 echo "|---|---|---:|---|---:|"
